@@ -1,0 +1,60 @@
+"""Command line: ``reportgen build | solve | gear | planetary | bench``.
+
+Each sub-command lives in ``reportgen/commands/<name>.py`` and provides ``register(subparsers)``,
+which adds its parser and sets ``func(args) -> int``. The command modules are presentation: they may
+import ``latex_templates`` and ``drawings``; the solvers never import them.
+
+Exit status (RESULTS_FORMAT.md): 0 success, 2 bad input (the message names the key or option),
+1 a failed build stage.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from . import __version__
+from .errors import BuildError, ReportgenInputError
+
+# Sub-command modules, in the order `reportgen --help` lists them.
+COMMANDS: tuple[str, ...] = ("build", "solve", "gear", "planetary", "bench")
+
+
+def make_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="reportgen",
+        description="ТММ course project: explanatory note (PDF) and drawing sheets (DXF) from a task file.",
+    )
+    parser.add_argument("--version", action="version", version=f"reportgen {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name in COMMANDS:
+        try:
+            module = importlib.import_module(f"reportgen.commands.{name}")
+        except ModuleNotFoundError as exc:
+            if exc.name == f"reportgen.commands.{name}":
+                continue  # a command not written yet is simply not offered
+            raise
+        module.register(sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = make_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 2
+    try:
+        return int(args.func(args) or 0)
+    except ReportgenInputError as exc:
+        print(f"reportgen {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except BuildError as exc:
+        print(f"reportgen {args.command}: error: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,126 @@
+"""Exception classes of reportgen. Each stores its fields and builds its message from them.
+
+Exit status policy (RESULTS_FORMAT.md): a ``ReportgenInputError`` is bad input (exit 2), a
+``BuildError`` is a failure of a build stage (exit 1).
+"""
+from __future__ import annotations
+
+
+class ReportgenError(Exception):
+    """Base class of every error raised on purpose by reportgen."""
+
+
+class ReportgenInputError(ReportgenError, ValueError):
+    """Bad input: the task file, a command-line option, or a mechanism that cannot work."""
+
+
+class TaskError(ReportgenInputError):
+    """A task-file value is missing, of the wrong type, or out of range.
+
+    ``path`` is the TOML path (``mechanism.link[3].length``), ``problem`` what is wrong and
+    ``expected`` what would be valid.
+    """
+
+    def __init__(self, path: str, problem: str, expected: str | None = None) -> None:
+        self.path = path
+        self.problem = problem
+        self.expected = expected
+        msg = f"{path}: {problem}" if path else problem
+        if expected:
+            msg += f" (expected {expected})"
+        super().__init__(msg)
+
+
+class UnknownKeyError(TaskError):
+    """A key that the task format does not know; ``suggestion`` is the nearest known key."""
+
+    def __init__(self, path: str, key: str, known: list[str], suggestion: str | None) -> None:
+        self.key = key
+        self.known = list(known)
+        self.suggestion = suggestion
+        problem = f"unknown key '{key}'"
+        if suggestion:
+            problem += f"; did you mean '{suggestion}'?"
+        super().__init__(path, problem, "one of: " + ", ".join(sorted(known)) if known else "no keys here")
+
+
+class OptionError(ReportgenInputError):
+    """A bad command-line option: ``option`` names it, ``expected`` says what is valid."""
+
+    def __init__(self, option: str, problem: str, expected: str | None = None) -> None:
+        self.option = option
+        self.problem = problem
+        self.expected = expected
+        msg = f"{option}: {problem}"
+        if expected:
+            msg += f" (expected {expected})"
+        super().__init__(msg)
+
+
+class StructureError(ReportgenInputError):
+    """The kinematic chain cannot be decomposed into a driver and Assur groups.
+
+    ``leftover`` lists the links left over, ``cause`` the likely reason.
+    """
+
+    def __init__(self, problem: str, leftover: tuple[int, ...] = (), cause: str | None = None) -> None:
+        self.problem = problem
+        self.leftover = tuple(leftover)
+        self.cause = cause
+        msg = problem
+        if self.leftover:
+            msg += f"; links left over: {', '.join(map(str, self.leftover))}"
+        if cause:
+            msg += f"; likely cause: {cause}"
+        super().__init__(msg)
+
+
+class AssemblyError(ReportgenInputError):
+    """A group cannot be assembled at a crank angle.
+
+    ``group`` names the group (e.g. ``II(2,3) RRR``), ``phi_deg`` the crank angle, ``inequality``
+    the violated condition written with its numbers, ``feasible`` the crank ranges (deg) where it
+    assembles, if known.
+    """
+
+    def __init__(self, group: str, phi_deg: float, inequality: str,
+                 feasible: tuple[tuple[float, float], ...] | None = None) -> None:
+        self.group = group
+        self.phi_deg = phi_deg
+        self.inequality = inequality
+        self.feasible = feasible
+        msg = (f"the group {group} cannot be assembled at crank angle φ1 = {phi_deg:.2f}°: "
+               f"{inequality}")
+        if feasible is not None:
+            if feasible:
+                rng = ", ".join(f"{a:.1f}°…{b:.1f}°" for a, b in feasible)
+                msg += f"; it assembles for φ1 in {rng}"
+            else:
+                msg += "; it assembles at no crank angle"
+        super().__init__(msg)
+
+
+class SingularPositionError(ReportgenError, ArithmeticError):
+    """A linear system of a group is singular (a dead centre) at crank angle ``phi_deg``."""
+
+    def __init__(self, group: str, phi_deg: float, detail: str = "") -> None:
+        self.group = group
+        self.phi_deg = phi_deg
+        self.detail = detail
+        msg = f"the group {group} is at a singular position at φ1 = {phi_deg:.4f}°"
+        if detail:
+            msg += f": {detail}"
+        super().__init__(msg)
+
+
+class BuildError(ReportgenError, RuntimeError):
+    """A build stage failed; ``stage`` names it, ``kept`` says what was kept and where."""
+
+    def __init__(self, stage: str, problem: str, kept: str | None = None) -> None:
+        self.stage = stage
+        self.problem = problem
+        self.kept = kept
+        msg = f"{stage} failed: {problem}"
+        if kept:
+            msg += f"\nkept: {kept}"
+        super().__init__(msg)
