@@ -124,3 +124,18 @@ class BuildError(ReportgenError, RuntimeError):
         if kept:
             msg += f"\nkept: {kept}"
         super().__init__(msg)
+
+
+class TaskSyntaxError(TaskError):
+    """The task file cannot be read as TOML (or as UTF-8 text).
+
+    ``path`` is the file, ``line`` and ``column`` (1-based) where the reader stopped, ``problem``
+    what is wrong there.
+    """
+
+    def __init__(self, file: str, line: int, column: int, problem: str) -> None:
+        self.file = file
+        self.line = line
+        self.column = column
+        super().__init__(file, f"line {line}, column {column}: {problem}",
+                         "TOML syntax, see https://toml.io")
