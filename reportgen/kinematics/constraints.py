@@ -1,0 +1,170 @@
+"""Pair constraints in pose coordinates, vectorised over positions.
+
+Poses ``q[..., k, :] = (x_k, y_k, θ_k)``; a point with local coordinates p stands at
+``w = r + R(θ)·p``, with ``dw/dθ = perp(R·p)`` and ``perp(x, y) = (−y, x)``.
+
+Revolute pair of bodies i, j at a point: ``Φ = w_i − w_j = 0`` (two rows); its acceleration
+right-hand side ``γ = θ̇_i²·R_i p_i − θ̇_j²·R_j p_j``.
+
+Prismatic pair (point p_a of body a on the line of body g through l with direction u):
+``f = n·d = 0`` with ``n = R_g·perp(u)``, ``d = w_a − (r_g + R_g l)``, and ``θ_a − θ_g − c = 0``.
+Differentiating twice, ``f̈ = J·q̈ − γ`` with
+``γ = θ̇_g²·n·d − 2θ̇_g·perp(n)·ḋ + n·(θ̇_a²·R_a p_a − θ̇_g²·R_g l)``; the term ``2θ̇_g·perp(n)·ḋ``
+holds the Coriolis acceleration of the slotted link.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..linkage import Linkage, SlidePair
+
+
+@dataclass(frozen=True)
+class RevoluteC:
+    point: str
+    i: int
+    j: int
+    pi: tuple[float, float]
+    pj: tuple[float, float]
+    rows: int = 2
+
+
+@dataclass(frozen=True)
+class SlideC:
+    s: SlidePair
+    rows: int = 2
+
+
+Constraint = RevoluteC | SlideC
+
+
+def revolute(linkage: Linkage, point: str, i: int, j: int) -> RevoluteC:
+    return RevoluteC(point, i, j, tuple(linkage.bodies[i].local[point]), tuple(linkage.bodies[j].local[point]))
+
+
+def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
+    """Every pair of the mechanism (a joint of k bodies gives k − 1 revolute constraints)."""
+    cons: list[Constraint] = []
+    for jt in linkage.joints:
+        b0 = jt.bodies[0]
+        cons.extend(revolute(linkage, jt.name, b0, b) for b in jt.bodies[1:])
+    cons.extend(SlideC(s) for s in linkage.slides)
+    return cons
+
+
+def rot(theta: np.ndarray, p: tuple[float, float]) -> np.ndarray:
+    """R(θ)·p for an array of angles: shape (..., 2)."""
+    c, s = np.cos(theta), np.sin(theta)
+    return np.stack((c * p[0] - s * p[1], s * p[0] + c * p[1]), axis=-1)
+
+
+def perp(v: np.ndarray) -> np.ndarray:
+    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
+
+
+def world(q: np.ndarray, k: int, p: tuple[float, float]) -> np.ndarray:
+    """Position of local point p of body k: shape (N, 2)."""
+    return q[:, k, :2] + rot(q[:, k, 2], p)
+
+
+def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
+
+
+def residual(cons: list[Constraint], q: np.ndarray) -> np.ndarray:
+    out = []
+    for c in cons:
+        if isinstance(c, RevoluteC):
+            d = world(q, c.i, c.pi) - world(q, c.j, c.pj)
+            out.extend((d[:, 0], d[:, 1]))
+        else:
+            s = c.s
+            n = rot(q[:, s.guide, 2], (-s.line_dir[1], s.line_dir[0]))
+            d = world(q, s.link, s.point_local) - world(q, s.guide, s.line_point)
+            out.append(_dot(n, d))
+            out.append(q[:, s.link, 2] - q[:, s.guide, 2] - s.rel_angle)
+    return np.stack(out, axis=-1) if out else np.zeros((q.shape[0], 0))
+
+
+def jacobian_rows(c: Constraint, q: np.ndarray) -> list[dict[int, np.ndarray]]:
+    """Rows of ∂Φ/∂q of one constraint: each row maps a body to its (N, 3) coefficients."""
+    N = q.shape[0]
+    one, zero = np.ones(N), np.zeros(N)
+    if isinstance(c, RevoluteC):
+        Rpi = rot(q[:, c.i, 2], c.pi)
+        Rpj = rot(q[:, c.j, 2], c.pj)
+        rx = {c.i: np.stack((one, zero, -Rpi[:, 1]), -1)}
+        ry = {c.i: np.stack((zero, one, Rpi[:, 0]), -1)}
+        rx[c.j] = rx.get(c.j, 0) + np.stack((-one, zero, Rpj[:, 1]), -1)
+        ry[c.j] = ry.get(c.j, 0) + np.stack((zero, -one, -Rpj[:, 0]), -1)
+        return [rx, ry]
+    s = c.s
+    a, g = s.link, s.guide
+    n = rot(q[:, g, 2], (-s.line_dir[1], s.line_dir[0]))
+    Rpa = rot(q[:, a, 2], s.point_local)
+    Rl = rot(q[:, g, 2], s.line_point)
+    d = q[:, a, :2] + Rpa - q[:, g, :2] - Rl
+    r1 = {a: np.stack((n[:, 0], n[:, 1], _dot(n, perp(Rpa))), -1)}
+    r1[g] = r1.get(g, 0) + np.stack((-n[:, 0], -n[:, 1], _dot(perp(n), d) - _dot(n, perp(Rl))), -1)
+    r2 = {a: np.stack((zero, zero, one), -1)}
+    r2[g] = r2.get(g, 0) + np.stack((zero, zero, -one), -1)
+    return [r1, r2]
+
+
+def gamma(c: Constraint, q: np.ndarray, qd: np.ndarray) -> list[np.ndarray]:
+    """Acceleration right-hand side γ of each row: J·q̈ = γ."""
+    if isinstance(c, RevoluteC):
+        Rpi = rot(q[:, c.i, 2], c.pi)
+        Rpj = rot(q[:, c.j, 2], c.pj)
+        wi2 = qd[:, c.i, 2] ** 2
+        wj2 = qd[:, c.j, 2] ** 2
+        gm = wi2[:, None] * Rpi - wj2[:, None] * Rpj
+        return [gm[:, 0], gm[:, 1]]
+    s = c.s
+    a, g = s.link, s.guide
+    n = rot(q[:, g, 2], (-s.line_dir[1], s.line_dir[0]))
+    Rpa = rot(q[:, a, 2], s.point_local)
+    Rl = rot(q[:, g, 2], s.line_point)
+    d = q[:, a, :2] + Rpa - q[:, g, :2] - Rl
+    wa, wg = qd[:, a, 2], qd[:, g, 2]
+    dd = qd[:, a, :2] + wa[:, None] * perp(Rpa) - qd[:, g, :2] - wg[:, None] * perp(Rl)
+    g1 = (wg ** 2) * _dot(n, d) - 2 * wg * _dot(perp(n), dd) + _dot(n, (wa ** 2)[:, None] * Rpa - (wg ** 2)[:, None] * Rl)
+    return [g1, np.zeros_like(g1)]
+
+
+def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int]) -> tuple[np.ndarray, list[list[dict[int, np.ndarray]]]]:
+    """Jacobian restricted to the bodies ``cols`` (N, m, 3·len(cols)), plus all rows for the RHS."""
+    N = q.shape[0]
+    rows_all = [jacobian_rows(c, q) for c in cons]
+    m = sum(len(r) for r in rows_all)
+    J = np.zeros((N, m, 3 * len(cols)))
+    idx = {b: 3 * i for i, b in enumerate(cols)}
+    r = 0
+    for rows in rows_all:
+        for row in rows:
+            for b, coef in row.items():
+                if b in idx:
+                    J[:, r, idx[b]:idx[b] + 3] = coef
+            r += 1
+    return J, rows_all
+
+
+def known_terms(rows_all: list[list[dict[int, np.ndarray]]], known_vals: np.ndarray, cols: set[int]) -> np.ndarray:
+    """Σ over bodies not in ``cols`` of the row coefficients times their known q̇ (or q̈): (N, m)."""
+    out = []
+    for rows in rows_all:
+        for row in rows:
+            acc = np.zeros(known_vals.shape[0])
+            for b, coef in row.items():
+                if b not in cols and b != 0:
+                    acc = acc + np.einsum("nk,nk->n", coef, known_vals[:, b, :])
+            out.append(acc)
+    return np.stack(out, axis=-1)
+
+
+def jacobian_full(linkage: Linkage, cons: list[Constraint], q: np.ndarray) -> np.ndarray:
+    """∂Φ/∂q over every moving body, (N, m, 3n)."""
+    J, _ = assemble(cons, q, list(linkage.moving))
+    return J

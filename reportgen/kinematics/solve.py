@@ -1,0 +1,288 @@
+"""Exact kinematics of the whole mechanism over any set of crank angles.
+
+Positions group by group (closed forms for dyads, Newton for class III+); velocities and
+accelerations group by group from the linear systems of the differentiated constraints
+(J·q̇ = −J_known·q̇_known, J·q̈ = γ − J_known·q̈_known) — no finite differences. The crank turns at
+constant ω: θ₁ = φ − α, θ̇₁ = ω, θ̈₁ = 0.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Mapping
+
+import numpy as np
+
+from ..errors import AssemblyError, SingularPositionError
+from ..linkage import Linkage, compile_linkage, sketch_q
+from ..structure import Group, Structure, analyse_structure
+from ..task import Mechanism
+from .constraints import assemble, gamma, jacobian_rows, known_terms, perp, rot, world
+from .positions import DyadSolver, NewtonSolver, group_constraints
+from .transmission import NEAR_SINGULAR_DEG, transmission_angle
+
+#: Largest crank step when following a class III+ group by continuation, rad.
+CONTINUATION_STEP = math.radians(5.0)
+
+
+def _ro(a: np.ndarray) -> np.ndarray:
+    a = np.ascontiguousarray(a)
+    a.setflags(write=False)
+    return a
+
+
+@dataclass(frozen=True)
+class PointMotion:
+    """Position, velocity and acceleration of a point at every analysed position, (N, 2) each."""
+    pos: np.ndarray
+    vel: np.ndarray
+    acc: np.ndarray
+
+
+@dataclass(frozen=True)
+class LinkMotion:
+    """Angle (rad), angular velocity and angular acceleration of a link, (N,) each."""
+    angle: np.ndarray
+    omega: np.ndarray
+    epsilon: np.ndarray
+
+
+@dataclass(frozen=True)
+class KinematicsResult:
+    phi: np.ndarray                       # crank angles φ1, rad
+    omega1: float
+    q: np.ndarray                         # (N, bodies, 3) poses
+    qd: np.ndarray
+    qdd: np.ndarray
+    points: Mapping[str, PointMotion]
+    coms: Mapping[int, PointMotion]
+    links: Mapping[int, LinkMotion]
+    transmission_deg: Mapping[str, np.ndarray]
+    near_singular: tuple[tuple[int, str, float], ...] = field(default=())   # (index, group key, μ)
+
+    @property
+    def phi_deg(self) -> np.ndarray:
+        return np.degrees(self.phi)
+
+
+class KinematicModel:
+    """The mechanism ready to be solved at any crank angles (branches fixed from the sketch)."""
+
+    def __init__(self, linkage: Linkage, structure: Structure):
+        self.linkage = linkage
+        self.structure = structure
+        self.nb = max(linkage.bodies) + 1
+        self.alpha = linkage.crank_offset()
+        self.omega = linkage.omega
+        known = {0, linkage.drive_link}
+        self.solvers: list[DyadSolver | NewtonSolver] = []
+        for g in structure.groups[1:]:
+            self.solvers.append(DyadSolver(linkage, g, known) if g.group_class == 2 else NewtonSolver(linkage, g, known))
+            known |= set(g.links)
+        self.group_rows = [group_constraints(linkage, g) for g in structure.groups[1:]]
+        self._sketch_q = sketch_q(linkage)
+        self._choose_branches()
+
+    # -- driver --------------------------------------------------------------------------------
+    def _driver(self, q: np.ndarray, phi: np.ndarray) -> None:
+        d = self.linkage.drive_link
+        b = self.linkage.bodies[d]
+        th = phi - self.alpha
+        q[:, d, 2] = th
+        O = np.asarray(self.linkage.sketch[self.linkage.drive_axis])
+        q[:, d, :2] = O - rot(th, tuple(b.local[self.linkage.drive_axis]))
+
+    def _driver_vel(self, q: np.ndarray, qd: np.ndarray) -> None:
+        d = self.linkage.drive_link
+        p = tuple(self.linkage.bodies[d].local[self.linkage.drive_axis])
+        qd[:, d, 2] = self.omega
+        qd[:, d, :2] = -self.omega * perp(rot(q[:, d, 2], p))
+
+    def _driver_acc(self, q: np.ndarray, qdd: np.ndarray) -> None:
+        d = self.linkage.drive_link
+        p = tuple(self.linkage.bodies[d].local[self.linkage.drive_axis])
+        qdd[:, d, 2] = 0.0
+        qdd[:, d, :2] = self.omega ** 2 * rot(q[:, d, 2], p)
+
+    # -- branches --------------------------------------------------------------------------------
+    def _choose_branches(self) -> None:
+        """For each dyad, the branch whose inner point is nearest to the sketch."""
+        phi0 = np.array([self.linkage.sketch_phi()])
+        q = np.zeros((1, self.nb, 3))
+        self._driver(q, phi0)
+        for solver, g in zip(self.solvers, self.structure.groups[1:]):
+            if isinstance(solver, DyadSolver):
+                best = None
+                for sigma in (1.0, -1.0):
+                    solver.sigma = sigma
+                    qq = q.copy()
+                    solver.solve(qq, phi0, strict=True)
+                    err = 0.0
+                    for k in g.links:
+                        for name in self.linkage.bodies[k].points:
+                            w = world(qq, k, tuple(self.linkage.bodies[k].local[name]))[0]
+                            err += float(np.hypot(*(w - np.asarray(self.linkage.sketch[name]))))
+                    if best is None or err < best[0] - 1e-12:
+                        best = (err, sigma, qq)
+                solver.sigma = best[1]
+                q = best[2]
+            else:
+                for k in g.links:
+                    q[:, k, :] = self._sketch_q[k]
+                solver.newton(q, phi0, strict=True)
+        self._q0 = q
+        self._phi0 = float(phi0[0])
+
+    # -- positions, velocities, accelerations ---------------------------------------------------
+    def positions(self, phi: np.ndarray, strict: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        """Poses at the crank angles ``phi``; also a mask of the positions where all groups assemble."""
+        phi = np.asarray(phi, dtype=float)
+        if any(isinstance(s, NewtonSolver) for s in self.solvers):
+            return self._positions_by_continuation(phi, strict)
+        N = phi.size
+        q = np.zeros((N, self.nb, 3))
+        self._driver(q, phi)
+        ok = np.ones(N, dtype=bool)
+        for solver in self.solvers:
+            margin = solver.solve(q, phi, strict=strict)
+            ok &= margin >= 0
+        return q, ok
+
+    def _step(self, ph: np.ndarray, prev_q: np.ndarray | None, dt: float, strict: bool) -> tuple[np.ndarray, bool]:
+        """One position: dyads in closed form, class III+ groups by Newton from a prediction."""
+        qq = np.zeros((1, self.nb, 3))
+        self._driver(qq, ph)
+        if prev_q is not None:
+            qd = self.velocities(prev_q)
+            qdd = self.accelerations(prev_q, qd)
+        ok = True
+        for solver, g in zip(self.solvers, self.structure.groups[1:]):
+            if isinstance(solver, DyadSolver):
+                ok &= bool((solver.solve(qq, ph, strict=strict) >= 0).all())
+            else:
+                cols = list(g.links)
+                if prev_q is None:
+                    qq[:, cols, :] = self._q0[:, cols, :]
+                else:
+                    qq[:, cols, :] = prev_q[:, cols, :] + qd[:, cols, :] * dt + 0.5 * qdd[:, cols, :] * dt * dt
+                ok &= bool((solver.newton(qq, ph, strict=strict) >= 0).all())
+        return qq, ok
+
+    def _positions_by_continuation(self, phi: np.ndarray, strict: bool) -> tuple[np.ndarray, np.ndarray]:
+        """Follow the mechanism from the sketch through every requested angle in the direction of
+        rotation, in steps of at most ``CONTINUATION_STEP``, so that class III+ groups stay on the
+        sketch's branch; each step is predicted with the exact velocity and acceleration."""
+        N = phi.size
+        q = np.zeros((N, self.nb, 3))
+        ok = np.ones(N, dtype=bool)
+        sgn = 1.0 if self.omega >= 0 else -1.0
+        w = abs(self.omega) if self.omega else 1.0
+        offs = np.mod(sgn * (phi - self._phi0), 2 * math.pi)
+        cur_q, cur_off = self._q0.copy(), 0.0
+        for i in np.argsort(offs, kind="stable"):
+            target = float(offs[i])
+            steps = int(math.ceil((target - cur_off) / CONTINUATION_STEP))
+            for s in range(1, steps + 1):
+                off = cur_off + (target - cur_off) * s / steps
+                prev = cur_off + (target - cur_off) * (s - 1) / steps
+                cur_q, good = self._step(np.array([self._phi0 + sgn * off]), cur_q, (off - prev) / w, strict)
+            cur_off = target
+            if steps == 0:
+                cur_q, good = self._step(np.array([phi[i]]), cur_q, 0.0, strict)
+            q[i] = cur_q[0]
+            ok[i] = good
+        return q, ok
+
+    def velocities(self, q: np.ndarray, upto: int | None = None) -> np.ndarray:
+        qd = np.zeros_like(q)
+        self._driver_vel(q, qd)
+        groups = self.structure.groups[1:]
+        for n_g, (g, cons) in enumerate(zip(groups, self.group_rows)):
+            if upto is not None and n_g >= upto:
+                break
+            cols = list(g.links)
+            J, rows = assemble(cons, q, cols)
+            rhs = -known_terms(rows, qd, set(cols))
+            x = self._solve(J, rhs, g, q)
+            qd[:, cols, :] = x.reshape(-1, len(cols), 3)
+        return qd
+
+    def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None) -> np.ndarray:
+        qdd = np.zeros_like(q)
+        self._driver_acc(q, qdd)
+        groups = self.structure.groups[1:]
+        for n_g, (g, cons) in enumerate(zip(groups, self.group_rows)):
+            if upto is not None and n_g >= upto:
+                break
+            cols = list(g.links)
+            J, rows = assemble(cons, q, cols)
+            gm = np.stack([r for c in cons for r in gamma(c, q, qd)], axis=-1)
+            rhs = gm - known_terms(rows, qdd, set(cols))
+            x = self._solve(J, rhs, g, q)
+            qdd[:, cols, :] = x.reshape(-1, len(cols), 3)
+        return qdd
+
+    def _solve(self, J: np.ndarray, rhs: np.ndarray, g: Group, q: np.ndarray) -> np.ndarray:
+        try:
+            return np.linalg.solve(J, rhs[..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            for i in range(J.shape[0]):
+                if np.linalg.matrix_rank(J[i]) < J.shape[1]:
+                    raise SingularPositionError(g.label, math.degrees(float(np.arctan2(
+                        np.sin(q[i, self.linkage.drive_link, 2] + self.alpha),
+                        np.cos(q[i, self.linkage.drive_link, 2] + self.alpha)))) % 360.0,
+                        "its velocity equations are singular") from None
+            raise
+
+    def solve(self, phi) -> KinematicsResult:
+        """Positions, velocities and accelerations at the crank angles ``phi`` (rad)."""
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        q, _ = self.positions(phi, strict=True)
+        qd = self.velocities(q)
+        qdd = self.accelerations(q, qd)
+        return self._result(phi, q, qd, qdd)
+
+    def _result(self, phi, q, qd, qdd) -> KinematicsResult:
+        lk = self.linkage
+        points: dict[str, PointMotion] = {}
+        seen: set[str] = set()
+        for k in sorted(lk.bodies):
+            for name in lk.bodies[k].points:
+                if name in seen or (k == 0):
+                    continue
+                seen.add(name)
+                points[name] = self._point_motion(q, qd, qdd, k, tuple(lk.bodies[k].local[name]))
+        for name in lk.ground:
+            if name not in points:
+                z = np.zeros((phi.size, 2))
+                p = np.broadcast_to(np.asarray(lk.sketch[name], dtype=float), (phi.size, 2))
+                points[name] = PointMotion(_ro(p), _ro(z), _ro(z.copy()))
+        coms = {k: self._point_motion(q, qd, qdd, k, tuple(lk.bodies[k].com_local)) for k in lk.moving}
+        links = {k: LinkMotion(_ro(q[:, k, 2].copy()), _ro(qd[:, k, 2].copy()), _ro(qdd[:, k, 2].copy()))
+                 for k in lk.moving}
+        trans: dict[str, np.ndarray] = {}
+        flags = []
+        for g in self.structure.groups[1:]:
+            mu = transmission_angle(lk, g, q)
+            trans[g.key] = _ro(mu)
+            for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG):
+                flags.append((int(i), g.key, float(mu[i])))
+        return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), MappingProxyType(points),
+                                MappingProxyType(coms), MappingProxyType(links), MappingProxyType(trans),
+                                tuple(flags))
+
+    @staticmethod
+    def _point_motion(q, qd, qdd, k: int, p: tuple) -> PointMotion:
+        Rp = rot(q[:, k, 2], p)
+        w, e = qd[:, k, 2][:, None], qdd[:, k, 2][:, None]
+        pos = q[:, k, :2] + Rp
+        vel = qd[:, k, :2] + w * perp(Rp)
+        acc = qdd[:, k, :2] + e * perp(Rp) - w * w * Rp
+        return PointMotion(_ro(pos), _ro(vel), _ro(acc))
+
+
+def build_model(mech: Mechanism) -> KinematicModel:
+    linkage = compile_linkage(mech)
+    structure = analyse_structure(linkage)
+    return KinematicModel(linkage, structure)
