@@ -139,3 +139,32 @@ class TaskSyntaxError(TaskError):
         self.column = column
         super().__init__(file, f"line {line}, column {column}: {problem}",
                          "TOML syntax, see https://toml.io")
+
+
+class PlanetarySynthesisError(ReportgenInputError):
+    """No planetary tooth set meets every condition for the target ratio.
+
+    ``scheme``, ``target`` and ``tolerance`` repeat the request, ``satellites`` the K asked for
+    ("auto" or a number), ``reasons`` say which conditions rejected the sets that gave the ratio,
+    ``nearest`` lists the nearest ratios that do exist as ``(ratio, z, K)``.
+    """
+
+    def __init__(self, scheme: str, target: float, tolerance: float, satellites: int | str,
+                 reasons: tuple[str, ...], nearest: tuple[tuple[float, tuple[int, ...], int], ...]) -> None:
+        self.scheme = scheme
+        self.target = target
+        self.tolerance = tolerance
+        self.satellites = satellites
+        self.reasons = tuple(reasons)
+        self.nearest = tuple(nearest)
+        msg = (f"planetary.ratio: no {scheme} tooth set gives u = {target:g} within "
+               f"±{tolerance * 100:g} % with satellites = {satellites}")
+        if self.reasons:
+            msg += ": " + "; ".join(self.reasons)
+        if self.nearest:
+            msg += "; nearest ratios that exist: " + ", ".join(
+                f"{u:.4g} (z = {'/'.join(map(str, z))}, K = {k})" for u, z, k in self.nearest)
+        else:
+            msg += "; no valid set found near it either"
+        msg += " (expected a ratio this scheme can give, a larger tolerance or another scheme)"
+        super().__init__(msg)
