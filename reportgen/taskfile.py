@@ -233,7 +233,11 @@ def _ground(names: tuple[str, ...], path: str, points: dict[str, Vec2]) -> tuple
 
 def _split_pair(key: str, pts: tuple[str, ...]) -> list[tuple[str, str]]:
     """The ways ``key`` names two distinct points of the link: ``PQ`` or ``P-Q``."""
-    return [(p, q) for p, q in itertools.permutations(pts, 2) if key in (p + q, f"{p}-{q}")]
+    found: dict[frozenset, tuple[str, str]] = {}
+    for p, q in itertools.permutations(pts, 2):
+        if key in (p + q, f"{p}-{q}"):
+            found.setdefault(frozenset((p, q)), (p, q))
+    return list(found.values())
 
 
 def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _RawLink:

@@ -70,7 +70,13 @@ def suggest(word: str, candidates: Iterable[str]) -> str | None:
     cands = [c for c in candidates if isinstance(c, str)]
     lowered = {c.lower(): c for c in cands}
     hit = difflib.get_close_matches(word.lower(), list(lowered), n=1, cutoff=0.6)
-    return lowered[hit[0]] if hit else None
+    if hit:
+        return lowered[hit[0]]
+    if len(word) >= 2:  # an abbreviation: "max" for "max-load"
+        starts = [c for low, c in lowered.items() if low.startswith(word.lower())]
+        if len(starts) == 1:
+            return starts[0]
+    return None
 
 
 def check_keys(table: Mapping, path: str, known: Sequence[str]) -> None:
