@@ -1,0 +1,101 @@
+"""Compile ``report.tex`` with latexmk + xelatex, reproducibly, and report what went wrong.
+
+The PDF is reproducible: ``SOURCE_DATE_EPOCH`` (and ``FORCE_SOURCE_DATE``) fix every date
+xelatex and xdvipdfmx write. Auxiliary files go to ``<out>/latex-build/``; the PDF is copied to
+``<out>/report.pdf``. Errors are :class:`reportgen.errors.BuildError` with the ``!`` lines of the
+log and the ``l.<n>`` context, and say where the .tex and .log are kept.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from reportgen.errors import BuildError
+
+STAGE = "note (LaTeX)"
+APT_INSTALL = ("sudo apt-get install texlive-latex-recommended texlive-lang-cyrillic "
+               "texlive-xetex texlive-fonts-recommended latexmk fonts-liberation")
+DEFAULT_SOURCE_DATE_EPOCH = "1767225600"   # 2026-01-01 00:00 UTC, when the caller sets none
+BUILD_DIR = "latex-build"
+
+_UNDEFINED_RE = re.compile(
+    r"(LaTeX Warning: (Reference|Citation) .* undefined.*"
+    r"|LaTeX Warning: There were undefined references.*"
+    r"|LaTeX Warning: Label\(s\) may have changed.*)")
+_MISSING_CHAR_RE = re.compile(r"Missing character: There is no .*")
+
+
+@dataclass(frozen=True)
+class BuildReport:
+    """A finished build: where the files are, how long latexmk took, what it warned about."""
+    pdf: Path
+    tex: Path
+    log: Path
+    seconds: float
+    warnings: tuple[str, ...] = ()
+
+
+def build_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_references: bool = True,
+              source_date_epoch: str | None = None) -> BuildReport:
+    """Compile ``tex_path`` to a PDF next to it. Raise BuildError when TeX is missing or fails.
+
+    ``strict_references``: unresolved references or citations are an error (else a warning).
+    """
+    tex = Path(tex_path).resolve()
+    work = tex.parent
+    exe = shutil.which(latexmk)
+    if exe is None or shutil.which("xelatex") is None:
+        missing = latexmk if exe is None else "xelatex"
+        raise BuildError(STAGE, f"no TeX: '{missing}' was not found; install TeX Live with: "
+                                f"{APT_INSTALL}", kept=f"the LaTeX source {tex}")
+    build_dir = work / BUILD_DIR
+    build_dir.mkdir(exist_ok=True)
+    env = dict(os.environ)
+    env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH",
+                                                             DEFAULT_SOURCE_DATE_EPOCH)
+    env["FORCE_SOURCE_DATE"] = "1"
+    cmd = [exe, "-xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
+           f"-outdir={BUILD_DIR}", tex.name]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL,
+                          capture_output=True, text=True, errors="replace")
+    seconds = time.perf_counter() - start
+    log = build_dir / (tex.stem + ".log")
+    log_text = log.read_text(encoding="utf-8", errors="replace") if log.is_file() else ""
+    built = build_dir / (tex.stem + ".pdf")
+    if proc.returncode != 0 or not built.is_file():
+        excerpt = error_excerpt(log_text) or (proc.stdout + proc.stderr)[-2000:]
+        raise BuildError(STAGE, f"xelatex stopped on an error:\n{excerpt}",
+                         kept=f"the LaTeX source {tex} and the log {log}")
+    undefined = sorted(set(m.group(0).strip() for m in _UNDEFINED_RE.finditer(log_text)))
+    warnings = [m.group(0).strip() for m in _MISSING_CHAR_RE.finditer(log_text)]
+    if undefined and strict_references:
+        raise BuildError(STAGE, "unresolved references:\n" + "\n".join(undefined),
+                         kept=f"the LaTeX source {tex}, the PDF {built} and the log {log}")
+    warnings += undefined
+    pdf = work / (tex.stem + ".pdf")
+    shutil.copyfile(built, pdf)
+    return BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings))
+
+
+def error_excerpt(log_text: str, context_lines: int = 1) -> str:
+    """The ``!`` error lines of a TeX log up to their ``l.<n>`` line (plus ``context_lines``)."""
+    lines = log_text.splitlines()
+    out: list[str] = []
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("!"):
+            j = i
+            while j < len(lines) and j < i + 30 and not re.match(r"^l\.\d+", lines[j]):
+                j += 1
+            end = min(j + 1 + context_lines, len(lines))
+            out.extend(lines[i:end])
+            i = end
+        else:
+            i += 1
+    return "\n".join(out)

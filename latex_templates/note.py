@@ -1,0 +1,177 @@
+"""The note as a whole: sections supplied by their authors, rendered into one ``report.tex``."""
+from __future__ import annotations
+
+import re
+import shutil
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Literal, Mapping, Sequence
+
+from markupsafe import Markup
+
+from reportgen.task import Document
+
+from .build import BuildReport, build_pdf
+from .render import LANGUAGES, Strings, SymbolTracker, make_environment
+
+FrameKind = Literal["none", "frame", "eskd"]
+_KEY_RE = re.compile(r"^[a-z0-9][a-z0-9-]*$")
+
+
+@dataclass(frozen=True)
+class FigureRef:
+    """Where a figure's file sits relative to ``report.tex`` and its LaTeX label."""
+    path: str
+    label: str
+
+
+@dataclass
+class Section:
+    """One numbered section of the note.
+
+    ``template`` is a template name (``sections/kinematics.tex.j2``, looked up in the package's
+    templates, then in the builder's ``template_dirs``) rendered with ``context``; or ``body`` is
+    ready LaTeX (trusted). ``figures`` maps a name to a matplotlib figure (saved as vector PDF) or
+    a file path (copied); the template gets ``figures.<name>`` for ``m.figure(...)``.
+    ``key`` (lower case, digits, ``-``) names the section's label ``sec:<key>`` and its files.
+    """
+    key: str
+    title: str
+    template: str | None = None
+    body: str | None = None
+    context: Mapping[str, Any] = field(default_factory=dict)
+    figures: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if not _KEY_RE.match(self.key):
+            raise ValueError(f"section key {self.key!r}: use lower-case letters, digits and '-'")
+        if (self.template is None) == (self.body is None):
+            raise ValueError(f"section {self.key!r}: give exactly one of template= or body=")
+
+
+@dataclass(frozen=True)
+class _RenderedSection:
+    key: str
+    title: str
+    body: Markup
+
+
+class NoteBuilder:
+    """Collects the sections of a note and renders/builds it.
+
+    >>> from reportgen.task import Document
+    >>> note = NoteBuilder(Document(title="Пресс"))
+    >>> note.add_section(Section(key="demo", title="Демо", body="Текст."))
+    """
+
+    def __init__(self, document: Document, language: str | None = None, *,
+                 frame: FrameKind = "eskd", designation: str = "",
+                 template_dirs: Sequence[Path | str] = (),
+                 introduction: Sequence[str] = (), conclusions: Sequence[str] = (),
+                 references: Sequence[str] = (), assignment: Section | None = None,
+                 extra_preamble: str = "") -> None:
+        self.document = document
+        self.language = language or document.language or "ru"
+        if self.language not in LANGUAGES:
+            raise ValueError(f"language {self.language!r}: expected one of {', '.join(LANGUAGES)}")
+        if frame not in ("none", "frame", "eskd"):
+            raise ValueError(f"frame {frame!r}: expected none, frame or eskd")
+        self.frame = frame
+        self.designation = designation
+        self.template_dirs = tuple(template_dirs)
+        self.introduction = list(introduction)
+        self.conclusions = list(conclusions)
+        self.references = list(references)
+        self.assignment = assignment
+        self.extra_preamble = extra_preamble
+        self.sections: list[Section] = []
+        self.strings = Strings(self.language)
+        self.symbols = SymbolTracker()
+        self.last_build: BuildReport | None = None
+
+    def add_section(self, section: Section) -> None:
+        """Append a numbered section (in the order of the note)."""
+        if any(s.key == section.key for s in self.sections):
+            raise ValueError(f"section key {section.key!r} used twice")
+        self.sections.append(section)
+
+    # ------------------------------------------------------------------ rendering
+    def render(self, out_dir: Path | str) -> Path:
+        """Write ``out_dir/report.tex`` and ``out_dir/figures/*``; return the .tex path."""
+        out = Path(out_dir)
+        out.mkdir(parents=True, exist_ok=True)
+        env = make_environment(self.template_dirs)
+        self.symbols = SymbolTracker()
+        base = {"s": self.strings, "sym": self.symbols, "doc": self.document,
+                "language": self.language}
+        macros = env.get_template("macros.tex.j2").make_module(dict(base))
+        base["m"] = macros
+        assignment = None
+        if self.assignment is not None:
+            assignment = self._render_section(env, self.assignment, base, out).body
+        rendered = [self._render_section(env, sec, base, out) for sec in self.sections]
+        babel = LANGUAGES[self.language]
+        babel_languages = babel if babel == "english" else f"english,{babel}"
+        text = env.get_template("note.tex.j2").render(
+            **base, sections=rendered, assignment=assignment,
+            introduction=self.introduction, conclusions=self.conclusions,
+            references=self.references, frame=self.frame, designation=self.designation,
+            bottom_margin_mm=27 if self.frame == "eskd" else 20,
+            babel_languages=babel_languages, extra_preamble=Markup(self.extra_preamble))
+        tex_path = out / "report.tex"
+        tex_path.write_text(text, encoding="utf-8")
+        return tex_path
+
+    def build(self, out_dir: Path | str, *, latexmk: str = "latexmk",
+              strict_references: bool = True) -> BuildReport:
+        """Render and compile to ``out_dir/report.pdf``; the report has the pdf, log and timing."""
+        tex_path = self.render(out_dir)
+        self.last_build = build_pdf(tex_path, latexmk=latexmk,
+                                    strict_references=strict_references)
+        return self.last_build
+
+    def _render_section(self, env: Any, sec: Section, base: dict[str, Any],
+                        out: Path) -> _RenderedSection:
+        figures = {name: _place_figure(obj, out / "figures", f"{sec.key}-{name}", sec.key, name)
+                   for name, obj in sec.figures.items()}
+        if sec.body is not None:
+            body = Markup(sec.body)
+        else:
+            context = {**base, "figures": _Namespace(figures), "section": sec, **sec.context}
+            body = Markup(env.get_template(sec.template).render(context))
+        return _RenderedSection(sec.key, sec.title, body)
+
+
+class _Namespace:
+    """``figures.plan`` in a template; an unknown name is an error that lists the known ones."""
+
+    def __init__(self, items: Mapping[str, FigureRef]) -> None:
+        self._items = dict(items)
+
+    def __getattr__(self, name: str) -> FigureRef:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        try:
+            return self._items[name]
+        except KeyError:
+            raise AttributeError(f"no figure {name!r}; known: {', '.join(self._items) or 'none'}") from None
+
+    def __getitem__(self, name: str) -> FigureRef:
+        return self.__getattr__(name)
+
+
+def _place_figure(obj: Any, fig_dir: Path, stem: str, section_key: str, name: str) -> FigureRef:
+    """Save a matplotlib figure as PDF (no timestamp), or copy a file; return its reference."""
+    fig_dir.mkdir(parents=True, exist_ok=True)
+    safe = re.sub(r"[^A-Za-z0-9-]", "-", stem)
+    if hasattr(obj, "savefig"):
+        target = fig_dir / f"{safe}.pdf"
+        obj.savefig(target, format="pdf", bbox_inches="tight",
+                    metadata={"CreationDate": None, "ModDate": None, "Producer": None})
+    else:
+        src = Path(obj)
+        if not src.is_file():
+            raise FileNotFoundError(f"figure {name!r} of section {section_key!r}: no file {src}")
+        target = fig_dir / f"{safe}{src.suffix.lower()}"
+        shutil.copyfile(src, target)
+    return FigureRef(path=f"figures/{target.name}", label=f"fig:{section_key}:{name}")

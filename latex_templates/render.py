@@ -1,0 +1,251 @@
+"""The Jinja2 environment for LaTeX: delimiters, escaping, filters, strings, formula helpers.
+
+Delimiters (so that LaTeX braces stay LaTeX's)::
+
+    \\VAR{expression}        output, LaTeX-escaped unless the value is trusted ``Tex``
+    \\BLOCK{statement}       for/if/set/macro/import …
+    \\#{comment}             template comment
+    %# comment              line comment (removed)
+
+Escaping: every value printed by ``\\VAR{}`` is escaped (``_ % & # $ { } ~ ^ \\``) unless it is
+:class:`Tex` (``markupsafe.Markup``): macros, filters and catalogue strings return ``Tex``; a plain
+``str`` from the caller (a title, a name) always prints literally. A float prints with a decimal
+comma (the ``num`` filter). Mark your own LaTeX with the ``tex`` filter or :func:`tex`.
+Avoid the ``~`` concatenation operator on user text inside ``\\VAR{}``: Jinja's autoescape joins
+with HTML escaping there; print the pieces with separate ``\\VAR{}`` instead.
+"""
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any, Iterable, Mapping, Sequence
+
+import jinja2
+from markupsafe import Markup
+
+from reportgen.calc import CalcRecord, Var, unit_latex
+
+from . import numbers
+
+Tex = Markup
+"""Trusted LaTeX source: printed as is by ``\\VAR{}``."""
+
+LANGUAGES = {"ru": "russian", "uk": "ukrainian", "en": "english"}
+FALLBACK_LANGUAGE = "ru"
+
+_SPECIALS = {
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
+    "%": r"\%", "_": r"\_", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+}
+_SPECIALS_RE = re.compile("|".join(re.escape(c) for c in _SPECIALS))
+
+
+def escape_latex(text: Any) -> Markup:
+    """Text that prints literally in LaTeX (every special character escaped); ``Tex`` passes."""
+    if isinstance(text, Markup):
+        return text
+    return Markup(_SPECIALS_RE.sub(lambda m: _SPECIALS[m.group(0)], str(text)))
+
+
+def tex(source: Any) -> Markup:
+    """Mark ``source`` as trusted LaTeX (printed without escaping)."""
+    return Markup(str(source))
+
+
+def _finalize(value: Any) -> Any:
+    """Applied to every ``\\VAR{}`` value before autoescape: escape text, format numbers."""
+    if isinstance(value, Markup):
+        return value
+    if value is None:
+        raise jinja2.UndefinedError("None printed into the note (give a value or test for it)")
+    if isinstance(value, bool):
+        return Markup(str(value))
+    if isinstance(value, (int, float)):
+        return Markup(numbers.num(value))
+    return escape_latex(value)
+
+
+# --------------------------------------------------------------------------- strings catalogue
+class MissingString(KeyError):
+    """A key the strings catalogue of a language does not have."""
+
+
+class Strings:
+    """The sentences of the framework's templates in one language (``strings/<lang>.toml``).
+
+    In templates: ``\\VAR{s.headings.contents}``; a list stays a list (of ``Tex``). Keys missing in
+    the language fall back to Russian and are listed in :attr:`fallbacks`.
+    """
+
+    def __init__(self, language: str) -> None:
+        if language not in LANGUAGES:
+            raise ValueError(f"language {language!r}: expected one of {', '.join(LANGUAGES)}")
+        self.language = language
+        self._data = _load_strings(language)
+        self._fallback = _load_strings(FALLBACK_LANGUAGE) if language != FALLBACK_LANGUAGE else {}
+        self.fallbacks: set[str] = set()
+
+    def get(self, key: str) -> Any:
+        """The string (or list, or table) at a dotted key, as ``Tex``."""
+        found = _lookup(self._data, key)
+        if found is None:
+            found = _lookup(self._fallback, key)
+            if found is None:
+                raise MissingString(f"no string {key!r} for language {self.language!r}")
+            self.fallbacks.add(key)
+        return _as_tex(found, key, self)
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return self.get(name)
+
+
+class _StringTable:
+    """A table of the catalogue, read by attribute in templates."""
+
+    def __init__(self, strings: Strings, prefix: str) -> None:
+        self._strings = strings
+        self._prefix = prefix
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return self._strings.get(f"{self._prefix}.{name}")
+
+
+def _as_tex(found: Any, key: str, strings: Strings) -> Any:
+    if isinstance(found, dict):
+        return _StringTable(strings, key)
+    if isinstance(found, list):
+        return [Markup(x) for x in found]
+    return Markup(found)
+
+
+def _lookup(data: Mapping[str, Any], key: str) -> Any:
+    node: Any = data
+    for part in key.split("."):
+        if not isinstance(node, dict) or part not in node:
+            return None
+        node = node[part]
+    return node
+
+
+_STRING_CACHE: dict[str, dict[str, Any]] = {}
+
+
+def _load_strings(language: str) -> dict[str, Any]:
+    if language not in _STRING_CACHE:
+        path = resources.files(__package__).joinpath("strings", f"{language}.toml")
+        _STRING_CACHE[language] = tomllib.loads(path.read_text(encoding="utf-8")) \
+            if path.is_file() else {}
+    return _STRING_CACHE[language]
+
+
+# --------------------------------------------------------------------------- symbols («где»)
+@dataclass
+class SymbolTracker:
+    """Remembers which symbols the note has already explained in a «где» list.
+
+    :meth:`first` returns the variables of a formula not explained before (in formula order, each
+    symbol once) and marks them; variables with no ``meaning`` cannot be explained and are kept in
+    :attr:`unexplained` so a section author can see them.
+    """
+    explained: set[str] = field(default_factory=set)
+    unexplained: set[str] = field(default_factory=set)
+
+    def first(self, variables: Iterable[Var]) -> list[Var]:
+        out: list[Var] = []
+        for v in variables:
+            if v.latex in self.explained:
+                continue
+            if not v.meaning:
+                self.unexplained.add(v.latex)
+                continue
+            self.explained.add(v.latex)
+            self.unexplained.discard(v.latex)
+            out.append(v)
+        return out
+
+    def define(self, latex: str) -> None:
+        """Mark a symbol as explained in the running text."""
+        self.explained.add(latex)
+        self.unexplained.discard(latex)
+
+
+# --------------------------------------------------------------------------- formula pieces
+WIDE_FORMULA = 60   # visible characters above which a formula is split after the symbolic form
+
+
+def visible_width(source: str) -> int:
+    """A rough count of the characters a math formula shows (commands count one, braces none)."""
+    text = re.sub(r"\\(left|right|text|operatorname|frac|sqrt)(?![A-Za-z])", "", source)
+    text = re.sub(r"\\[A-Za-z]+|\\.", "x", text)
+    text = re.sub(r"[{}^_ ]", "", text)
+    return len(text)
+
+
+@dataclass(frozen=True)
+class CalcParts:
+    """The LaTeX pieces of a record for the ``calc`` macro."""
+    symbol: Markup
+    symbolic: Markup | None      # None when it would repeat the substitution
+    substituted: Markup | None   # None when it would repeat the result
+    result: Markup
+    wide: bool
+
+
+def calc_parts(rec: CalcRecord) -> CalcParts:
+    """Symbol, symbolic form, substitution and result of a record, and whether to split it."""
+    symbolic = rec.symbolic_latex()
+    substituted = rec.substituted_latex()
+    result_number = rec.result_number_latex()
+    show_symbolic = symbolic != substituted
+    show_substituted = substituted != result_number
+    width = visible_width(" ".join([rec.symbol, symbolic if show_symbolic else "",
+                                    substituted if show_substituted else "", rec.result_latex()]))
+    return CalcParts(
+        symbol=Markup(rec.symbol),
+        symbolic=Markup(symbolic) if show_symbolic else None,
+        substituted=Markup(substituted) if show_substituted else None,
+        result=Markup(rec.result_latex()),
+        wide=width > WIDE_FORMULA and show_symbolic and show_substituted,
+    )
+
+
+def unit_text(unit: str) -> Markup:
+    """A unit in running text (escaped)."""
+    return escape_latex(unit)
+
+
+# --------------------------------------------------------------------------- environment
+def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environment:
+    """The Jinja environment: the package's templates, then ``template_dirs``; LaTeX delimiters."""
+    loaders: list[jinja2.BaseLoader] = [jinja2.PackageLoader(__package__, "templates")]
+    loaders += [jinja2.FileSystemLoader(str(d)) for d in template_dirs]
+    env = jinja2.Environment(
+        loader=jinja2.ChoiceLoader(loaders),
+        block_start_string=r"\BLOCK{", block_end_string="}",
+        variable_start_string=r"\VAR{", variable_end_string="}",
+        comment_start_string=r"\#{", comment_end_string="}",
+        line_comment_prefix="%#",
+        trim_blocks=True, lstrip_blocks=True,
+        autoescape=True, finalize=_finalize,
+        undefined=jinja2.StrictUndefined,
+        keep_trailing_newline=True,
+    )
+    env.filters.update(
+        num=lambda v, digits=4: Markup(numbers.num(v, digits)),
+        fixed=lambda v, decimals=2: Markup(numbers.fixed(v, decimals)),
+        deg=lambda v, decimals=1: Markup(numbers.deg(v, decimals)),
+        angle=lambda v, decimals=1: Markup(numbers.angle(v, decimals)),
+        mnum=lambda v, digits=4: Markup(numbers.mnum(v, digits)),
+        mfixed=lambda v, decimals=2: Markup(numbers.mfixed(v, decimals)),
+        tex=tex, escape_latex=escape_latex, unit=unit_text,
+        unit_math=lambda u: Markup(unit_latex(u)),
+    )
+    env.globals.update(tex=tex, calc_parts=calc_parts)
+    return env
