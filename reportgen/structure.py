@@ -173,8 +173,10 @@ def _classify(S: tuple[int, ...], pairs: list[Pair]) -> tuple[int, int, str]:
     edges = [p.bodies for p in internal]
     cyc = _longest_cycle(S, edges)
     cls = max(3, cyc)
-    kind = "".join(sorted(p.kind for p in pairs))
-    return cls, order, f"{len(S)}-link:{kind}"
+    prismatic = sum(1 for p in pairs if p.kind == "P")
+    base = {"III": "triad", "IV": "quad"}.get({3: "III", 4: "IV"}.get(cls, ""), f"class-{cls}")
+    kind = base if not prismatic else f"{base}-{prismatic}P"
+    return cls, order, kind
 
 
 def chebyshev(linkage: Linkage) -> tuple[int, int, int, int]:

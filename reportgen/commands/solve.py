@@ -1,0 +1,76 @@
+"""``reportgen solve TASK --json OUT [--at DEG ...] [--force-at DEG]``: numbers only."""
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+import tempfile
+
+from ..errors import OptionError
+from ..project import Project
+from ..results import build_results, dumps
+from ..taskfile import load_task
+
+
+def register(sub) -> None:
+    p = sub.add_parser("solve", help="solve the task and write results.json (no PDF, no DXF)")
+    p.add_argument("task", help="the task file (TOML)")
+    p.add_argument("--json", metavar="OUT", help="write results.json here")
+    p.add_argument("--at", metavar="DEG", type=float, nargs="+", help="analyse these crank angles φ1 instead of [analysis] positions")
+    p.add_argument("--force-at", metavar="DEG", type=float, help="kinetostatics at this crank angle")
+    p.add_argument("--quiet", action="store_true", help="no summary on stdout")
+    p.set_defaults(func=run)
+
+
+def write_atomic(path: str, text: str) -> None:
+    """Write through a temporary file in the same folder, so no half-written file is left."""
+    folder = os.path.dirname(os.path.abspath(path)) or "."
+    if not os.path.isdir(folder):
+        raise OptionError("--json", f"the folder {folder} does not exist", "a path in an existing folder")
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".reportgen-", suffix=".json")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def summary(project: Project) -> str:
+    lines = []
+    if project.task.mechanism is not None:
+        s = project.structure
+        lines.append(f"{project.task.mechanism.name}")
+        lines.append(f"  W = 3·{s.n} − 2·{s.p1} − {s.p2} = {s.W} (numerical: {s.W_numeric}, redundant constraints: {s.redundant})")
+        lines.append(f"  structural formula: {s.formula}; mechanism of class {s.mechanism_class}")
+        for g in s.groups[1:]:
+            lines.append(f"    group {g.label}: class {g.group_class}, order {g.order}, kind {g.kind}")
+        st = project.strokes
+        if st is not None:
+            unit = "m" if st.output.kind == "slider" else "rad"
+            lines.append(f"  output link {st.output.link} ({st.output.kind}): stroke {st.stroke:.5g} {unit}; "
+                         f"working stroke {st.working_deg:.3f}° from φ1 = {math.degrees(st.phi_start):.3f}°, "
+                         f"idle stroke {st.idle_deg:.3f}°, K = {st.time_ratio:.4f}")
+        kin = project.kinematics
+        lines.append(f"  {len(kin.phi)} positions analysed; minimum transmission angle " +
+                     ", ".join(f"{k}: {v.min():.1f}°" for k, v in kin.transmission_deg.items()))
+        for i, g, mu in kin.near_singular:
+            lines.append(f"  warning: position {i} (φ1 = {math.degrees(kin.phi[i]) % 360:.2f}°) is near a singular "
+                         f"position of group {g}: μ = {mu:.2f}°")
+    return "\n".join(lines)
+
+
+def run(args: argparse.Namespace) -> int:
+    task = load_task(args.task)
+    project = Project(task, at_deg=args.at)
+    results = build_results(project)
+    if args.json:
+        write_atomic(args.json, dumps(results))
+    if not args.quiet:
+        print(summary(project))
+        if args.json:
+            print(f"results: {args.json}")
+    return 0

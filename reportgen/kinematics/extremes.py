@@ -1,0 +1,118 @@
+"""The output link, its extreme positions (dead centres), the working and idle strokes.
+
+The output is the last attached link that has a pair with the frame: a slider (its displacement
+along the guide) or a rocker (its angle). Its extreme positions are the roots of its velocity
+v(φ) = 0, bracketed on a grid of ``GRID`` crank angles and refined by Brent's method to
+``ROOT_XTOL`` rad. The working stroke is the stroke that takes the larger crank angle (the slow
+stroke of a quick-return mechanism, as in the course's presses and shapers) unless the task asks
+for the other one; position 0 (``start = "extreme"``) is the start of the working stroke.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .constraints import rot, world
+from .solve import KinematicModel
+
+GRID = 720
+ROOT_XTOL = 1e-13
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output link: ``kind`` "slider" (coordinate in m) or "rocker" (angle in rad)."""
+    link: int
+    kind: str
+    point: str | None          # the slider's point on the guide
+    slide: int = -1
+
+
+@dataclass(frozen=True)
+class Strokes:
+    output: Output
+    phi_start: float           # crank angle at the start of the working stroke, rad
+    phi_end: float             # at its end, rad
+    working_deg: float         # crank angle of the working stroke
+    idle_deg: float
+    stroke: float              # travel of the output between its extremes (m or rad)
+    direction: float           # +1 if the output coordinate grows along the working stroke
+    time_ratio: float          # K = working / idle (coefficient of the average speed change)
+
+
+def find_output(model: KinematicModel) -> Output:
+    lk = model.linkage
+    for g in reversed(model.structure.groups[1:]):
+        for k in reversed(g.links):
+            for s in lk.slides:
+                if s.link == k and s.guide == 0:
+                    return Output(k, "slider", s.point, s.index)
+        for k in reversed(g.links):
+            for j in lk.joints:
+                if 0 in j.bodies and k in j.bodies:
+                    return Output(k, "rocker", j.name)
+    d = lk.drive_link
+    return Output(d, "rocker", lk.drive_axis)
+
+
+def output_coordinate(model: KinematicModel, out: Output, q: np.ndarray, qd: np.ndarray | None = None):
+    """The output's coordinate (m along the guide, or rad) and, with ``qd``, its velocity."""
+    lk = model.linkage
+    if out.kind == "slider":
+        s = lk.slides[out.slide]
+        u = np.asarray(s.line_dir)
+        p = world(q, out.link, s.point_local)
+        x = p @ u
+        if qd is None:
+            return x
+        Rp = rot(q[:, out.link, 2], s.point_local)
+        v = qd[:, out.link, :2] + qd[:, out.link, 2][:, None] * np.stack((-Rp[:, 1], Rp[:, 0]), -1)
+        return x, v @ u
+    x = np.unwrap(q[:, out.link, 2])
+    return x if qd is None else (x, qd[:, out.link, 2])
+
+
+def _velocity_at(model: KinematicModel, out: Output, phi: float) -> float:
+    q, _ = model.positions(np.array([phi]))
+    qd = model.velocities(q)
+    return float(output_coordinate(model, out, q, qd)[1][0])
+
+
+def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
+    """Extreme positions by root finding; ``working`` = "slow" (default) or "fast"."""
+    out = find_output(model)
+    sgn = 1.0 if model.omega >= 0 else -1.0
+    phi0 = model.linkage.sketch_phi()
+    grid = phi0 + sgn * np.linspace(0.0, 2 * math.pi, GRID, endpoint=False)
+    q, _ = model.positions(grid)
+    qd = model.velocities(q)
+    x, v = output_coordinate(model, out, q, qd)
+    roots = []
+    for i in range(GRID):
+        j = (i + 1) % GRID
+        a, b = grid[i], grid[i] + sgn * 2 * math.pi / GRID
+        if v[i] == 0.0:
+            roots.append(grid[i])
+        elif v[i] * v[j] < 0:
+            lo, hi = (a, b) if a < b else (b, a)
+            roots.append(brentq(lambda ph: _velocity_at(model, out, ph), lo, hi, xtol=ROOT_XTOL))
+    if len(roots) < 2:
+        raise ValueError("the output link has no extreme positions (it turns fully)")
+    rq, _ = model.positions(np.array(roots))
+    rx = output_coordinate(model, out, rq)
+    i_max, i_min = int(np.argmax(rx)), int(np.argmin(rx))
+    phi_max, phi_min = roots[i_max], roots[i_min]
+    # crank angle from max to min in the direction of rotation
+    a_max_to_min = math.degrees((sgn * (phi_min - phi_max)) % (2 * math.pi))
+    a_min_to_max = 360.0 - a_max_to_min
+    slow_from_max = a_max_to_min >= a_min_to_max
+    from_max = slow_from_max if working == "slow" else not slow_from_max
+    if from_max:
+        start, end, work, idle, direction = phi_max, phi_min, a_max_to_min, a_min_to_max, -1.0
+    else:
+        start, end, work, idle, direction = phi_min, phi_max, a_min_to_max, a_max_to_min, 1.0
+    stroke = float(rx[i_max] - rx[i_min])
+    return Strokes(out, start % (2 * math.pi), end % (2 * math.pi), work, idle, stroke, direction, work / idle)

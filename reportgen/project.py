@@ -1,0 +1,76 @@
+"""``Project(task)``: the stages of the course project, each computed once, when first asked for.
+
+structure ─▶ kinematics ─▶ (kinetostatics, dynamics); gears and planetary are independent. A
+section of the note or a sheet reads only the stages it needs, so ``reportgen gear`` or the gear
+sheet never runs the linkage solver.
+"""
+from __future__ import annotations
+
+import math
+from functools import cached_property
+
+import numpy as np
+
+from .errors import TaskError
+from .kinematics import KinematicModel, KinematicsResult
+from .kinematics.extremes import Strokes, find_strokes
+from .linkage import Linkage, compile_linkage
+from .structure import Structure, analyse_structure
+from .task import Task
+
+
+class Project:
+    """Lazy, cached stages of one task. ``at_deg`` replaces the [analysis] positions."""
+
+    def __init__(self, task: Task, at_deg: list[float] | None = None):
+        self.task = task
+        self.at_deg = list(at_deg) if at_deg else None
+
+    def _need_mechanism(self):
+        if self.task.mechanism is None:
+            raise TaskError("mechanism", "the task has no [mechanism] section", "a [mechanism] section")
+        return self.task.mechanism
+
+    @cached_property
+    def linkage(self) -> Linkage:
+        return compile_linkage(self._need_mechanism())
+
+    @cached_property
+    def structure(self) -> Structure:
+        return analyse_structure(self.linkage)
+
+    @cached_property
+    def model(self) -> KinematicModel:
+        return KinematicModel(self.linkage, self.structure)
+
+    @cached_property
+    def strokes(self) -> Strokes | None:
+        """Extreme positions of the output; None if the output turns fully (no dead centres)."""
+        try:
+            return find_strokes(self.model)
+        except ValueError:
+            return None
+
+    @cached_property
+    def phi(self) -> np.ndarray:
+        """The analysed crank angles, rad: [analysis] positions from position 0, or ``at_deg``."""
+        if self.at_deg is not None:
+            return np.radians(np.asarray(self.at_deg, dtype=float))
+        a = self.task.analysis
+        sgn = 1.0 if self.model.omega >= 0 else -1.0
+        if a.start == "extreme":
+            if self.strokes is None:
+                raise TaskError("analysis.start", "the output link has no extreme position (it turns fully)",
+                                "a crank angle in degrees")
+            phi0 = self.strokes.phi_start
+        else:
+            phi0 = math.radians(float(a.start))
+        k = np.arange(a.positions)
+        return np.mod(phi0 + sgn * k * 2 * math.pi / a.positions, 2 * math.pi)
+
+    @cached_property
+    def kinematics(self) -> KinematicsResult:
+        return self.model.solve(self.phi)
+
+    def kinematics_at(self, phi_rad) -> KinematicsResult:
+        return self.model.solve(phi_rad)

@@ -1,0 +1,78 @@
+"""results.json (``../shared/RESULTS_FORMAT.md``): the numbers the note prints and the sheets draw.
+
+Vectors are [x, y] in SI units, angles in degrees, angular speeds in rad/s (positive =
+counter-clockwise); position-wise lists follow ``kinematics.phi_deg``. Keys beyond the contract are
+documented in docs/results.md.
+"""
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from .kinematics import KinematicsResult
+from .kinematics.extremes import Strokes
+from .project import Project
+
+FORMAT = "reportgen-results/1"
+
+
+def _clean(x: Any) -> Any:
+    """Plain JSON values; never NaN or infinity."""
+    if isinstance(x, np.ndarray):
+        return _clean(x.tolist())
+    if isinstance(x, (list, tuple)):
+        return [_clean(v) for v in x]
+    if isinstance(x, dict):
+        return {str(k): _clean(v) for k, v in x.items()}
+    if isinstance(x, (np.floating, float)):
+        f = float(x)
+        if not math.isfinite(f):
+            raise ValueError("a non-finite number reached results.json")
+        return 0.0 if f == 0.0 else f
+    if isinstance(x, np.integer):
+        return int(x)
+    return x
+
+
+def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None, linkage=None) -> dict:
+    block: dict[str, Any] = {
+        "phi_deg": np.mod(kin.phi_deg, 360.0),
+        "points": {name: {"pos": m.pos, "vel": m.vel, "acc": m.acc} for name, m in kin.points.items()},
+        "centers_of_mass": {str(k): {"pos": m.pos, "vel": m.vel, "acc": m.acc} for k, m in kin.coms.items()},
+        "links": {str(k): {"angle_deg": np.mod(np.degrees(m.angle), 360.0), "omega": m.omega, "epsilon": m.epsilon}
+                  for k, m in kin.links.items()},
+        "transmission_angle_deg": dict(kin.transmission_deg),
+        "near_singular": [{"position": i, "group": g, "transmission_angle_deg": mu} for i, g, mu in kin.near_singular],
+    }
+    if strokes is not None:
+        block["extremes"] = {
+            "output_link": strokes.output.link,
+            "output_kind": strokes.output.kind,
+            "output_point": strokes.output.point,
+            "phi_start_deg": math.degrees(strokes.phi_start),
+            "phi_end_deg": math.degrees(strokes.phi_end),
+            "working_stroke_deg": strokes.working_deg,
+            "idle_stroke_deg": strokes.idle_deg,
+            "stroke": strokes.stroke,
+            "time_ratio": strokes.time_ratio,
+        }
+    return block
+
+
+def build_results(project: Project, sections: tuple[str, ...] = ("structure", "kinematics")) -> dict:
+    """The results dictionary of the stages asked for (a section the task leaves out is absent)."""
+    out: dict[str, Any] = {"format": FORMAT}
+    if project.task.mechanism is not None:
+        if "structure" in sections:
+            out["structure"] = project.structure.to_dict()
+        if "kinematics" in sections:
+            out["kinematics"] = kinematics_block(project.kinematics, project.strokes)
+    return _clean(out)
+
+
+def dumps(results: dict) -> str:
+    """Deterministic JSON text (stable key order as built, no NaN)."""
+    return json.dumps(results, ensure_ascii=False, indent=1, allow_nan=False) + "\n"
