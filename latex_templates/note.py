@@ -9,6 +9,7 @@ from typing import Any, Literal, Mapping, Sequence
 
 from markupsafe import Markup
 
+from reportgen.calc import CalcRecord, evaluate_displayed
 from reportgen.task import Document
 
 from .build import BuildReport, build_pdf
@@ -59,7 +60,8 @@ class _RenderedSection:
 class NoteBuilder:
     """Collects the sections of a note and renders/builds it.
 
-    >>> from reportgen.task import Document
+    >>> from reportgen.calc import CalcRecord, evaluate_displayed
+from reportgen.task import Document
     >>> note = NoteBuilder(Document(title="Пресс"))
     >>> note.add_section(Section(key="demo", title="Демо", body="Текст."))
     """
@@ -88,6 +90,11 @@ class NoteBuilder:
         self.strings = Strings(self.language)
         self.symbols = SymbolTracker()
         self.last_build: BuildReport | None = None
+
+    @property
+    def records(self) -> list[CalcRecord]:
+        """Every calculation record printed by the last :meth:`render`, in order."""
+        return list(self.symbols.records)
 
     def add_section(self, section: Section) -> None:
         """Append a numbered section (in the order of the note)."""
@@ -118,6 +125,10 @@ class NoteBuilder:
             references=self.references, frame=self.frame, designation=self.designation,
             bottom_margin_mm=27 if self.frame == "eskd" else 20,
             babel_languages=babel_languages, extra_preamble=Markup(self.extra_preamble))
+        bad = [r for r in self.symbols.records if not evaluate_displayed(r).ok]
+        if bad:
+            raise ValueError("printed formulas do not reproduce their printed results: "
+                             + "; ".join(f"{r.symbol} = {r.expr}" for r in bad))
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")
         return tex_path

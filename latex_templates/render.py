@@ -156,6 +156,12 @@ class SymbolTracker:
     """
     explained: set[str] = field(default_factory=set)
     unexplained: set[str] = field(default_factory=set)
+    records: list[CalcRecord] = field(default_factory=list)
+
+    def shown(self, rec: CalcRecord) -> str:
+        """Note that ``rec`` is printed (the ``calc`` macro calls this); returns ''."""
+        self.records.append(rec)
+        return ""
 
     def first(self, variables: Iterable[Var]) -> list[Var]:
         out: list[Var] = []
@@ -216,6 +222,17 @@ def calc_parts(rec: CalcRecord) -> CalcParts:
     )
 
 
+def table_cell(value: Any, decimals: int | None = None) -> Markup:
+    """A table cell: a number with ``decimals`` fixed places (or 4 significant digits), else text."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if decimals is not None:
+            return Markup(numbers.fixed(value, decimals))
+        return Markup(numbers.num(value))
+    if value is None:
+        return Markup("")
+    return escape_latex(value)
+
+
 def unit_text(unit: str) -> Markup:
     """A unit in running text (escaped)."""
     return escape_latex(unit)
@@ -235,6 +252,7 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
         trim_blocks=True, lstrip_blocks=True,
         autoescape=True, finalize=_finalize,
         undefined=jinja2.StrictUndefined,
+        extensions=["jinja2.ext.do"],
         keep_trailing_newline=True,
     )
     env.filters.update(
@@ -247,5 +265,5 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
         tex=tex, escape_latex=escape_latex, unit=unit_text,
         unit_math=lambda u: Markup(unit_latex(u)),
     )
-    env.globals.update(tex=tex, calc_parts=calc_parts)
+    env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell)
     return env

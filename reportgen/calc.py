@@ -309,7 +309,10 @@ def record(symbol: str, expr: str, unit: str = "", *variables: Var, label: str =
         raise CalcExpressionError(f"{expr!r}: variables not in the expression: {', '.join(sorted(unused))}")
     ordered = tuple(by_name[n] for n in _names_in_order(tree))
     values = {v.name: v.value for v in ordered}
-    value = _evaluate(tree, values)
+    try:
+        value = _evaluate(tree, values)
+    except (ArithmeticError, ValueError) as exc:
+        raise CalcExpressionError(f"{expr!r} cannot be evaluated: {exc}") from None
     if not math.isfinite(value):
         raise CalcExpressionError(f"{expr!r} is not finite: {value!r}")
     rec = CalcRecord(symbol, expr, ordered, value, unit, label, digits, meaning, digits)
