@@ -1,0 +1,101 @@
+"""DXF → PNG / SVG previews with ezdxf's drawing add-on (white paper, true lineweights).
+
+The PNG is rendered by matplotlib (Agg) at the paper size read from ``$PLIMMAX``, so a 0.7 mm line
+is 0.7 mm on the paper at any ``dpi``; the SVG by ezdxf's own SVG backend on a page of the same
+size. Both are deterministic for the same DXF.
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import ezdxf
+from ezdxf.document import Drawing
+
+MM_PER_INCH = 25.4
+
+
+def _load(source: str | os.PathLike[str] | Drawing) -> Drawing:
+    if isinstance(source, Drawing):
+        return source
+    return ezdxf.readfile(os.fspath(source))
+
+
+def paper_size(doc: Drawing) -> tuple[float, float]:
+    """The paper (mm) from ``$PLIMMAX`` − ``$PLIMMIN``; the modelspace extents if unset."""
+    lo = doc.header.get("$PLIMMIN", (0.0, 0.0))
+    hi = doc.header.get("$PLIMMAX", (0.0, 0.0))
+    w, h = float(hi[0]) - float(lo[0]), float(hi[1]) - float(lo[1])
+    if w > 1.0 and h > 1.0:
+        return w, h
+    from ezdxf import bbox
+    ext = bbox.extents(doc.modelspace())
+    return float(ext.size.x), float(ext.size.y)
+
+
+def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.PathLike[str],
+               *, dpi: int = 100) -> Path:
+    """Render the modelspace of a DXF (path or document) to a PNG on white paper."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from ezdxf.addons.drawing import Frontend, RenderContext
+    from ezdxf.addons.drawing.config import Configuration
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+    from ezdxf.addons.drawing.properties import LayoutProperties
+
+    doc = _load(source)
+    w, h = paper_size(doc)
+    fig = plt.figure(figsize=(w / MM_PER_INCH, h / MM_PER_INCH), dpi=dpi)
+    try:
+        ax = fig.add_axes((0, 0, 1, 1))
+        ax.set_axis_off()
+        msp = doc.modelspace()
+        ctx = RenderContext(doc)
+        props = LayoutProperties.from_layout(msp)
+        props.set_colors("#FFFFFF")
+        Frontend(ctx, MatplotlibBackend(ax, adjust_figure=False),
+                 config=Configuration(lineweight_scaling=72.0 / MM_PER_INCH,
+                                       min_lineweight=0.5)).draw_layout(
+            msp, finalize=True, layout_properties=props)
+        lo = doc.header.get("$PLIMMIN", (0.0, 0.0))
+        ax.set_xlim(float(lo[0]), float(lo[0]) + w)
+        ax.set_ylim(float(lo[1]), float(lo[1]) + h)
+        ax.set_aspect("equal")
+        fig.savefig(os.fspath(png_path), dpi=dpi, facecolor="#FFFFFF", metadata={"Software": None})
+    finally:
+        plt.close(fig)
+    return Path(png_path)
+
+
+def render_svg(source: str | os.PathLike[str] | Drawing, svg_path: str | os.PathLike[str]) -> Path:
+    """Render the modelspace to an SVG page of the paper size (ezdxf's SVG backend)."""
+    from ezdxf.addons.drawing import Frontend, RenderContext, layout, svg
+    from ezdxf.addons.drawing.properties import LayoutProperties
+
+    doc = _load(source)
+    w, h = paper_size(doc)
+    msp = doc.modelspace()
+    backend = svg.SVGBackend()
+    props = LayoutProperties.from_layout(msp)
+    props.set_colors("#FFFFFF")
+    Frontend(RenderContext(doc), backend).draw_layout(msp, layout_properties=props)
+    page = layout.Page(w, h, layout.Units.mm, margins=layout.Margins.all(0))
+    text = backend.get_string(page, settings=layout.Settings(fit_page=True))
+    Path(svg_path).write_text(text, encoding="utf-8")
+    return Path(svg_path)
+
+
+def ink_fraction(png_path: str | os.PathLike[str], threshold: float = 0.5) -> float:
+    """Share of pixels darker than ``threshold`` (0 = white … 1) in a PNG: 0.0 for a blank page."""
+    import numpy as np
+    from matplotlib import image
+
+    img = image.imread(os.fspath(png_path))
+    if img.dtype.kind in "ui":
+        img = img / float(np.iinfo(img.dtype).max)
+    rgb = img[..., :3] if img.ndim == 3 else img[..., None]
+    lum = rgb.mean(axis=-1)
+    if img.ndim == 3 and img.shape[-1] == 4:  # transparent pixels count as paper
+        lum = np.where(img[..., 3] < 0.5, 1.0, lum)
+    return float((lum < threshold).mean())

@@ -1,0 +1,224 @@
+"""Layers, ГОСТ 2.303 line types, the ГОСТ 2.304-like text style and the ESKD dimension style.
+
+Everything a sheet DXF needs before the first entity is drawn: :func:`new_document` builds a
+reproducible R2013 document in millimetres with these tables and the matching ``$…`` header
+variables (LibreCAD reads the header, not only the style tables).
+"""
+from __future__ import annotations
+
+import contextlib
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Iterator
+
+import ezdxf
+from ezdxf.document import Drawing
+
+#: LibreCAD chooses the font of a TEXT by the *name* of its text style; OpenGostTypeB-Regular.lff
+#: ships with librecad-data. ezdxf cannot parse that .lff, so the style's font *file* is a TTF that
+#: ezdxf (and other CAD programs) render instead: DejaVu Sans Mono has nearly the same advance as the
+#: OpenGost type B stroke font (measured: 231 vs 234 mm for a 38-character line at 7 mm).
+TEXT_STYLE = "OpenGostTypeB-Regular"
+TEXT_STYLE_FONT = "DejaVuSansMono.ttf"
+
+#: The dimension style of every sheet.
+DIM_STYLE = "ESKD"
+
+#: ГОСТ 2.304 font sizes (height of capitals, mm).
+TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0)
+
+#: Standard DXF lineweights, 1/100 mm.
+_LINEWEIGHTS = (13, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 80, 90, 100, 106, 120, 140, 158, 200, 211)
+
+
+@dataclass(frozen=True)
+class LineType:
+    """A line type: DXF name (one LibreCAD knows), description, dash pattern in mm.
+
+    ``pattern`` lists dashes (> 0), gaps (< 0) and dots (0), ezdxf-style without the total.
+    """
+    name: str
+    description: str
+    pattern: tuple[float, ...]
+
+    @property
+    def total(self) -> float:
+        return sum(abs(x) for x in self.pattern)
+
+
+#: ГОСТ 2.303 lines under the names LibreCAD draws. Dash and gap lengths are the mid-range of the
+#: standard for an A1 sheet (thin dash-dot: dashes 5–30, gaps 3–5 mm; dashed: 2–8 / 1–2 mm).
+LINETYPES: tuple[LineType, ...] = (
+    LineType("CENTER", "Штрихпунктирная тонкая (оси) ____ . ____ .", (20.0, -1.5, 0.5, -1.5)),
+    LineType("DASHED", "Штриховая (невидимый контур) _ _ _ _", (5.0, -1.5)),
+    LineType("DASHDOT", "Штрихпунктирная утолщённая __ . __ .", (6.0, -1.5, 0.5, -1.5)),
+    LineType("DIVIDE", "Штрихпунктирная с двумя точками ____ . . ____",
+             (20.0, -1.5, 0.5, -1.5, 0.5, -1.5)),
+)
+
+
+@dataclass(frozen=True)
+class LayerSpec:
+    """A layer: name, DXF line type, lineweight in 1/100 mm, ACI colour, what it holds."""
+    name: str
+    linetype: str
+    lineweight: int
+    color: int
+    purpose: str
+
+
+#: Line width of the main contour (ГОСТ 2.303 ``s``) and of thin lines, mm.
+CONTOUR_WIDTH = 0.7
+THIN_WIDTH = 0.35
+
+LAYERS: tuple[LayerSpec, ...] = (
+    LayerSpec("contour", "Continuous", 70, 7, "сплошная основная: links, frame, title-block outline"),
+    LayerSpec("thin", "Continuous", 35, 7, "сплошная тонкая: hatching, title-block grid, leaders"),
+    LayerSpec("axis", "CENTER", 35, 7, "штрихпунктирная тонкая: axes and centre lines"),
+    LayerSpec("hidden", "DASHED", 35, 7, "штриховая: hidden contours"),
+    LayerSpec("phantom", "DIVIDE", 35, 7, "штрихпунктирная с двумя точками: extreme positions"),
+    LayerSpec("dimensions", "Continuous", 35, 7, "dimensions"),
+    LayerSpec("text", "Continuous", 35, 7, "texts and labels"),
+    LayerSpec("vectors", "Continuous", 50, 7, "vectors of plans and force polygons"),
+    LayerSpec("construction", "Continuous", 25, 8, "construction lines of plans and diagrams"),
+)
+LAYER_NAMES = tuple(spec.name for spec in LAYERS)
+
+
+def nearest_lineweight(width_mm: float) -> int:
+    """The standard DXF lineweight (1/100 mm) nearest to ``width_mm``."""
+    target = width_mm * 100.0
+    return min(_LINEWEIGHTS, key=lambda lw: (abs(lw - target), lw))
+
+
+def text_lineweight(height: float) -> int:
+    """Stroke width of ГОСТ type B text, d = h/10, never thinner than 0.25 mm (1/100 mm)."""
+    return nearest_lineweight(max(height / 10.0, 0.25))
+
+
+@lru_cache(maxsize=64)
+def _font(height: float):
+    from ezdxf.fonts import fonts
+    return fonts.make_font(TEXT_STYLE_FONT, height)
+
+
+def text_width(text: str, height: float) -> float:
+    """Width (mm) of a one-line ``text`` of capital height ``height`` in the sheet text style.
+
+    Measured with the TTF that ezdxf renders; LibreCAD's OpenGost font is within a few per cent.
+    """
+    if not text:
+        return 0.0
+    return float(_font(round(height, 6)).text_width(text))
+
+
+@contextlib.contextmanager
+def reproducible() -> Iterator[None]:
+    """Make ezdxf write fixed dates, GUIDs and marker strings (same input → same bytes)."""
+    old = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
+    try:
+        yield
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = old
+
+
+def new_document(paper_width: float, paper_height: float) -> Drawing:
+    """A new R2013 document in mm with the sheet's layers, line types, text and dimension styles."""
+    with reproducible():
+        doc = ezdxf.new("R2013", setup=False, units=ezdxf.units.MM)
+    _setup_linetypes(doc)
+    _setup_layers(doc)
+    _setup_text_style(doc)
+    _setup_dimstyle(doc)
+    _setup_header(doc, paper_width, paper_height)
+    return doc
+
+
+def _setup_linetypes(doc: Drawing) -> None:
+    for lt in LINETYPES:
+        if lt.name in doc.linetypes:
+            doc.linetypes.remove(lt.name)
+        doc.linetypes.add(lt.name, pattern=[lt.total, *lt.pattern], description=lt.description)
+
+
+def _setup_layers(doc: Drawing) -> None:
+    for spec in LAYERS:
+        doc.layers.add(spec.name, color=spec.color, linetype=spec.linetype,
+                       lineweight=spec.lineweight)
+
+
+def _setup_text_style(doc: Drawing) -> None:
+    doc.styles.add(TEXT_STYLE, font=TEXT_STYLE_FONT)
+    standard = doc.styles.get("Standard")
+    standard.dxf.font = TEXT_STYLE_FONT
+
+
+#: The ESKD dimension style: ГОСТ 2.307 — 3.5 mm text above the dimension line, 3.5 mm filled
+#: arrows, extension lines from the object and 2 mm beyond the dimension line, decimal comma,
+#: trailing zeros suppressed. Keys are DIMSTYLE attributes and, with ``$`` + upper case, header vars.
+DIMSTYLE_VALUES: dict[str, float | int | str] = {
+    "dimtxt": 3.5,      # text height
+    "dimasz": 3.5,      # arrow size
+    "dimexe": 2.0,      # extension beyond the dimension line
+    "dimexo": 0.0,      # offset of the extension line from the object
+    "dimgap": 1.0,      # gap text ↔ dimension line
+    "dimdli": 7.0,      # spacing of baseline dimensions (ГОСТ: ≥ 7 mm)
+    "dimtad": 1,        # text above the line
+    "dimjust": 0,       # centred along the line
+    "dimtih": 0,        # text aligned with the line inside…
+    "dimtoh": 0,        # …and outside the extension lines
+    "dimdsep": ord(","),  # decimal comma
+    "dimdec": 2,        # decimals
+    "dimzin": 8,        # suppress trailing zeros
+    "dimlunit": 2,      # decimal units
+    "dimscale": 1.0,
+    "dimlfac": 1.0,
+    "dimtfac": 1.0,
+    "dimtxsty": TEXT_STYLE,
+    "dimlwd": 35,       # dimension-line weight
+    "dimlwe": 35,       # extension-line weight
+    "dimclrd": 0,       # colours BYBLOCK
+    "dimclre": 0,
+    "dimclrt": 0,
+    "dimatfit": 3,
+    "dimtmove": 0,
+    "dimtofl": 1,       # a dimension line between the extension lines even when text is outside
+}
+
+
+def _setup_dimstyle(doc: Drawing) -> None:
+    dimstyle = doc.dimstyles.new(DIM_STYLE)
+    for key, value in DIMSTYLE_VALUES.items():
+        dimstyle.dxf.set(key, value)
+
+
+def _setup_header(doc: Drawing, paper_width: float, paper_height: float) -> None:
+    h = doc.header
+    for key, value in DIMSTYLE_VALUES.items():
+        h["$" + key.upper()] = value
+    h["$DIMSTYLE"] = DIM_STYLE
+    h["$TEXTSTYLE"] = TEXT_STYLE
+    h["$TEXTSIZE"] = 3.5
+    h["$INSUNITS"] = 4        # millimetres
+    h["$MEASUREMENT"] = 1     # metric
+    h["$LUNITS"] = 2
+    h["$LUPREC"] = 2
+    h["$LTSCALE"] = 1.0
+    h["$CELTSCALE"] = 1.0
+    h["$PSLTSCALE"] = 0
+    h["$LWDISPLAY"] = 1
+    # ezdxf rewrites $LIMMIN/MAX, $PLIMMIN/MAX and $EXTMIN/MAX from the layouts on save
+    w, hh = float(paper_width), float(paper_height)
+    msp = doc.modelspace()
+    msp.dxf.limmin, msp.dxf.limmax = (0.0, 0.0), (w, hh)
+    msp.dxf.extmin, msp.dxf.extmax = (0.0, 0.0, 0.0), (w, hh, 0.0)
+    paper = doc.active_layout()
+    paper.page_setup(size=(w, hh), margins=(0, 0, 0, 0), units="mm", scale=(1, 1))
+    paper.dxf.limmin, paper.dxf.limmax = (0.0, 0.0), (w, hh)
+    h["$PLIMMIN"] = (0.0, 0.0)
+    h["$PLIMMAX"] = (float(paper_width), float(paper_height))
+    h["$LIMMIN"] = (0.0, 0.0)
+    h["$LIMMAX"] = (float(paper_width), float(paper_height))
+    h["$EXTMIN"] = (0.0, 0.0, 0.0)
+    h["$EXTMAX"] = (float(paper_width), float(paper_height), 0.0)
