@@ -59,6 +59,7 @@ PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-ro
 _LENGTH = Number(gt=0, le=MAX_LENGTH, unit="m")
 _MASS = Number(gt=0, unit="kg")
 _INERTIA = Number(ge=0, unit="kg·m²")  # > 0 is checked afterwards, except for slider-rule links
+_INERTIA.expected = "a number > 0, in kg·m² (0 allowed for a slider or block)"
 _POINT_NAME = Str(nonempty=True)
 _LINK_ID = Int(ge=1, what="a link id: an integer")
 
@@ -318,7 +319,7 @@ def _check_ids(raw_links: list[_RawLink], path: str) -> dict[int, _RawLink]:
             missing = sorted(set(range(1, n + 1)) - set(by_id))
             raise TaskError(join(ln.path, "id"), f"id {ln.id} is beyond the number of links ({n}); "
                             f"missing id{'s' if len(missing) > 1 else ''} {', '.join(map(str, missing))}",
-                            f"ids 1..{n}, each once (0 is the frame)")
+                            f"ids 1..{n}, each once; 0 is the frame")
     return by_id
 
 
@@ -334,7 +335,7 @@ def _drive(value: Any, path: str, by_id: dict[int, _RawLink], ground: tuple[str,
                f"it lists {len(axes)} ground points ({', '.join(axes)})" if len(axes) > 1 else
                "it has no moving point")
         raise TaskError(t.at("link"), f"link {lid} cannot be the driving crank: {why}",
-                        "a link that lists exactly one ground point (its axis) and a moving point")
+                        "a link that lists exactly one ground point, its axis, and a moving point")
     omega = t.get("omega", Number(nonzero=True, ge=-1e4, le=1e4, unit="rad/s"))
     return Drive(link=lid, omega=omega)
 
@@ -379,7 +380,7 @@ def _triangle(ln: _RawLink, dist: dict[frozenset, tuple[float, bool]]) -> tuple[
         raise TaskError(join(ln.path, "lengths"),
                         f"the sides {txt(na, a, ga)}, {txt(nb, b, gb)}, {txt(nc, c, gc)} do not form a "
                         f"triangle: {na} + {nb} = {a + b:.6g} < {nc} = {c:.6g}",
-                        "each side shorter than the sum of the other two (equal: a straight bar)")
+                        "each side shorter than the sum of the other two; equal for a straight bar")
     collinear = c >= (a + b) * (1.0 - COLLINEAR_RTOL)
     return a + b + c, c, collinear
 

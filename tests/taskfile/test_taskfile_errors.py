@@ -22,7 +22,7 @@ CASES = [
     (L + (1, "mass"), 0, "mechanism.link[1].mass", ["a number > 0", "kg"]),
     (L + (1, "mass"), -8.5, "mechanism.link[1].mass", ["> 0"]),
     (L + (1, "inertia"), 0, "mechanism.link[1].inertia", ["only a slider or block", "> 0"]),
-    (L + (1, "inertia"), -0.1, "mechanism.link[1].inertia", ["≥ 0"]),
+    (L + (1, "inertia"), -0.1, "mechanism.link[1].inertia", ["> 0, in kg·m²", "0 allowed for a slider"]),
     (L + (1, "inertia"), [0.1], "mechanism.link[1].inertia", ["an array", "a number"]),
     ((M, "drive", "omega"), 0, "mechanism.drive.omega", ["≠ 0", "rad/s"]),
     ((M, "drive", "omega"), "18", "mechanism.drive.omega", ["a number"]),
@@ -244,7 +244,7 @@ def test_coincident_points_without_length():
     (lambda d: edit(d, L + (0, "com"), 1.5), "mechanism.link[0].com", ["[0, 1]", "a non-empty string"]),
     (lambda d: edit(d, L + (0, "com"), "B"), "mechanism.link[0].com", ['no point "B" in the points of this link']),
     (lambda d: edit(d, L + (4, "com"), 0.5), "mechanism.link[4].com", ['point name "D"']),
-    (lambda d: edit(d, L + (4, "com"), "D") and edit(d, L + (4, "inertia"), -1), "mechanism.link[4].inertia", ["≥ 0"]),
+    (lambda d: edit(d, L + (4, "com"), "D") and edit(d, L + (4, "inertia"), -1), "mechanism.link[4].inertia", ["got -1", "0 allowed for a slider"]),
     # slides
     (lambda d: edit(d, (M, "slide", 0, "link"), 6), "mechanism.slide[0].link", ["no link 6"]),
     (lambda d: edit(d, (M, "slide", 0, "point"), "A"), "mechanism.slide[0].point", ['no point "A" in link 5']),
