@@ -33,6 +33,7 @@ K_GIVEN_MAX = 12
 FIRST_BOUND = 128
 MAX_TEETH = 1000
 NEAREST_BOUND = 200
+EDGE = 1e-9             # a ratio on the edge of the band (|deviation| = tolerance) is accepted
 
 
 @dataclass(frozen=True)
@@ -186,7 +187,7 @@ def evaluate(scheme: str | Scheme, z: tuple[int, ...], satellites: int | Literal
         dev, ok = None, True
     else:
         dev = _deviation(u_ratio, target)
-        ok = abs(dev) <= tolerance * (1 + 1e-12) and _sign_ok(float(u_ratio), target)
+        ok = abs(dev) <= tolerance * (1 + EDGE) and _sign_ok(float(u_ratio), target)
     rc = RatioCheck(driver, willis_u13h(sch, z), willis_u1h(sch, z), u_ratio, target, tolerance, dev, ok)
     return PlanetaryDesign(sch, driver, z, k, k_given is None, module, limits, rc, coax,
                            check_undercut(sch, z, limits), check_adjacency(sch, z, k, ha),
@@ -207,6 +208,7 @@ class _Sets:
 
 def _u_bands(target: float, lo_mag: float, hi_mag: float) -> list[tuple[float, float]]:
     """Signed intervals of the reducer ratio whose magnitude is in [lo_mag, hi_mag]."""
+    lo_mag, hi_mag = lo_mag * (1 - EDGE), hi_mag * (1 + EDGE)
     bands = [(-hi_mag, -lo_mag)]
     if target > 0:
         bands.append((lo_mag, hi_mag))
@@ -284,10 +286,9 @@ def _enumerate(sch: Scheme, driver: str, bound: int, u_bands: list[tuple[float, 
             parts.append((z1g[idx], z2g[idx], lo[idx] + offs, d[idx]))
         if not parts:
             return _Sets(empty, empty, empty, empty, np.zeros(0))
-        z1 = np.concatenate([p[0] for p in parts])
-        z2 = np.concatenate([p[1] for p in parts])
-        z2p = np.concatenate([p[2] for p in parts])
-        dd = np.concatenate([p[3] for p in parts])
+        # the widened z2′ intervals of two bands may overlap: keep each set once
+        stacked = np.unique(np.stack([np.concatenate([p[i] for p in parts]) for i in range(4)], axis=1), axis=0)
+        z1, z2, z2p, dd = stacked[:, 0], stacked[:, 1], stacked[:, 2], stacked[:, 3]
         z3 = dd - z2p if sch.row2 == "external" else dd + z2p
     r, nz = _ratio_of(sch, driver, z1, z2, z2p, z3)
     inside = np.zeros(r.shape, dtype=bool)
