@@ -114,13 +114,16 @@ class TitleBlock:
 
 
 def _wrap(text: str, height: float, width: float, width_factor: float) -> list[str]:
-    words = text.split()
+    """Greedy word wrap; a newline in ``text`` always starts a new line."""
     lines: list[str] = []
-    for word in words:
-        if lines and style.text_width(lines[-1] + " " + word, height) * width_factor <= width:
-            lines[-1] += " " + word
-        else:
-            lines.append(word)
+    for paragraph in text.split("\n"):
+        start = len(lines)
+        for word in paragraph.split():
+            if len(lines) > start and style.text_width(lines[-1] + " " + word,
+                                                       height) * width_factor <= width:
+                lines[-1] += " " + word
+            else:
+                lines.append(word)
     return lines or [""]
 
 
@@ -136,15 +139,20 @@ def fit_text(text: str, width: float, height: float, *, max_height: float,
     for wf in (1.0, 0.9, 0.8, min_width_factor):
         for h in reversed(sizes):
             for n in range(1, max_lines + 1):
-                lines = _wrap(text, h, width / wf, 1.0) if n > 1 else [text]
+                lines = _wrap(text, h, width / wf, 1.0) if n > 1 or "\n" in text else [text]
                 if len(lines) > n:
                     continue
                 tall = h * (1 + 1.6 * (len(lines) - 1))
                 wide = max(style.text_width(s, h) for s in lines) * wf
                 if tall <= height and wide <= width:
                     return lines, h, wf
+    # last resort: the smallest size, never dropping words; squeeze the letters to fit
     h = sizes[0]
-    return _wrap(text, h, width / min_width_factor, 1.0)[:max_lines], h, min_width_factor
+    lines = _wrap(text, h, width / min_width_factor, 1.0)
+    if len(lines) > max_lines:
+        lines = lines[:max_lines - 1] + [" ".join(lines[max_lines - 1:])]
+    wide = max(style.text_width(s, h) for s in lines)
+    return lines, h, min(min_width_factor, width / wide)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -326,7 +334,7 @@ class Sheet:
         self._cell_text(fl.letter, tx + 135, ty + 20, 5, 15, max_height=3.5)
         self._cell_text(fl.mass, tx + 150, ty + 20, 17, 15, max_height=3.5)
         self._cell_text(fl.scale, tx + 167, ty + 20, 18, 15, max_height=3.5)
-        org = " ".join(s for s in (fl.organization, f"гр. {fl.group}" if fl.group else "") if s)
+        org = "\n".join(s for s in (fl.organization, f"гр. {fl.group}" if fl.group else "") if s)
         self._cell_text(org, tx + 135, ty, 50, 15, max_height=3.5, max_lines=3)
         # graph 26: the designation turned by 180° in the upper-left corner
         er = self.extra_rect

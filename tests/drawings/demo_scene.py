@@ -7,7 +7,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from drawings import Sheet
 from drawings.sheet import A1
@@ -59,7 +58,7 @@ def build_demo_sheet() -> Sheet:
     for name, p in zip("OABC", pts):
         scheme.label(p, name)
     scheme.dimension(o, c, offset_mm=-22.0, unit_factor=1000.0, decimals=0)
-    scheme.scale_caption((pts[:, 0].min(), pts[:, 1].min() - 0.035), "μl", mu_l, "м/мм")
+    scheme.scale_caption((pts[:, 0].min(), pts[:, 1].min() - 0.08), "μl", mu_l, "м/мм")
     scheme.title("Кинематическая схема")
 
     # velocity plan: p → a, p → b, a → b (mm of the plan, scale 1)
@@ -85,15 +84,3 @@ def build_demo_sheet() -> Sheet:
     graph.curve(xs + x0, ys + y0)
     graph.title("Диаграмма приведённого момента")
     return sheet
-
-
-@pytest.fixture(scope="session")
-def demo_sheet() -> Sheet:
-    return build_demo_sheet()
-
-
-@pytest.fixture(scope="session")
-def demo_dxf(tmp_path_factory, demo_sheet) -> Path:
-    path = tmp_path_factory.mktemp("demo") / "demo.dxf"
-    demo_sheet.save(path)
-    return path
