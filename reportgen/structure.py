@@ -246,6 +246,9 @@ def analyse_structure(linkage: Linkage) -> Structure:
                          f"link only, or a slide not given)")
             else:
                 cause = "a pair is missing or the links are attached to nothing already known"
+            if W_num != W:
+                cause += (f"; the rank of the constraint equations gives W = {W_num} with {redundant} redundant "
+                          f"constraint(s) (e.g. a parallel link of a parallelogram)")
             raise StructureError("the chain cannot be decomposed into Assur groups", left, cause)
         combo, pairs = found
         cls, order, kind = _classify(combo, pairs)

@@ -82,7 +82,11 @@ class KinematicModel:
             known |= set(g.links)
         self.group_rows = [group_constraints(linkage, g) for g in structure.groups[1:]]
         self._sketch_q = sketch_q(linkage)
-        self._choose_branches()
+        try:
+            self._choose_branches()
+        except AssemblyError as exc:
+            raise AssemblyError(exc.group, exc.phi_deg, exc.inequality + " (at the sketch's crank angle)",
+                                self._feasible_dyads_only()) from None
 
     # -- driver --------------------------------------------------------------------------------
     def _driver(self, q: np.ndarray, phi: np.ndarray) -> None:
@@ -235,10 +239,33 @@ class KinematicModel:
                         "its velocity equations are singular") from None
             raise
 
+    def feasible_ranges(self, grid: int = 1440) -> tuple[tuple[float, float], ...]:
+        """Crank-angle intervals (deg, in 0…360, merged across 360°) where every group assembles."""
+        phi = np.linspace(0.0, 2 * math.pi, grid, endpoint=False)
+        _, ok = self.positions(phi, strict=False)
+        return _intervals(np.degrees(phi), ok, 360.0 / grid)
+
+    def _feasible_dyads_only(self, grid: int = 1440) -> tuple[tuple[float, float], ...] | None:
+        if not all(isinstance(s, DyadSolver) for s in self.solvers):
+            return None
+        phi = np.linspace(0.0, 2 * math.pi, grid, endpoint=False)
+        q = np.zeros((grid, self.nb, 3))
+        self._driver(q, phi)
+        ok = np.ones(grid, dtype=bool)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            for solver in self.solvers:
+                ok &= solver.solve(q, phi, strict=False) >= 0
+        return _intervals(np.degrees(phi), ok, 360.0 / grid)
+
     def solve(self, phi) -> KinematicsResult:
         """Positions, velocities and accelerations at the crank angles ``phi`` (rad)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
-        q, _ = self.positions(phi, strict=True)
+        try:
+            q, _ = self.positions(phi, strict=True)
+        except AssemblyError as exc:
+            with np.errstate(invalid="ignore", divide="ignore"):
+                feasible = self.feasible_ranges()
+            raise AssemblyError(exc.group, exc.phi_deg, exc.inequality, feasible) from None
         qd = self.velocities(q)
         qdd = self.accelerations(q, qd)
         return self._result(phi, q, qd, qdd)
@@ -280,6 +307,27 @@ class KinematicModel:
         vel = qd[:, k, :2] + w * perp(Rp)
         acc = qdd[:, k, :2] + e * perp(Rp) - w * w * Rp
         return PointMotion(_ro(pos), _ro(vel), _ro(acc))
+
+
+def _intervals(deg: np.ndarray, ok: np.ndarray, step: float) -> tuple[tuple[float, float], ...]:
+    """Runs of True in a periodic grid as (start, end) degree intervals."""
+    if ok.all():
+        return ((0.0, 360.0),)
+    if not ok.any():
+        return ()
+    n = ok.size
+    start = int(np.flatnonzero(~ok)[0])          # begin scanning at an infeasible sample
+    runs, cur = [], None
+    for j in range(1, n + 1):
+        i = (start + j) % n
+        if ok[i] and cur is None:
+            cur = i
+        elif not ok[i] and cur is not None:
+            runs.append((float(deg[cur]), float(deg[(i - 1) % n])))
+            cur = None
+    if cur is not None:
+        runs.append((float(deg[cur]), float(deg[(start - 1) % n])))
+    return tuple(runs)
 
 
 def build_model(mech: Mechanism) -> KinematicModel:
