@@ -164,3 +164,26 @@ def test_section_needs_a_clean_key_and_one_source():
     note.add_section(Section(key="k", title="x", body="y"))
     with pytest.raises(ValueError, match="twice"):
         note.add_section(Section(key="k", title="z", body="w"))
+
+
+def test_assignment_goes_between_title_page_and_contents(tmp_path):
+    assignment = Section(key="assignment", title="", body="Текст задания: схема и таблицы.")
+    note = NoteBuilder(Document(title="Пресс"), assignment=assignment, frame="none")
+    text = note.render(tmp_path).read_text(encoding="utf-8")
+    title_end = text.index(r"\end{singlespace}")
+    at = text.index(r"\noteplainheading{Задание на курсовой проект}")
+    contents = text.index(r"\notecontents{Содержание}")
+    assert title_end < at < text.index("схема и таблицы") < contents
+    assert text.index(r"\noteframetrue") > at      # no frame on the title and assignment pages
+
+
+def test_a_record_that_misprints_is_refused_at_render(tmp_path):
+    from dataclasses import replace
+    bad = replace(record("d", "x - y", "м", x=1.23456, y=1.23321), input_digits=4)
+    tpl = tmp_path / "t"
+    tpl.mkdir()
+    (tpl / "bad.tex.j2").write_text(r"\VAR{m.calc(r)}", encoding="utf-8")
+    note = NoteBuilder(Document(), frame="none", template_dirs=[tpl])
+    note.add_section(Section(key="k", title="K", template="bad.tex.j2", context={"r": bad}))
+    with pytest.raises(ValueError, match="do not reproduce"):
+        note.render(tmp_path / "out")
