@@ -132,12 +132,13 @@ def fit_text(text: str, width: float, height: float, *, max_height: float,
              min_width_factor: float = 0.7) -> tuple[list[str], float, float]:
     """Lines, text height and width factor that fit ``text`` into a ``width`` × ``height`` cell.
 
-    Tries the ГОСТ sizes from ``max_height`` down, one line first, then up to ``max_lines``
-    wrapped lines at 1.6 × height pitch, then narrower letters down to ``min_width_factor``.
+    Tries the ГОСТ sizes from ``max_height`` down; for each, letters of full width and then
+    narrower ones down to ``min_width_factor``, one line first, then up to ``max_lines`` wrapped
+    lines at a 1.6 × height pitch. As a last resort the smallest size is squeezed to fit.
     """
     sizes = [h for h in style.TEXT_HEIGHTS if min_height <= h <= max_height] or [min_height]
-    for wf in (1.0, 0.9, 0.8, min_width_factor):
-        for h in reversed(sizes):
+    for h in reversed(sizes):
+        for wf in (1.0, 0.9, 0.8, min_width_factor):
             for n in range(1, max_lines + 1):
                 lines = _wrap(text, h, width / wf, 1.0) if n > 1 or "\n" in text else [text]
                 if len(lines) > n:
