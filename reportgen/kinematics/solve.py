@@ -173,29 +173,50 @@ class KinematicModel:
                 ok &= bool((solver.newton(qq, ph, strict=strict) >= 0).all())
         return qq, ok
 
+    def _coarse_march(self, strict: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The whole turn from the sketch in steps of ``CONTINUATION_STEP`` (computed once): poses,
+        velocities and accelerations at offsets j·step in the direction of rotation."""
+        if getattr(self, "_coarse", None) is not None:
+            return self._coarse
+        n = int(math.ceil(2 * math.pi / CONTINUATION_STEP))
+        step = 2 * math.pi / n
+        sgn = 1.0 if self.omega >= 0 else -1.0
+        w = abs(self.omega) if self.omega else 1.0
+        qs = [self._q0.copy()]
+        for j in range(1, n + 1):
+            qq, _ = self._step(np.array([self._phi0 + sgn * j * step]), qs[-1], step / w, strict)
+            qs.append(qq)
+        q = np.concatenate(qs[:-1], axis=0)
+        qd = self.velocities(q)
+        qdd = self.accelerations(q, qd)
+        self._coarse = (q, qd, qdd)
+        return self._coarse
+
     def _positions_by_continuation(self, phi: np.ndarray, strict: bool) -> tuple[np.ndarray, np.ndarray]:
-        """Follow the mechanism from the sketch through every requested angle in the direction of
-        rotation, in steps of at most ``CONTINUATION_STEP``, so that class III+ groups stay on the
-        sketch's branch; each step is predicted with the exact velocity and acceleration."""
-        N = phi.size
-        q = np.zeros((N, self.nb, 3))
-        ok = np.ones(N, dtype=bool)
+        """Class III+ groups: follow the mechanism once around the turn from the sketch in steps of at
+        most ``CONTINUATION_STEP`` (so that they stay on the sketch's branch), then start Newton at every
+        requested angle from the nearest preceding step, advanced with its exact velocity and
+        acceleration (all positions at once)."""
+        cq, cqd, cqdd = self._coarse_march(strict)
+        n = cq.shape[0]
+        step = 2 * math.pi / n
         sgn = 1.0 if self.omega >= 0 else -1.0
         w = abs(self.omega) if self.omega else 1.0
         offs = np.mod(sgn * (phi - self._phi0), 2 * math.pi)
-        cur_q, cur_off = self._q0.copy(), 0.0
-        for i in np.argsort(offs, kind="stable"):
-            target = float(offs[i])
-            steps = int(math.ceil((target - cur_off) / CONTINUATION_STEP))
-            for s in range(1, steps + 1):
-                off = cur_off + (target - cur_off) * s / steps
-                prev = cur_off + (target - cur_off) * (s - 1) / steps
-                cur_q, good = self._step(np.array([self._phi0 + sgn * off]), cur_q, (off - prev) / w, strict)
-            cur_off = target
-            if steps == 0:
-                cur_q, good = self._step(np.array([phi[i]]), cur_q, 0.0, strict)
-            q[i] = cur_q[0]
-            ok[i] = good
+        j = np.minimum((offs // step).astype(int), n - 1)
+        dt = ((offs - j * step) / w)[:, None]
+        N = phi.size
+        q = np.zeros((N, self.nb, 3))
+        self._driver(q, phi)
+        ok = np.ones(N, dtype=bool)
+        for solver, g in zip(self.solvers, self.structure.groups[1:]):
+            if isinstance(solver, DyadSolver):
+                ok &= solver.solve(q, phi, strict=strict) >= 0
+            else:
+                cols = list(g.links)
+                q[:, cols, :] = cq[j][:, cols, :] + cqd[j][:, cols, :] * dt[:, :, None] \
+                    + 0.5 * cqdd[j][:, cols, :] * (dt * dt)[:, :, None]
+                ok &= solver.newton(q, phi, strict=strict) >= 0
         return q, ok
 
     def velocities(self, q: np.ndarray, upto: int | None = None) -> np.ndarray:
