@@ -74,3 +74,9 @@ class Project:
 
     def kinematics_at(self, phi_rad) -> KinematicsResult:
         return self.model.solve(phi_rad)
+
+    def loads_at(self, kin: KinematicsResult, inertia: bool = True):
+        """External loads (+ inertia) at the positions of ``kin``."""
+        from .loads import external_loads, inertia_loads
+        ls = external_loads(self._need_mechanism(), self.linkage, self.model, kin, self.strokes)
+        return ls + inertia_loads(self.linkage, kin) if inertia else ls
