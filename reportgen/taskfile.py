@@ -26,8 +26,9 @@ from .taskfile_values import (Array, Bool, Int, Number, OneOf, Spec, Str, Table,
 
 __all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "COLLINEAR_RTOL"]
 
-#: Largest coordinate magnitude and link length accepted, m (a larger one is almost surely typed in mm).
-MAX_LENGTH = 100.0
+#: Largest coordinate magnitude and link length accepted, m (catches gross unit slips; solver
+#: scale tests go up to ~400 m).
+MAX_LENGTH = 1000.0
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
 COLLINEAR_RTOL = 1e-9
 

@@ -14,11 +14,11 @@ L = (M, "link")
 # (edit path, new value or DELETE, expected TaskError.path, fragments of the message)
 CASES = [
     # lengths, masses, inertias: zero, negative, wrong types
-    (L + (0, "length"), 0, "mechanism.link[0].length", ["got 0", "(0, 100]", "in m"]),
-    (L + (0, "length"), -0.11, "mechanism.link[0].length", ["got the float -0.11", "(0, 100]"]),
+    (L + (0, "length"), 0, "mechanism.link[0].length", ["got 0", "(0, 1000]", "in m"]),
+    (L + (0, "length"), -0.11, "mechanism.link[0].length", ["got the float -0.11", "(0, 1000]"]),
     (L + (0, "length"), "0.11", "mechanism.link[0].length", ['the string "0.11"', "a number"]),
     (L + (0, "length"), True, "mechanism.link[0].length", ["got true", "a number"]),
-    (L + (0, "length"), 110, "mechanism.link[0].length", ["got 110", "100]"]),
+    (L + (0, "length"), 1100, "mechanism.link[0].length", ["got 1100", "1000]"]),
     (L + (1, "mass"), 0, "mechanism.link[1].mass", ["a number > 0", "kg"]),
     (L + (1, "mass"), -8.5, "mechanism.link[1].mass", ["> 0"]),
     (L + (1, "inertia"), 0, "mechanism.link[1].inertia", ["only a slider or block", "> 0"]),
@@ -29,7 +29,7 @@ CASES = [
     ((M, "drive", "omega"), DELETE, "mechanism.drive.omega", ["is missing", "a number"]),
     ((M, "g"), -9.81, "mechanism.g", ["[0, 50]"]),
     ((M, "points", "A"), [0.0], "mechanism.points.A", ["has 1 element", "[x, y]"]),
-    ((M, "points", "A"), [0.0, 110.0], "mechanism.points.A[1]", ["[-100, 100]", "in m"]),
+    ((M, "points", "A"), [0.0, 1100.0], "mechanism.points.A[1]", ["[-1000, 1000]", "in m"]),
     ((M, "points", "A"), [0.0, "y"], "mechanism.points.A[1]", ['the string "y"']),
     ((M, "points"), {}, "mechanism.points", ["is empty"]),
     ((M, "mass_rules", "q"), 0, "mechanism.mass_rules.q", ["> 0", "kg/m"]),
@@ -176,7 +176,7 @@ def test_lengths_keys_must_name_two_points_of_the_link():
     data["mechanism"]["link"][2]["lengths"] = {"CE": 0.58, "EC": 0.58}
     expect_error(data, "mechanism.link[2].lengths.EC", "given twice")
     data["mechanism"]["link"][2]["lengths"] = {"CE": 0}
-    expect_error(data, "mechanism.link[2].lengths.CE", "(0, 100]")
+    expect_error(data, "mechanism.link[2].lengths.CE", "(0, 1000]")
     data["mechanism"]["link"][2]["lengths"] = 0.58
     expect_error(data, "mechanism.link[2].lengths", "an inline table", "CE = …")
 
