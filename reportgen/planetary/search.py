@@ -32,7 +32,7 @@ AUTO_K_MAX = 6          # K = the largest that fits, up to 6, unless given
 K_GIVEN_MAX = 12
 FIRST_BOUND = 128
 MAX_TEETH = 1000
-NEAREST_BOUND = 200
+NEAREST_BOUND = 120
 EDGE = 1e-9             # a ratio on the edge of the band (|deviation| = tolerance) is accepted
 
 
@@ -350,6 +350,20 @@ def _ranked(sch: Scheme, s: _Sets, k: np.ndarray, target: float, bound: int) -> 
     return out
 
 
+def _search(sch: Scheme, target: float, tolerance: float, k_given: int | None, driver: str,
+            limits: UndercutLimits, ha: float, count: int, max_teeth: int) -> tuple[list[Candidate], dict[str, int]]:
+    """Growing bounds until ``count`` sets are found or ``max_teeth``; the last pass's statistics."""
+    bands = _u_bands(target, abs(target) * (1 - tolerance), abs(target) * (1 + tolerance))
+    bound = min(FIRST_BOUND, max_teeth)
+    while True:
+        sets = _enumerate(sch, driver, bound, bands, limits)
+        k, stats = _choose_k(sch, sets, k_given, ha)
+        found = _ranked(sch, sets, k, target, bound)
+        if len(found) >= count or bound >= max_teeth:
+            return found[:count], stats
+        bound = min(2 * bound, max_teeth)
+
+
 def search(scheme: str | Scheme, ratio: float, tolerance: float = 0.05,
            satellites: int | Literal["auto"] = "auto", *, driver: Driver = "wheel",
            limits: UndercutLimits = UndercutLimits(), ha: float = 1.0, count: int = 6,
@@ -357,19 +371,9 @@ def search(scheme: str | Scheme, ratio: float, tolerance: float = 0.05,
     """The ``count`` most compact sets that meet every condition (fewer if fewer exist with an
     envelope ≤ ``max_teeth``); an empty tuple when none exists."""
     sch = scheme if isinstance(scheme, Scheme) else get_scheme(scheme)
-    target = _check_target(ratio)
-    tolerance = _check_tolerance(tolerance)
-    k_given = _check_satellites(satellites)
-    driver = _check_driver(driver)
-    bands = _u_bands(target, abs(target) * (1 - tolerance), abs(target) * (1 + tolerance))
-    bound = min(FIRST_BOUND, max_teeth)
-    while True:
-        sets = _enumerate(sch, driver, bound, bands, limits)
-        k, _ = _choose_k(sch, sets, k_given, ha)
-        found = _ranked(sch, sets, k, target, bound)
-        if len(found) >= count or bound >= max_teeth:
-            return tuple(found[:count])
-        bound = min(2 * bound, max_teeth)
+    found, _ = _search(sch, _check_target(ratio), _check_tolerance(tolerance), _check_satellites(satellites),
+                       _check_driver(driver), limits, ha, count, max_teeth)
+    return tuple(found)
 
 
 def nearest(scheme: str | Scheme, ratio: float, tolerance: float,
@@ -394,11 +398,8 @@ def nearest(scheme: str | Scheme, ratio: float, tolerance: float,
     return tuple(out)
 
 
-def _why(sch: Scheme, target: float, tolerance: float, k_given: int | None, driver: str,
-         limits: UndercutLimits, ha: float, max_teeth: int) -> tuple[str, ...]:
-    bands = _u_bands(target, abs(target) * (1 - tolerance), abs(target) * (1 + tolerance))
-    sets = _enumerate(sch, driver, max_teeth, bands, limits)
-    _, st = _choose_k(sch, sets, k_given, ha)
+def _why(st: dict[str, int], k_given: int | None, driver: str, limits: UndercutLimits,
+         max_teeth: int) -> tuple[str, ...]:
     ks = f"K = {k_given}" if k_given is not None else f"any K = 2…{AUTO_K_MAX}"
     lim = (f"z ≥ {limits.external_min} external, z ≥ {limits.internal_min} internal, "
            f"z_internal − z_planet ≥ {limits.internal_difference_min}")
@@ -425,14 +426,13 @@ def synthesize(scheme: str, ratio: float, tolerance: float = 0.05,
     _check_module(module)
     if not isinstance(alternatives, int) or alternatives < 0:
         raise TaskError("planetary.alternatives", f"{alternatives!r}", "an integer ≥ 0")
-    found = search(sch, target, tolerance, satellites, driver=driver, limits=limits, ha=ha,
-                   count=alternatives + 1, max_teeth=max_teeth)
+    found, stats = _search(sch, target, tolerance, k_given, driver, limits, ha, alternatives + 1, max_teeth)
     if not found:
         near = nearest(sch, target, tolerance, satellites, driver=driver, limits=limits, ha=ha,
                        bound=min(NEAREST_BOUND, max_teeth))
         raise PlanetarySynthesisError(
             sch.name, target, tolerance, "auto" if k_given is None else k_given,
-            _why(sch, target, tolerance, k_given, driver, limits, ha, max_teeth),
+            _why(stats, k_given, driver, limits, max_teeth),
             tuple((c.ratio, c.z, c.satellites) for c in near))
     best = found[0]
     return evaluate(sch, best.z, best.satellites, target=target, tolerance=tolerance, driver=driver,
