@@ -411,8 +411,10 @@ class Canvas:
         p = (left[0] + tx * ext, left[1] + ty * ext)
         q = (right[0] - tx * ext, right[1] - ty * ext)
         self._sheet_polyline([p, q], layer)
-        # strokes on the far side of the base (away from the hinge)
-        side = 1.0 if (q[0] - p[0]) * uy - (q[1] - p[1]) * ux < 0 else -1.0
+        # strokes on the far side of the base, away from the hinge: the side whose normal
+        # (left normal of p→q times side) points along the hinge→base direction u
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        side = 1.0 if (-dy * ux + dx * uy) > 0 else -1.0
         self.hatch_strokes_mm(p, q, side=side, layer="thin")
 
     def ground(self, p: Sequence[float], q: Sequence[float], side: float = -1.0,

@@ -108,3 +108,16 @@ def test_axes_ticks_and_labels(canvas):
     texts = {e.dxf.text for e in canvas.layout.query("TEXT")}
     assert {"φ1", "M", "1", "2", "5"} <= texts
     assert len(canvas.layout.query("SOLID")) == 2
+
+
+@pytest.mark.parametrize("direction", [-90.0, 180.0, 0.0, 90.0, -45.0])
+def test_fixed_pivot_hatching_is_on_the_far_side_of_the_base(canvas, direction):
+    canvas.fixed_pivot((0, 0), direction_deg=direction, height_mm=8.0)
+    hinge = canvas.transform((0, 0))
+    ux, uy = math.cos(math.radians(direction)), math.sin(math.radians(direction))
+    strokes = canvas.layout.query("LINE[layer=='thin']")
+    assert strokes
+    for line in strokes:
+        for p in (line.dxf.start, line.dxf.end):
+            # distance from the hinge along the hinge→base direction: at or beyond the base line
+            assert (p.x - hinge[0]) * ux + (p.y - hinge[1]) * uy >= 8.0 - 1e-6
