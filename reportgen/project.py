@@ -13,7 +13,7 @@ import numpy as np
 
 from .errors import TaskError
 from .kinematics import KinematicModel, KinematicsResult
-from .kinematics.extremes import Strokes, find_strokes
+from .kinematics.extremes import NoExtremesError, Strokes, find_strokes
 from .linkage import Linkage, compile_linkage
 from .structure import Structure, analyse_structure
 from .task import Task
@@ -48,7 +48,7 @@ class Project:
         """Extreme positions of the output; None if the output turns fully (no dead centres)."""
         try:
             return find_strokes(self.model)
-        except ValueError:
+        except NoExtremesError:
             return None
 
     @cached_property

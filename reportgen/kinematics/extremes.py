@@ -19,6 +19,10 @@ from .constraints import rot, world
 from .solve import KinematicModel
 
 GRID = 720
+
+
+class NoExtremesError(ValueError):
+    """The output link turns fully: it has no extreme positions."""
 ROOT_XTOL = 1e-13
 
 
@@ -100,7 +104,7 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
             lo, hi = (a, b) if a < b else (b, a)
             roots.append(brentq(lambda ph: _velocity_at(model, out, ph), lo, hi, xtol=ROOT_XTOL))
     if len(roots) < 2:
-        raise ValueError("the output link has no extreme positions (it turns fully)")
+        raise NoExtremesError("the output link has no extreme positions (it turns fully)")
     rq, _ = model.positions(np.array(roots))
     rx = output_coordinate(model, out, rq)
     i_max, i_min = int(np.argmax(rx)), int(np.argmin(rx))
