@@ -407,8 +407,10 @@ def _why(st: dict[str, int], k_given: int | None, driver: str, limits: UndercutL
         return (f"no coaxial set free of undercut ({lim}) with every z ≤ {max_teeth} gives that ratio "
                 f"with the {'carrier' if driver == 'carrier' else 'wheel 1'} driving",)
     reasons = [f"{st['in_band']} coaxial sets free of undercut give that ratio"]
-    reasons.append(f"{st['in_band'] - st['adjacent']} of them fail adjacency for {ks}")
-    reasons.append(f"the other {st['adjacent']} fail the assembly condition for every K that fits")
+    if st["in_band"] > st["adjacent"]:
+        reasons.append(f"{st['in_band'] - st['adjacent']} of them fail adjacency for {ks}")
+    if st["adjacent"]:
+        reasons.append(f"{st['adjacent']} that fit fail the assembly condition for every K that fits")
     return tuple(reasons)
 
 
