@@ -7,6 +7,7 @@ sheet never runs the linkage solver.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
@@ -17,6 +18,17 @@ from .kinematics.extremes import NoExtremesError, Strokes, find_strokes
 from .linkage import Linkage, compile_linkage
 from .structure import Structure, analyse_structure
 from .task import Task
+
+
+@dataclass(frozen=True)
+class PlanetaryStage:
+    """The reducer chosen for the task: the drive's required ratio (if "auto"), the design, its
+    velocity triangle (if a module is given) and the achieved crank speed."""
+    target: float
+    drive: object | None        # reportgen.planetary.drive.DriveRatio
+    design: object              # reportgen.planetary.search.PlanetaryDesign
+    triangle: object | None     # reportgen.planetary.velocity.VelocityTriangle
+    check: object | None        # reportgen.planetary.drive.DriveCheck
 
 
 class Project:
@@ -74,6 +86,39 @@ class Project:
 
     def kinematics_at(self, phi_rad) -> KinematicsResult:
         return self.model.solve(phi_rad)
+
+    @cached_property
+    def gears(self):
+        """The external involute pair of [gears] (None if the task has none)."""
+        if self.task.gears is None:
+            return None
+        from .gears.pair import from_task
+        return from_task(self.task.gears)
+
+    @cached_property
+    def planetary(self) -> PlanetaryStage | None:
+        """The planetary reducer of [planetary] (None if the task has none)."""
+        p = self.task.planetary
+        if p is None:
+            return None
+        from .planetary.drive import drive_check, drive_ratio
+        from .planetary.search import synthesize
+        from .planetary.velocity import velocity_triangle
+        drive = None
+        if p.ratio == "auto":
+            if self.task.gears is None or self.task.mechanism is None or p.motor_rpm is None:
+                raise TaskError("planetary.ratio", '"auto" needs planetary.motor_rpm, [gears] (the open pair) '
+                                "and [mechanism] (the crank speed)", "a number, or those sections")
+            drive = drive_ratio(p.motor_rpm, self.task.gears.z1, self.task.gears.z2, self.task.mechanism.drive.omega)
+            target = drive.required
+        else:
+            target = float(p.ratio)
+        design = synthesize(p.scheme, target, p.tolerance, p.satellites, p.module)
+        omega_in = drive.omega_planetary_in if drive is not None else (
+            math.pi * p.motor_rpm / 30.0 if p.motor_rpm else 100.0)
+        triangle = velocity_triangle(design, omega_in, p.module) if p.module else None
+        check = drive_check(drive, design.ratio) if drive is not None else None
+        return PlanetaryStage(target, drive, design, triangle, check)
 
     def loads_at(self, kin: KinematicsResult, inertia: bool = True):
         """External loads (+ inertia) at the positions of ``kin``."""

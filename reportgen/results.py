@@ -62,7 +62,10 @@ def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None, link
     return block
 
 
-def build_results(project: Project, sections: tuple[str, ...] = ("structure", "kinematics")) -> dict:
+ALL_SECTIONS = ("structure", "kinematics", "kinetostatics", "dynamics", "gears", "planetary")
+
+
+def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS) -> dict:
     """The results dictionary of the stages asked for (a section the task leaves out is absent)."""
     out: dict[str, Any] = {"format": FORMAT}
     if project.task.mechanism is not None:
@@ -70,6 +73,13 @@ def build_results(project: Project, sections: tuple[str, ...] = ("structure", "k
             out["structure"] = project.structure.to_dict()
         if "kinematics" in sections:
             out["kinematics"] = kinematics_block(project.kinematics, project.strokes)
+    if "gears" in sections and project.task.gears is not None:
+        from .gears.results import gears_block
+        out["gears"] = gears_block(project.gears)
+    if "planetary" in sections and project.task.planetary is not None:
+        from .planetary.results import planetary_block
+        st = project.planetary
+        out["planetary"] = planetary_block(st.design, st.triangle, st.check)
     return _clean(out)
 
 

@@ -1,0 +1,40 @@
+"""The sheets of the course project, one module per sheet, in order (see :data:`SHEETS`).
+
+A sheet module provides::
+
+    NEEDS: tuple[str, ...]                       # project stages it reads
+    TITLE: str                                   # the sheet's title for the title block
+    def available(project) -> bool
+    def draw(project, number: int, count: int) -> drawings.Sheet
+
+A module that does not exist yet is skipped.
+"""
+from __future__ import annotations
+
+import importlib
+
+#: (file stem, module) in the order of the sheets.
+SHEETS: tuple[tuple[str, str], ...] = (
+    ("sheet1-kinematics", "kinematics"),
+    ("sheet2-kinetostatics", "kinetostatics"),
+    ("sheet3-dynamics", "dynamics"),
+    ("sheet4-gears", "gears"),
+)
+
+
+def sheet_module(name: str):
+    try:
+        return importlib.import_module(f"drawings.sheets.{name}")
+    except ModuleNotFoundError as exc:
+        if exc.name == f"drawings.sheets.{name}":
+            return None
+        raise
+
+
+def available_sheets(project) -> list[tuple[str, object]]:
+    out = []
+    for stem, name in SHEETS:
+        mod = sheet_module(name)
+        if mod is not None and mod.available(project):
+            out.append((stem, mod))
+    return out

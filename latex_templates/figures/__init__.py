@@ -1,0 +1,43 @@
+"""Matplotlib figures of the note (vector PDF). Import matplotlib lazily, with the Agg backend and a
+style that matches the note (Liberation Serif, the text font; decimal comma on the axes)."""
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import FuncFormatter  # noqa: E402
+
+STYLE = {
+    "font.family": "serif",
+    "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],
+    "font.size": 10,
+    "axes.grid": True,
+    "grid.linewidth": 0.3,
+    "grid.alpha": 0.5,
+    "axes.linewidth": 0.6,
+    "lines.linewidth": 1.2,
+    "axes.formatter.use_locale": False,
+    "pdf.fonttype": 42,
+    "svg.hashsalt": "reportgen",
+}
+
+
+def comma(x: float, _pos=None) -> str:
+    """Tick label with a decimal comma and a true minus."""
+    s = f"{x:.6g}".replace(".", ",").replace("-", "\u2212")
+    return s
+
+
+COMMA = FuncFormatter(comma)
+
+
+def new_figure(w_cm: float = 16.0, h_cm: float = 10.0):
+    plt.rcParams.update(STYLE)
+    fig = plt.figure(figsize=(w_cm / 2.54, h_cm / 2.54))
+    return fig
+
+
+def comma_axes(ax) -> None:
+    ax.xaxis.set_major_formatter(COMMA)
+    ax.yaxis.set_major_formatter(COMMA)

@@ -1,0 +1,132 @@
+"""The kinematic scheme of the linkage in matplotlib: bars, triangular links, hinges, fixed pivots
+with hatching, sliders on their guides, point labels and link numbers."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from matplotlib.patches import Circle, Polygon, Rectangle
+from matplotlib.transforms import Affine2D
+
+from reportgen.kinematics.constraints import rot
+from reportgen.linkage import Linkage
+
+
+def world_points(linkage: Linkage, q: np.ndarray) -> dict[str, np.ndarray]:
+    """Positions of every point at one position (q: (bodies, 3))."""
+    out: dict[str, np.ndarray] = {}
+    for k, b in linkage.bodies.items():
+        for name, p in b.local.items():
+            if k == 0:
+                out.setdefault(name, np.asarray(p, float))
+            elif name not in out or k != 0:
+                out[name] = q[k, :2] + rot(np.array([q[k, 2]]), tuple(p))[0]
+    return out
+
+
+def size_of(linkage: Linkage, pts: dict[str, np.ndarray]) -> float:
+    arr = np.array(list(pts.values()))
+    return float(max(np.ptp(arr[:, 0]), np.ptp(arr[:, 1]), 1e-9))
+
+
+def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, numbers: bool = True,
+                   color: str = "black", lw: float = 1.6, alpha: float = 1.0, guides: bool = True,
+                   size: float | None = None) -> None:
+    """Draw the mechanism at one position on ``ax`` (equal aspect)."""
+    pts = world_points(linkage, q)
+    L = size if size is not None else size_of(linkage, pts)
+    r_hinge = 0.012 * L
+    # links
+    for k, b in sorted(linkage.bodies.items()):
+        if k == 0:
+            continue
+        names = b.points
+        xy = np.array([pts[n] for n in names])
+        if len(names) == 3:
+            ax.add_patch(Polygon(xy, closed=True, facecolor="0.9" if alpha == 1 else "none", edgecolor=color,
+                                 lw=lw, alpha=alpha, zorder=2))
+        elif len(names) == 2:
+            ax.plot(xy[:, 0], xy[:, 1], color=color, lw=lw, alpha=alpha, zorder=2, solid_capstyle="round")
+        if numbers and alpha == 1 and len(names) >= 2:
+            c = xy.mean(axis=0)
+            d = xy[1] - xy[0]
+            n = np.array([-d[1], d[0]]) / (np.hypot(*d) + 1e-300)
+            p = c + n * 0.035 * L
+            ax.text(p[0], p[1], str(k), fontsize=9, ha="center", va="center", color=color,
+                    bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec=color, lw=0.5), zorder=6)
+    # sliders and guides
+    for s in linkage.slides:
+        k = s.link
+        b = linkage.bodies[k]
+        ang = q[k, 2] + 0.0
+        guide_dir = rot(np.array([q[s.guide, 2]]), s.line_dir)[0] if s.guide else np.asarray(s.line_dir)
+        gang = math.degrees(math.atan2(guide_dir[1], guide_dir[0]))
+        p = pts[s.point]
+        if len(b.points) == 1:
+            w, h = 0.09 * L, 0.05 * L
+            rect = Rectangle((-w / 2, -h / 2), w, h, facecolor="white", edgecolor=color, lw=lw, alpha=alpha, zorder=4)
+            rect.set_transform(Affine2D().rotate_deg(gang).translate(p[0], p[1]) + ax.transData)
+            ax.add_patch(rect)
+            if numbers and alpha == 1:
+                off = np.array([-guide_dir[1], guide_dir[0]]) * 0.06 * L
+                ax.text(p[0] + off[0], p[1] + off[1], str(k), fontsize=9, ha="center", va="center",
+                        bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec=color, lw=0.5), zorder=6)
+        if guides and s.guide == 0:
+            a = np.asarray(s.line_point)
+            t = np.dot(p - a, guide_dir)
+            ends = [a + (t - 0.25 * L) * guide_dir, a + (t + 0.25 * L) * guide_dir]
+            normal = np.array([-guide_dir[1], guide_dir[0]])
+            centre = np.array(list(pts.values())).mean(axis=0)
+            if np.dot(centre - p, normal) > 0:      # hatch on the side away from the mechanism
+                normal = -normal
+            _hatch_line(ax, ends[0], ends[1], normal, 0.03 * L, color, alpha, offset=0.025 * L + 0.0)
+    # hinges and fixed pivots
+    for j in linkage.joints:
+        p = pts[j.name]
+        if 0 in j.bodies:
+            _fixed_pivot(ax, p, 0.05 * L, color, alpha)
+        ax.add_patch(Circle(p, r_hinge, facecolor="white", edgecolor=color, lw=1.0, alpha=alpha, zorder=5))
+    if labels and alpha == 1:
+        centre = np.array(list(pts.values())).mean(axis=0)
+        for name, p in pts.items():
+            d = p - centre
+            n = np.hypot(*d)
+            d = d / n if n > 0 else np.array([0.0, 1.0])
+            on_slider = any(sl.point == name and len(linkage.bodies[sl.link].points) == 1 for sl in linkage.slides)
+            lp = p + d * (0.075 if on_slider else 0.045) * L + np.array([0.0, 0.01 * L])
+            ax.text(lp[0], lp[1], name, fontsize=10, ha="center", va="center", style="italic", zorder=7)
+    ax.set_aspect("equal")
+
+
+def _fixed_pivot(ax, p, s, color, alpha) -> None:
+    tri = np.array([p, p + [-0.6 * s, -s], p + [0.6 * s, -s]])
+    ax.add_patch(Polygon(tri, closed=True, facecolor="none", edgecolor=color, lw=0.8, alpha=alpha, zorder=3))
+    _hatch_line(ax, p + [-0.9 * s, -s], p + [0.9 * s, -s], np.array([0.0, -1.0]), 0.5 * s, color, alpha)
+
+
+def _hatch_line(ax, a, b, normal, depth, color, alpha, offset: float = 0.0) -> None:
+    a, b = np.asarray(a, float) + normal * offset, np.asarray(b, float) + normal * offset
+    ax.plot([a[0], b[0]], [a[1], b[1]], color=color, lw=0.8, alpha=alpha, zorder=1)
+    n = 7
+    d = b - a
+    for i in range(n + 1):
+        p = a + d * i / n
+        q = p + normal * depth + d / n * 0.8
+        ax.plot([p[0], q[0]], [p[1], q[1]], color=color, lw=0.5, alpha=alpha, zorder=1)
+
+
+def scheme_figure(linkage: Linkage, q: np.ndarray, w_cm: float = 15.0):
+    """A figure of the scheme at one position, axes in metres hidden."""
+    from . import new_figure
+    pts = world_points(linkage, q)
+    arr = np.array(list(pts.values()))
+    span = np.ptp(arr, axis=0) + 1e-9
+    h_cm = min(12.0, max(5.0, w_cm * span[1] / span[0] + 2.0))
+    fig = new_figure(w_cm, h_cm)
+    ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
+    draw_mechanism(ax, linkage, q)
+    L = size_of(linkage, pts)
+    ax.set_xlim(arr[:, 0].min() - 0.12 * L, arr[:, 0].max() + 0.12 * L)
+    ax.set_ylim(arr[:, 1].min() - 0.12 * L, arr[:, 1].max() + 0.12 * L)
+    ax.axis("off")
+    return fig
