@@ -1,0 +1,162 @@
+"""The graphical replica of the flywheel calculation as the student draws it on sheet 3 (seed 000,
+section 3; Артоболевский), kept in millimetres so that it can be drawn and printed:
+
+1. M_red(φ) at scale μM (N·m/mm) over a φ axis of μφ (rad/mm).
+2. Graphical integration by chords: on each interval between positions the ordinate at its middle,
+   y_i (mm), is carried to the M axis and joined to the pole P at distance H (mm); the chord of the
+   work diagram on that interval is parallel to that ray: a_{i+1} = a_i + y_i·Δx_i / H.
+   Scale of work: μA = μM·μφ·H (J/mm).
+3. A_drive is the straight line from the origin to the end of A_red's diagram; ΔE = A_drive + A_red
+   is redrawn at μE = μA / k (k the enlargement, J/mm).
+4. J_red(φ) at μJ (kg·m²/mm); the Wittenbauer diagram ΔE(J) from the positions (x = J/μJ from J = 0).
+5. Tangents at ψmax,min = arctg[μJ·(1 ± δ)·ω_m² / (2·μE)] (the course's formula, seed 000; the exact
+   (1 ± δ/2)² differs by δ²/4) cut the ΔE axis at K and L; J_fly = KL·μE / (ω_m²·δ).
+
+The positions are the [analysis] positions plus the angles where the resistance switches or kinks
+(seed 000 adds the end of the working stroke, «крх»). Its drawing accuracy: the chords and the
+polygon through the positions err as h²; Richardson's estimate 4/3·|J(h) − J(h/2)| from the replica
+repeated with every interval halved (at the same scales), plus reading KL to READING_MM.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .cycle import TWO_PI, Cycle
+
+#: Reading accuracy of a length measured on the sheet, mm.
+READING_MM = 0.5
+#: Mantissas of the scale factors (ГОСТ 2.302-like round values).
+NICE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0)
+#: Enlargements allowed from the work diagram to the ΔE diagram (μE = μA / k).
+ENLARGE = (1, 2, 4, 5, 10)
+
+
+def nice_ceil(x: float) -> float:
+    """The smallest round scale factor ≥ x (mantissa in NICE)."""
+    if x <= 0 or not math.isfinite(x):
+        return 1.0
+    e = math.floor(math.log10(x))
+    for m in NICE:
+        v = m * 10.0 ** e
+        if v >= x * (1 - 1e-12):
+            return v
+    return 10.0 ** (e + 1)
+
+
+@dataclass(frozen=True)
+class GraphLayout:
+    """Room on the sheet for the diagrams, mm."""
+    phi_axis: float = 180.0       # length of the φ axis for one cycle
+    m_height: float = 60.0        # largest |M_red|
+    a_height: float = 60.0        # largest |A| of the work diagram
+    e_height: float = 60.0        # span of ΔE
+    j_width: float = 120.0        # largest J_red (from J = 0)
+    pole_step: float = 10.0       # H is a multiple of this
+
+
+@dataclass(frozen=True)
+class GraphicalReplica:
+    """Every intermediate of the construction (lengths in mm, scales in SI per mm).
+
+    theta: the positions (rad, from position 0, the last = 2π); x: their abscissae;
+    M_mm: M_red at the positions; mid_x, mid_mm: the middle ordinates used for the chords;
+    a_mm: the work of the loads A_red by chords; drive_mm: A_drive; e_mm: ΔE at μE; j_mm: J_red;
+    K_mm, L_mm: intercepts on the ΔE axis; KL_mm; index_K, index_L: the tangent positions.
+    """
+    mu_phi: float
+    mu_M: float
+    H: float
+    mu_A: float
+    enlargement: int
+    mu_E: float
+    mu_J: float
+    psi_max_deg: float
+    psi_min_deg: float
+    theta: np.ndarray
+    x: np.ndarray
+    M_mm: np.ndarray
+    mid_x: np.ndarray
+    mid_mm: np.ndarray
+    a_mm: np.ndarray
+    drive_mm: np.ndarray
+    e_mm: np.ndarray
+    j_mm: np.ndarray
+    K_mm: float
+    L_mm: float
+    KL_mm: float
+    index_K: int
+    index_L: int
+    J_fly: float
+    accuracy: float               # estimated drawing accuracy of J_fly, kg·m²
+
+
+def _ro(a) -> np.ndarray:
+    a = np.array(a, dtype=float)
+    a.setflags(write=False)
+    return a
+
+
+def replica_positions(cycle: Cycle, positions: int) -> np.ndarray:
+    """θ of the [analysis] positions from position 0, the break angles, and 2π (sorted)."""
+    th = np.arange(positions) * TWO_PI / positions
+    return np.union1d(np.union1d(th, cycle.breaks), [TWO_PI])
+
+
+def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayout,
+               scales: dict | None = None) -> dict:
+    wm = cycle.omega_m
+    mid = 0.5 * (theta[:-1] + theta[1:])
+    r = cycle.reduced(np.concatenate((theta, mid)))
+    M, Mmid = r.M[:theta.size], r.M[theta.size:]
+    J = r.J[:theta.size]
+    s = dict(scales or {})
+    mu_phi = s.setdefault("mu_phi", TWO_PI / layout.phi_axis)
+    mu_M = s.setdefault("mu_M", nice_ceil(float(np.abs(np.concatenate((M, Mmid))).max()) / layout.m_height))
+    x = theta / mu_phi
+    y_mid = Mmid / mu_M
+    steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
+    a_H = np.concatenate(([0.0], np.cumsum(steps)))  # a·H, mm²
+    if "H" not in s:
+        need = float(np.abs(a_H).max()) / layout.a_height
+        s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - 1e-12))
+    H = s["H"]
+    a = a_H / H
+    mu_A = mu_M * mu_phi * H
+    drive = -a[-1] * x / x[-1]
+    e_A = a + drive
+    if "enlargement" not in s:
+        span = float(e_A.max() - e_A.min())
+        s["enlargement"] = max([k for k in ENLARGE if k * span <= layout.e_height] or [1])
+    k = s["enlargement"]
+    mu_E = mu_A / k
+    e = e_A * k
+    mu_J = s.setdefault("mu_J", nice_ceil(float(J.max()) / layout.j_width))
+    jx = J / mu_J
+    t_max = mu_J * (1 + delta) * wm * wm / (2 * mu_E)
+    t_min = mu_J * (1 - delta) * wm * wm / (2 * mu_E)
+    up, lo = e - jx * t_max, e - jx * t_min
+    iK, iL = int(np.argmax(up)), int(np.argmin(lo))
+    KL = float(up[iK] - lo[iL])
+    return dict(mu_phi=mu_phi, mu_M=mu_M, H=H, mu_A=mu_A, enlargement=k, mu_E=mu_E, mu_J=mu_J,
+                psi_max_deg=math.degrees(math.atan(t_max)), psi_min_deg=math.degrees(math.atan(t_min)),
+                theta=theta, x=x, M_mm=M / mu_M, mid_x=mid / mu_phi, mid_mm=y_mid, a_mm=a, drive_mm=drive,
+                e_mm=e, j_mm=jx, K_mm=float(up[iK]), L_mm=float(lo[iL]), KL_mm=KL, index_K=iK, index_L=iL,
+                J_fly=KL * mu_E / (wm * wm * delta), scales=s)
+
+
+def graphical_replica(cycle: Cycle, delta: float, positions: int = 12,
+                      layout: GraphLayout = GraphLayout()) -> GraphicalReplica:
+    """The sheet's construction at ``positions`` equal steps (plus the break angles)."""
+    theta = replica_positions(cycle, positions)
+    c = _construct(cycle, theta, delta, layout)
+    scales = c.pop("scales")
+    fine = np.union1d(theta, 0.5 * (theta[:-1] + theta[1:]))
+    c2 = _construct(cycle, fine, delta, layout, scales)
+    wm = cycle.omega_m
+    # Chords and polygon err as h²: Richardson's estimate of the error at h is 4/3·|J(h) − J(h/2)|.
+    accuracy = 4.0 / 3.0 * abs(c["J_fly"] - c2["J_fly"]) + READING_MM * c["mu_E"] / (wm * wm * delta)
+    arrays = ("theta", "x", "M_mm", "mid_x", "mid_mm", "a_mm", "drive_mm", "e_mm", "j_mm")
+    return GraphicalReplica(**{k: (_ro(v) if k in arrays else v) for k, v in c.items()}, accuracy=accuracy)

@@ -1,0 +1,73 @@
+"""Reduction of loads and masses to the crank (Артоболевский, «Теория механизмов и машин»;
+seed 000, section 3).
+
+    M_red = Σ(F·v_F + M·ω) / |ω1|                    (equal power; negative for a resisting load)
+    J_red = J_crank + Σ_k [m_k·|v_Sk|² + J_Sk·ω_k²] / ω1²   (equal kinetic energy)
+    dJ_red/dθ = 2·Σ_k [m_k·v_Sk·a_Sk + J_Sk·ω_k·ε_k] / |ω1|³
+
+The kinematics are those of the crank turning uniformly at the nominal ω1, so v/ω1 and a/ω1² are
+the first and second derivatives of the positions with respect to the crank angle: the reduced
+quantities depend on the position only. θ is the crank's rotation in its own sense of turning,
+so dividing by |ω1| keeps "negative = resisting" for a clockwise crank as well.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from ..kinematics import KinematicsResult
+from ..linkage import Linkage
+from ..loads import LoadSet, power
+
+
+def _ro(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, dtype=float)
+    a.setflags(write=False)
+    return a
+
+
+def reduced_moment(loads: LoadSet, kin: KinematicsResult, linkage: Linkage) -> np.ndarray:
+    """M_red = P / |ω1|, N·m at every position of ``kin`` (all loads in ``loads``)."""
+    return _ro(power(loads, kin, linkage) / abs(kin.omega1))
+
+
+def inertia_terms(kin: KinematicsResult, linkage: Linkage) -> Mapping[int, np.ndarray]:
+    """Each moving link's share of J_red, [m_k·v_Sk² + J_Sk·ω_k²]/ω1², kg·m² (links with mass)."""
+    w2 = kin.omega1 ** 2
+    out: dict[int, np.ndarray] = {}
+    for k in linkage.moving:
+        b = linkage.bodies[k]
+        if b.mass <= 0 and b.inertia <= 0:
+            continue
+        v = np.asarray(kin.coms[k].vel)
+        om = np.asarray(kin.links[k].omega)
+        out[k] = _ro((b.mass * (v * v).sum(1) + b.inertia * om * om) / w2)
+    return out
+
+
+def reduced_inertia(kin: KinematicsResult, linkage: Linkage, crank_inertia: float) -> tuple[np.ndarray, np.ndarray]:
+    """(J_red, dJ_red/dθ) at every position: ``crank_inertia`` (rotor, gears) plus every link's
+    own share — the crank's own mass and J_S1 included (they are not part of ``crank_inertia``,
+    which TASK_FORMAT.md defines as the rotor and gears reduced to the crank)."""
+    w = abs(kin.omega1)
+    J = np.full(kin.phi.size, float(crank_inertia))
+    dJ = np.zeros(kin.phi.size)
+    for k in linkage.moving:
+        b = linkage.bodies[k]
+        if b.mass <= 0 and b.inertia <= 0:
+            continue
+        v, a = np.asarray(kin.coms[k].vel), np.asarray(kin.coms[k].acc)
+        om, eps = np.asarray(kin.links[k].omega), np.asarray(kin.links[k].epsilon)
+        J += (b.mass * (v * v).sum(1) + b.inertia * om * om) / w ** 2
+        dJ += 2.0 * (b.mass * (v * a).sum(1) + b.inertia * om * eps) / w ** 3
+    return _ro(J), _ro(dJ)
+
+
+def constant_inertia(linkage: Linkage, crank_inertia: float) -> float:
+    """The part of J_red that does not change over the cycle (Мерцалов's first group): the rotor and
+    gears plus the crank itself about its axis, J_S1 + m1·|O S1|²."""
+    b = linkage.bodies[linkage.drive_link]
+    o = np.asarray(b.local[linkage.drive_axis])
+    r = np.asarray(b.com_local) - o
+    return float(crank_inertia) + b.inertia + b.mass * float(r @ r)

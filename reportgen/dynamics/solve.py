@@ -1,0 +1,78 @@
+"""``solve_dynamics(project)``: the whole flywheel calculation of issue #5, items 1–4."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .cycle import TWO_PI, Cycle, ProjectCycle
+from .energy import EnergyProfile
+from .errors import DynamicsInputError
+from .flywheel import flywheel_size
+from .graphical import GraphLayout, graphical_replica
+from .motion import steady_motion
+from .quadrature import DEFAULT_ORDER
+from .result import DynamicsResult, compare
+from .wittenbauer import merzalov, wittenbauer_exact
+
+#: The fewest grid positions kept in results.json (RESULTS_FORMAT.md / issue #5).
+MIN_POSITIONS = 360
+
+
+def _ro(a) -> np.ndarray:
+    a = np.array(a, dtype=float)
+    a.setflags(write=False)
+    return a
+
+
+def check_delta(delta: float) -> float:
+    if not (isinstance(delta, (int, float)) and math.isfinite(delta) and 0 < delta < 1):
+        raise DynamicsInputError("dynamics.delta", f"{delta!r} is not a coefficient of non-uniformity",
+                                 "a number in (0, 1), e.g. 0.05")
+    return float(delta)
+
+
+def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: str = "disk",
+                density: float = 7860.0, width_ratio: float = 1.0, crank_inertia: float = 0.0,
+                graphical_positions: int = 12, layout: GraphLayout = GraphLayout(),
+                order: int = DEFAULT_ORDER, phi_of=None) -> DynamicsResult:
+    """The flywheel calculation of any cycle (a project's or an analytic one)."""
+    delta = check_delta(delta)
+    if n < 8:
+        raise ValueError("n must be at least 8")
+    theta = np.arange(n) * TWO_PI / n
+    prof = EnergyProfile(cycle, theta, order)
+    idx = np.searchsorted(prof.nodes, theta)
+    A = prof.A_nodes[idx]
+    red = cycle.reduced(theta)
+    ex = wittenbauer_exact(cycle, prof, delta)
+    mz = merzalov(cycle, prof, delta)
+    gr = graphical_replica(cycle, delta, graphical_positions, layout)
+    J_fly = max(ex.J_fly, 0.0)
+    motion = steady_motion(cycle, prof, J_fly, theta, delta)
+    fw = flywheel_size(J_fly, shape, density, width_ratio)
+    phi = phi_of(theta) if phi_of is not None else theta
+    return DynamicsResult(
+        theta=_ro(theta), phi=_ro(phi), M_red=_ro(red.M), J_red=_ro(red.J), dJ_red=_ro(red.dJ),
+        work_resistance=_ro(A), work_drive=_ro(prof.M_drive * theta), delta_E=_ro(prof.M_drive * theta + A),
+        M_drive=prof.M_drive, work_cycle=prof.work_cycle, omega_m=cycle.omega_m, delta_target=delta,
+        crank_inertia=crank_inertia, J_const=cycle.J_const, breaks=_ro(cycle.breaks),
+        switching=tuple(getattr(cycle, "switching_phi", ())), exact=ex, merzalov=mz, graphical=gr,
+        comparison=compare(ex.J_fly, {"merzalov": mz.J_fly, "graphical": gr.J_fly}),
+        J_flywheel=J_fly, flywheel=fw, motion=motion)
+
+
+def solve_dynamics(project, n: int = MIN_POSITIONS, graphical_positions: int | None = None,
+                   layout: GraphLayout = GraphLayout(), order: int = DEFAULT_ORDER) -> DynamicsResult:
+    """Reduced moment and inertia, work, ΔE, the flywheel (exact, Мерцалов, graphical), its size and
+    the steady motion with it, over ``n`` equal steps from position 0 of the project's task."""
+    dyn = project.task.dynamics
+    if dyn is None:
+        raise DynamicsInputError("dynamics", "the task has no [dynamics] section", "a [dynamics] section with delta")
+    cycle = ProjectCycle(project, dyn.crank_inertia)
+    if graphical_positions is None:
+        graphical_positions = max(project.task.analysis.positions, 12)
+    fw = dyn.flywheel
+    return solve_cycle(cycle, dyn.delta, n, shape=fw.shape, density=fw.density, width_ratio=fw.width_ratio,
+                       crank_inertia=dyn.crank_inertia, graphical_positions=graphical_positions,
+                       layout=layout, order=order, phi_of=cycle.phi_of)
