@@ -73,6 +73,9 @@ def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS) ->
             out["structure"] = project.structure.to_dict()
         if "kinematics" in sections:
             out["kinematics"] = kinematics_block(project.kinematics, project.strokes)
+    if "dynamics" in sections and project.task.mechanism is not None and project.task.dynamics is not None:
+        from .dynamics import dynamics_block, dynamics_of
+        out["dynamics"] = dynamics_block(dynamics_of(project))
     if "gears" in sections and project.task.gears is not None:
         from .gears.results import gears_block
         out["gears"] = gears_block(project.gears)

@@ -60,6 +60,11 @@ def summary(project: Project) -> str:
         for i, g, mu in kin.near_singular:
             lines.append(f"  warning: position {i} (φ1 = {math.degrees(kin.phi[i]) % 360:.2f}°) is near a singular "
                          f"position of group {g}: μ = {mu:.2f}°")
+        if project.task.dynamics is not None:
+            from ..dynamics import dynamics_of
+            d = dynamics_of(project)
+            lines.append(f"  flywheel: J = {d.J_flywheel:.4g} kg·m² ({d.flywheel.shape}, R = {d.flywheel.radius:.3f} m, "
+                         f"m = {d.flywheel.mass:.4g} kg); δ achieved {d.delta_achieved:.5f} (target {d.delta_target:g})")
     return "\n".join(lines)
 
 

@@ -7,11 +7,11 @@ from .flywheel import FlywheelSize, flywheel_size
 from .graphical import GraphicalReplica, GraphLayout, graphical_replica
 from .motion import SteadyMotion, integrate_ivp, steady_motion
 from .result import DynamicsResult, MethodComparison, dynamics_block
-from .solve import solve_cycle, solve_dynamics
+from .solve import dynamics_of, solve_cycle, solve_dynamics
 from .wittenbauer import Merzalov, WittenbauerExact, merzalov, wittenbauer_exact
 
 __all__ = ["Cycle", "FunctionCycle", "ProjectCycle", "Reduced", "EnergyProfile", "DynamicsInputError",
            "FlywheelSize", "flywheel_size", "GraphicalReplica", "GraphLayout", "graphical_replica",
            "SteadyMotion", "integrate_ivp", "steady_motion", "DynamicsResult", "MethodComparison",
-           "dynamics_block", "solve_cycle", "solve_dynamics", "Merzalov", "WittenbauerExact", "merzalov",
+           "dynamics_block", "dynamics_of", "solve_cycle", "solve_dynamics", "Merzalov", "WittenbauerExact", "merzalov",
            "wittenbauer_exact"]

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 
@@ -76,3 +77,15 @@ def solve_dynamics(project, n: int = MIN_POSITIONS, graphical_positions: int | N
     return solve_cycle(cycle, dyn.delta, n, shape=fw.shape, density=fw.density, width_ratio=fw.width_ratio,
                        crank_inertia=dyn.crank_inertia, graphical_positions=graphical_positions,
                        layout=layout, order=order, phi_of=cycle.phi_of)
+
+
+_CACHE: "weakref.WeakKeyDictionary[object, DynamicsResult]" = weakref.WeakKeyDictionary()
+
+
+def dynamics_of(project) -> DynamicsResult:
+    """``solve_dynamics(project)`` with the defaults, computed once per project (results.json and the
+    command's summary share it; until ``Project`` has a ``dynamics`` stage of its own)."""
+    r = _CACHE.get(project)
+    if r is None:
+        r = _CACHE[project] = solve_dynamics(project)
+    return r
