@@ -1,0 +1,545 @@
+"""The graphical replicas of section 2 (seed 000, section 2; course manual, seed 001, sections 5–6):
+what a student draws and measures, computed from the exact solution, with the deviation of each read
+value from the exact one.
+
+- Scales: a round scale μ = m·10^k with m ∈ {1, 2, 2.5, 5} (:data:`ROUND_MANTISSAS`), the smallest
+  one that draws the largest vector within ``max_mm`` — so the largest vector lies in
+  (max_mm/2, max_mm] mm. Forces μF (N/mm), ``max_mm`` = 200; the scheme μL (m/mm), the mechanism's
+  extent within 300 mm; the velocity plan of the lever μv ((m/s)/mm), 200 mm.
+- Measurements: a length read off a plan is rounded to ``reading_mm`` (0.1 mm), an arm to
+  ``arm_reading_mm`` (0.01 mm), as a student measures them.
+- Inertia: Fи and Mи of a link replaced by one force Fи′ = Fи shifted by h = Mи/Fи (seed 000, 2.2).
+- A dyad (RRR, RRP): each reaction at an outer revolute pair is split into R^τ (square to the line
+  from the pair to the inner joint Q) from the moment equation of its link about Q, with arms
+  measured on the scheme, and R^n along that line; the group's force polygon (R^n_a, R^τ_a, the
+  forces on a, the forces on b, R^τ_b, R^n_b) closes at the intersection of the two unknown
+  directions; the reaction in the inner joint closes the polygon of one link. Other groups: the
+  exact solution fed with the read values, each reaction read off its polygon.
+- The crank: F_ур from its moment equation about O with measured arms; R01 closes its polygon.
+- The lever: arms of the forces about the pole of the turned plan measured at μv; F_ур = ΣF·h/pa.
+Reactions read from a polygon are passed on to the next group as the student does, so the errors
+accumulate along the chain, as on paper.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..linkage import Linkage
+from ..structure import Group, Structure
+from .reactions import PairReaction, Reactions, _Known, _ro, pair_name, perp, solve_group
+from .zhukovsky import Lever
+
+#: Mantissas of a round scale.
+ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0)
+#: Longest vector of a force polygon or of the lever's plan, mm; extent of the scheme, mm.
+POLYGON_MM = 200.0
+SCHEME_MM = 300.0
+#: Rounding of lengths read off a plan and of arms measured on a scheme, mm.
+READING_MM = 0.1
+ARM_READING_MM = 0.01
+#: Fи and Mи are not replaced by one force when h = M/F exceeds this many mechanism lengths.
+REPLACEMENT_LIMIT = 100.0
+
+
+def round_scale(largest: float, max_mm: float) -> float:
+    """The smallest μ = m·10^k (m in :data:`ROUND_MANTISSAS`) with ``largest/μ ≤ max_mm``."""
+    if not (largest > 0 and math.isfinite(largest)):
+        return 1.0
+    target = largest / max_mm
+    k = math.floor(math.log10(target)) - 1
+    while True:
+        for m in ROUND_MANTISSAS:
+            mu = m * 10.0 ** k
+            if largest / mu <= max_mm * (1 + 1e-12):
+                return float(f"{mu:.12g}")
+        k += 1
+
+
+def measure(x: float, step: float) -> float:
+    """A length as read to ``step`` (no rounding when step is 0)."""
+    return round(x / step) * step if step > 0 else x
+
+
+def _deviation(read: float, exact: float) -> float:
+    """100·(read − exact)/exact, %; 0 when both vanish."""
+    if exact == 0.0:
+        return 0.0 if read == 0.0 else math.inf
+    return 100.0 * (read - exact) / exact
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = float(np.hypot(*v))
+    return v / n if n > 0 else np.zeros(2)
+
+
+def _read_vector(v: np.ndarray, mu: float, step: float) -> np.ndarray:
+    """A vector as read off a plan: its direction, its length rounded to ``step`` mm."""
+    return _unit(v) * measure(float(np.hypot(*v)) / mu, step) * mu
+
+
+@dataclass(frozen=True)
+class InertiaReplacement:
+    """Fи and Mи of a link as one force Fи′ (seed 000, 2.2): shifted by h = |Mи|/|Fи| so that its
+    moment about S has the sense of Mи; ``swing_point`` (k) where its line meets the link's axis."""
+    link: int
+    force_name: str
+    moment_name: str
+    force: np.ndarray          # (2,)
+    moment: float
+    com: np.ndarray            # S, (2,)
+    h: float                   # m
+    h_mm: float                # at μL
+    h_mm_measured: float
+    point: np.ndarray          # S + shift, exact, (2,)
+    point_measured: np.ndarray  # with the measured h
+    swing_point: np.ndarray | None
+    moment_measured: float     # ±|Fи|·h_measured·μL
+    deviation_percent: float
+
+
+@dataclass(frozen=True)
+class MomentTerm:
+    """One term of a moment equation about a centre: ``moment = magnitude·arm`` (arm signed, m)."""
+    name: str
+    magnitude: float           # N (a couple: its value, N·m, with arm 1)
+    arm: float                 # m, signed (CCW positive); 1.0 for a couple
+    arm_mm: float              # at μL (couples: 0)
+    arm_mm_measured: float
+    moment: float              # N·m
+
+
+@dataclass(frozen=True)
+class TangentialSplit:
+    """A reaction at an outer revolute pair of a dyad, on ``link`` (name ``R{j}{k}``): the normal
+    part along ``along`` (pair → inner joint Q) and the tangential part along ``tangent`` = along
+    turned +90°, from ΣM_Q(link) = 0: R^τ = ΣM_Q(other forces)/l."""
+    name: str
+    link: int
+    centre: str
+    centre_point: np.ndarray
+    pair_point: np.ndarray
+    along: np.ndarray
+    tangent: np.ndarray
+    length: float              # l = |PQ|, m
+    length_mm_measured: float
+    tau: float                 # N, along ``tangent``
+    normal: float              # N, along ``along``
+    terms: tuple[MomentTerm, ...]
+    tau_measured: float        # from the measured arms
+    deviation_percent: float
+
+
+@dataclass(frozen=True)
+class PolygonVector:
+    """One side of a force polygon, drawn head to tail from the origin (mm on the polygon)."""
+    name: str
+    vector: np.ndarray         # N, exact, (2,)
+    known: bool                # False: found by closing the polygon
+    length_mm: float           # exact length at μF
+    measured_mm: float         # as read (rounded to the reading)
+    start_mm: np.ndarray
+    end_mm: np.ndarray
+    read_value: float          # N: the replica's value (measured_mm·μF for the unknowns)
+    exact_value: float         # N
+    deviation_percent: float
+
+
+@dataclass(frozen=True)
+class ForcePolygon:
+    """Force polygon of a group (key "4-5") or of the crank (key "1") at scale μF (N/mm); ``extra``
+    are reactions read off it as diagonals (the inner joint, or a full reaction R = R^n + R^τ)."""
+    key: str
+    scale: float
+    vectors: tuple[PolygonVector, ...]
+    extra: tuple[PolygonVector, ...]
+    equation: str              # "Rn34 + Rτ34 + Fи4′ + G4 + … + R05 = 0"
+
+
+@dataclass(frozen=True)
+class GroupGraphic:
+    key: str
+    label: str
+    kind: str
+    splits: tuple[TangentialSplit, ...]
+    polygon: ForcePolygon
+    method: str                # "dyad" (R^τ from moments, then the polygon) | "exact-read" (other groups)
+
+
+@dataclass(frozen=True)
+class CrankGraphic:
+    terms: tuple[MomentTerm, ...]           # moments about O of the forces on the crank (F_ур excluded)
+    length_mm_measured: float               # OA on the scheme
+    balancing_force: float                  # exact, N (signed: + gives a CCW moment)
+    balancing_force_measured: float
+    balancing_moment_measured: float        # F_ур,measured·l_OA
+    polygon: ForcePolygon
+
+
+@dataclass(frozen=True)
+class LeverTerm:
+    name: str
+    source: str
+    magnitude: float
+    arm_mm: float              # signed, on the plan at μv
+    arm_mm_measured: float
+    moment: float              # W (= F·v), measured
+
+
+@dataclass(frozen=True)
+class LeverGraphic:
+    scale: float               # μv, (m/s)/mm
+    terms: tuple[LeverTerm, ...]
+    direct: tuple[tuple[str, float], ...]   # couples of one-point links as M·ω, W
+    pa_mm_measured: float
+    balancing_force_measured: float         # N
+    balancing_moment_measured: float        # N·m
+
+
+@dataclass(frozen=True)
+class GraphicalReplica:
+    length_scale: float        # μL, m/mm
+    reading_mm: float
+    arm_reading_mm: float
+    inertia: tuple[InertiaReplacement, ...]
+    groups: tuple[GroupGraphic, ...]        # in the order solved (last attached first)
+    crank: CrankGraphic
+    lever: LeverGraphic
+    discrepancy_percent: float              # 100·(F_ур,groups − F_ур,lever)/F_ур,lever, measured
+
+
+# -- helpers ---------------------------------------------------------------------------------------
+
+@dataclass
+class _Item:
+    """A force on a link as the student draws it: exact and read (replica) versions."""
+    name: str
+    point: np.ndarray
+    vector: np.ndarray
+    point_r: np.ndarray
+    vector_r: np.ndarray
+
+
+def _moment_term(name: str, point: np.ndarray, vec: np.ndarray, centre: np.ndarray, mu_l: float, step: float,
+                 point_r: np.ndarray | None = None, vec_r: np.ndarray | None = None) -> tuple[MomentTerm, float]:
+    """Exact term and the measured moment (with the read vector and point, arm rounded)."""
+    mag = float(np.hypot(*vec))
+    mom = float(np.cross(point - centre, vec))
+    arm = mom / mag if mag > 0 else 0.0
+    pr = point if point_r is None else point_r
+    vr = vec if vec_r is None else vec_r
+    mag_r = float(np.hypot(*vr))
+    mom_r = float(np.cross(pr - centre, vr))
+    arm_r_mm = (mom_r / mag_r) / mu_l if mag_r > 0 else 0.0
+    arm_meas = math.copysign(measure(abs(arm_r_mm), step), arm_r_mm)
+    return MomentTerm(name, mag, arm, arm / mu_l, arm_meas, mom), mag_r * arm_meas * mu_l
+
+
+def _polygon(key: str, entries: list[tuple[str, np.ndarray, bool, float]], mu: float, step: float,
+             extra: list[tuple[str, np.ndarray, float]] = ()) -> ForcePolygon:
+    """entries: (name, exact vector, known, read value N); drawn head to tail from the origin."""
+    vecs, cur = [], np.zeros(2)
+    for name, v, known, read in entries:
+        ln = float(np.hypot(*v)) / mu
+        end = cur + v / mu
+        exact = float(np.hypot(*v))
+        vecs.append(PolygonVector(name, _ro(v), known, ln, measure(ln, step), _ro(cur), _ro(end), read, exact,
+                                  _deviation(read, exact)))
+        cur = end
+    ex = []
+    for name, v, read in extra:
+        ln = float(np.hypot(*v)) / mu
+        exact = float(np.hypot(*v))
+        ex.append(PolygonVector(name, _ro(v), False, ln, measure(ln, step), _ro(np.zeros(2)), _ro(v / mu), read,
+                                exact, _deviation(read, exact)))
+    eq = " + ".join(e[0] for e in entries) + " = 0"
+    return ForcePolygon(key, mu, tuple(vecs), tuple(ex), eq)
+
+
+def _canon(name_on_k: tuple[int, int], vec_on_k: np.ndarray) -> tuple[str, np.ndarray]:
+    """(j, k), force of j on k → canonical name and orientation (lower id on higher)."""
+    j, k = name_on_k
+    return (pair_name(j, k), vec_on_k) if j < k else (pair_name(k, j), -vec_on_k)
+
+
+# -- the replica -----------------------------------------------------------------------------------
+
+def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, arm_step: float,
+                         i: int = 0) -> dict[int, InertiaReplacement]:
+    """Fи′ for every link with both an inertia force and a non-zero inertia moment."""
+    out: dict[int, InertiaReplacement] = {}
+    fs = {f.link: f for f in reactions.loads.forces if f.kind == "inertia"}
+    ms = {m.link: m for m in reactions.loads.moments if m.kind == "inertia"}
+    q = np.asarray(reactions.kin.q)[i:i + 1]
+    for k in sorted(set(fs) & set(ms)):
+        F = np.asarray(fs[k].vector)[i]
+        M = float(np.asarray(ms[k].value)[i])
+        mag = float(np.hypot(*F))
+        if mag == 0.0 or M == 0.0:
+            continue
+        S = np.asarray(fs[k].point)[i]
+        h = abs(M) / mag
+        if h > REPLACEMENT_LIMIT * reactions.length_scale:   # Fи ≈ 0 (S on the axis): keep Mи as a couple
+            continue
+        shift_dir = -math.copysign(1.0, M) * perp(F) / mag          # s × F = M for s = −M·perp(F)/|F|²
+        h_mm = h / mu_l
+        h_meas = measure(h_mm, arm_step)
+        point = S + h * shift_dir
+        point_m = S + h_meas * mu_l * shift_dir
+        swing = None
+        pts = linkage.bodies[k].points
+        if len(pts) >= 2:
+            from ..kinematics.constraints import world
+            P1 = world(q, k, tuple(linkage.bodies[k].local[pts[0]]))[0]
+            P2 = world(q, k, tuple(linkage.bodies[k].local[pts[1]]))[0]
+            d = P2 - P1
+            den = float(np.cross(F, d))
+            if abs(den) > 1e-12 * mag * float(np.hypot(*d)):
+                t = float(np.cross(P1 - point, d)) / den
+                swing = _ro(point + t * F)
+        m_meas = math.copysign(mag * h_meas * mu_l, M)
+        out[k] = InertiaReplacement(k, fs[k].name, ms[k].name, _ro(F), M, _ro(S), h, h_mm, h_meas, _ro(point),
+                                    _ro(point_m), swing, m_meas, _deviation(m_meas, M))
+    return out
+
+
+def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactions, lever: Lever, i: int = 0, *,
+                      reading_mm: float = READING_MM, arm_reading_mm: float = ARM_READING_MM,
+                      length_scale: float | None = None) -> GraphicalReplica:
+    """The whole graphical chain at position ``i`` of ``reactions`` (see the module's docstring)."""
+    q = np.asarray(reactions.kin.q)[i:i + 1]
+    pts = np.array([m.pos[i] for m in reactions.kin.points.values()])
+    extent = float(np.hypot(*(pts.max(0) - pts.min(0)))) if len(pts) else 1.0
+    mu_l = length_scale or round_scale(extent, SCHEME_MM)
+    repl = inertia_replacements(linkage, reactions, mu_l, arm_reading_mm, i)
+    read: dict[str, np.ndarray] = {}          # canonical reaction name → read vector (lo on hi)
+    read_pt: dict[str, np.ndarray] = {}
+
+    def items_on(k: int, exclude: set[str]) -> tuple[list[_Item], float]:
+        """The forces on link k that the student knows (loads, Fи′, reactions of solved pairs), and
+        the sum of its couples other than Mи (which goes into Fи′)."""
+        its: list[_Item] = []
+        couples = 0.0
+        for f in reactions.loads.forces:
+            if f.link != k:
+                continue
+            P, V = np.asarray(f.point)[i], np.asarray(f.vector)[i]
+            if f.kind == "inertia" and k in repl:
+                r = repl[k]
+                its.append(_Item(f.name + "′", r.point, V, r.point_measured, V))
+            else:
+                its.append(_Item(f.name, P, V, P, V))
+        for m in reactions.loads.moments:
+            if m.link == k and not (m.kind == "inertia" and k in repl):
+                couples += float(np.asarray(m.value)[i])
+        for p in reactions.pairs_of(k):
+            if p.name in exclude or p.name not in read:
+                continue
+            j = p.other(k)
+            its.append(_Item(pair_name(j, k), p.point[i], p.on(k)[i], read_pt[p.name],
+                             read[p.name] if k == p.hi else -read[p.name]))
+        return its, couples
+
+    groups_out: list[GroupGraphic] = []
+    for g in reversed(structure.groups[1:]):
+        own = {p.name for p in reactions.pairs if p.group == g.key}
+        if g.group_class == 2 and g.kind in ("RRR", "RRP"):
+            groups_out.append(_dyad(linkage, g, reactions, i, q, items_on, own, read, read_pt, mu_l,
+                                    reading_mm, arm_reading_mm))
+        else:
+            groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm))
+    crank = _crank(linkage, reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm)
+    lev = _lever(lever, reactions, i, arm_reading_mm, linkage)
+    disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
+    return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
+                            crank, lev, disc)
+
+
+def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set[str], read, read_pt, mu_l: float,
+          step: float, arm_step: float) -> GroupGraphic:
+    a, b = g.links
+    inner = next(p for p in g.pairs if not p.external)
+    Q = next(r for r in reactions.pairs if r.group == g.key and r.joint == inner.point and r.kind == "R"
+             and {r.lo, r.hi} == set(inner.bodies))
+    Qp = Q.point[i]
+    splits: list[TangentialSplit] = []
+    head: list[tuple] = []        # per link: (link, ext PairReaction, items, couples, split or None)
+    for k in (a, b):
+        ext = next(r for r in reactions.pairs if r.group == g.key and r.external and k in (r.lo, r.hi))
+        its, couples = items_on(k, own)
+        split = None
+        if ext.kind == "R":
+            P = ext.point[i]
+            d = Qp - P
+            l = float(np.hypot(*d))
+            e = d / l
+            t = perp(e)
+            R = ext.on(k)[i]
+            terms, meas_sum = [], 0.0
+            for it in its:
+                term, m_r = _moment_term(it.name, it.point, it.vector, Qp, mu_l, arm_step, it.point_r, it.vector_r)
+                terms.append(term)
+                meas_sum += m_r
+            if couples:
+                terms.append(MomentTerm("M", couples, 1.0, 0.0, 0.0, couples))
+                meas_sum += couples
+            l_meas = measure(l / mu_l, arm_step)
+            tau = float(R @ t)
+            tau_m = meas_sum / (l_meas * mu_l)
+            split = TangentialSplit(pair_name(ext.other(k), k), k, inner.point, _ro(Qp), _ro(P), _ro(e), _ro(t), l,
+                                    l_meas, tau, float(R @ e), tuple(terms), tau_m, _deviation(tau_m, tau))
+            splits.append(split)
+        head.append((k, ext, its, split))
+    mu_f = round_scale(max([float(np.hypot(*it.vector)) for _, _, its, _ in head for it in its] +
+                           [float(np.hypot(*x.on(k)[i])) for k, x, _, _ in head] + [float(np.hypot(*Q.vector[i]))]),
+                       POLYGON_MM)
+    # the polygon with the read vectors: knowns rounded, the two unknown directions closing it
+    known_sum = np.zeros(2)
+    dirs = []
+    for k, ext, its, split in head:
+        if split is not None:
+            known_sum += _read_vector(split.tau_measured * split.tangent, mu_f, step) / mu_f
+            dirs.append(split.along)
+        else:
+            dirs.append(ext.normal[i])
+        for it in its:
+            known_sum += _read_vector(it.vector_r, mu_f, step) / mu_f
+    D = np.column_stack(dirs)
+    s = np.linalg.solve(D, -known_sum)          # mm along each unknown direction
+    s_read = [math.copysign(measure(abs(x), step), x) for x in s]
+    entries: list[tuple] = []
+    extra: list[tuple] = []
+    link_sum_a = np.zeros(2)                    # read forces on link a (for the inner joint)
+    for n_k, (k, ext, its, split) in enumerate(head):
+        j = ext.other(k)
+        unk_read = s_read[n_k] * mu_f * dirs[n_k]
+        R_exact = ext.on(k)[i]
+        if split is not None:
+            tau_v = _read_vector(split.tau_measured * split.tangent, mu_f, step)
+            n_vec = split.normal * split.along
+            full_read = _read_vector(unk_read + tau_v, mu_f, step)
+            pn = ("Rn" + pair_name(j, k)[1:], n_vec, False, abs(s_read[n_k]) * mu_f)
+            pt = ("Rτ" + pair_name(j, k)[1:], split.tau * split.tangent, True, float(np.hypot(*tau_v)))
+            side = [pn, pt] if n_k == 0 else [pt, pn]
+            extra.append((pair_name(j, k), R_exact, float(np.hypot(*full_read))))
+            R_read = full_read
+        else:
+            side = [(pair_name(j, k), R_exact, False, abs(s_read[n_k]) * mu_f)]
+            R_read = unk_read
+        body = [(it.name, it.vector, True, float(np.hypot(*_read_vector(it.vector_r, mu_f, step)))) for it in its]
+        entries.extend(side + body if n_k == 0 else body + side)
+        name, v = _canon((j, k), R_read)
+        read[name] = v
+        read_pt[name] = ext.point[i]
+        if k == a:
+            link_sum_a = R_read + sum((_read_vector(it.vector_r, mu_f, step) for it in its), np.zeros(2))
+    # the inner joint: the force of b on a closes the polygon of link a
+    R_ba_read = _read_vector(-link_sum_a, mu_f, step)
+    R_ba = Q.on(a)[i]
+    extra.append((pair_name(b, a), R_ba, float(np.hypot(*R_ba_read))))
+    name, v = _canon((b, a), R_ba_read)
+    read[name] = v
+    read_pt[name] = Qp
+    return GroupGraphic(g.key, g.label, g.kind, tuple(splits), _polygon(g.key, entries, mu_f, step, extra), "dyad")
+
+
+def _generic(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set[str], read, read_pt,
+             step: float) -> GroupGraphic:
+    """Other groups: their exact equations fed with the read forces, each reaction read off."""
+    kn = _Known({}, {})
+    entries = []
+    all_items = []
+    for k in g.links:
+        its, couples = items_on(k, own)
+        for it in its:
+            kn.add_force(k, it.point_r[None, :], it.vector_r[None, :])
+            all_items.append(it)
+        for m in reactions.loads.moments:
+            if m.link == k:
+                kn.add_couple(k, np.asarray(m.value)[i:i + 1])
+        # Fи′ carries Mи: take the couple back out (the read point already holds it)
+        for it in its:
+            if it.name.endswith("′"):
+                r_m = next(m for m in reactions.loads.moments if m.link == k and m.kind == "inertia")
+                kn.add_couple(k, -np.asarray(r_m.value)[i:i + 1])
+    sol = solve_group(linkage, g, q, kn, reactions.length_scale, reactions.kin.phi[i:i + 1])
+    mags = [float(np.hypot(*it.vector)) for it in all_items] + \
+        [float(np.hypot(*r.vector[i])) for r in reactions.pairs if r.group == g.key]
+    mu_f = round_scale(max(mags), POLYGON_MM)
+    for it in all_items:
+        entries.append((it.name, it.vector, True, float(np.hypot(*_read_vector(it.vector_r, mu_f, step)))))
+    extra = []
+    for p, W, n, vec, couple in sol:
+        i0, j0 = p.bodies
+        exact = next(r for r in reactions.pairs if r.group == g.key and r.joint == p.point and r.kind == p.kind
+                     and {r.lo, r.hi} == {i0, j0})
+        v_read = _read_vector(vec[0], mu_f, step)                       # force of i0 on j0
+        name, v = _canon((i0, j0), v_read)
+        read[name] = v
+        read_pt[name] = exact.point[i]
+        R_ex = exact.on(j0)[i]
+        if p.external:
+            entries.append((pair_name(i0, j0), R_ex, False, float(np.hypot(*v_read))))
+        else:
+            extra.append((pair_name(i0, j0), R_ex, float(np.hypot(*v_read))))
+    return GroupGraphic(g.key, g.label, g.kind, (), _polygon(g.key, entries, mu_f, step, extra), "exact-read")
+
+
+def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
+           arm_step: float) -> CrankGraphic:
+    d = reactions.crank
+    fp = next(r for r in reactions.pairs if r.group == str(d))
+    its, couples = items_on(d, {fp.name})
+    O = fp.point[i]
+    A = reactions.balancing_point[i]
+    l = float(np.hypot(*(A - O)))
+    terms, meas = [], 0.0
+    for it in its:
+        term, m_r = _moment_term(it.name, it.point, it.vector, O, mu_l, arm_step, it.point_r, it.vector_r)
+        terms.append(term)
+        meas += m_r
+    if couples:
+        terms.append(MomentTerm("M", couples, 1.0, 0.0, 0.0, couples))
+        meas += couples
+    l_meas = measure(l / mu_l, arm_step)
+    M_exact = float(reactions.balancing_moment[i])
+    F_exact = M_exact / l
+    F_meas = -meas / (l_meas * mu_l)
+    t = perp((A - O) / l)
+    Fb = reactions.balancing_force[i]
+    R0 = fp.on(d)[i]
+    mu_f = round_scale(max([float(np.hypot(*it.vector)) for it in its] + [abs(F_exact), float(np.hypot(*R0))]),
+                       POLYGON_MM)
+    Fb_read = _read_vector(F_meas * t, mu_f, step)
+    close = -(Fb_read + sum((_read_vector(it.vector_r, mu_f, step) for it in its), np.zeros(2)))
+    R0_read = _read_vector(close, mu_f, step)
+    entries = [("Fур", Fb, True, float(np.hypot(*Fb_read)))]
+    entries += [(it.name, it.vector, True, float(np.hypot(*_read_vector(it.vector_r, mu_f, step)))) for it in its]
+    entries.append((pair_name(0, d), R0, False, float(np.hypot(*R0_read))))
+    read[fp.name] = R0_read if d == fp.hi else -R0_read
+    read_pt[fp.name] = O
+    return CrankGraphic(tuple(terms), l_meas, F_exact, F_meas, F_meas * l,
+                        _polygon(str(d), entries, mu_f, step))
+
+
+def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float, linkage: Linkage) -> LeverGraphic:
+    imgs = [float(np.hypot(*f.image[i])) for f in lever.forces] + [float(np.hypot(*lever.crank_pin_image[i]))]
+    mu_v = round_scale(max(imgs), POLYGON_MM)
+    terms, total = [], 0.0
+    for f in lever.forces:
+        mag = float(np.hypot(*f.vector[i]))
+        arm_mm = float(f.arm[i]) / mu_v
+        meas = math.copysign(measure(abs(arm_mm), arm_step), arm_mm)
+        mom = mag * meas * mu_v
+        terms.append(LeverTerm(f.name, f.source, mag, arm_mm, meas, mom))
+        total += mom
+    direct = tuple((name, float(p[i])) for name, _, p in lever.direct)
+    total += sum(p for _, p in direct)
+    pa = measure(float(np.hypot(*lever.crank_pin_image[i])) / mu_v, arm_step)
+    sgn = 1.0 if lever.omega1 >= 0 else -1.0
+    F = -sgn * total / (pa * mu_v)
+    l = float(np.hypot(*(reactions.balancing_point[i] - next(r for r in reactions.pairs
+                                                              if r.group == str(reactions.crank)).point[i])))
+    return LeverGraphic(mu_v, tuple(terms), direct, pa, F, F * l)
