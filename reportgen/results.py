@@ -65,14 +65,19 @@ def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None, link
 ALL_SECTIONS = ("structure", "kinematics", "kinetostatics", "dynamics", "gears", "planetary")
 
 
-def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS) -> dict:
-    """The results dictionary of the stages asked for (a section the task leaves out is absent)."""
+def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
+                  force_at_deg: float | None = None) -> dict:
+    """The results dictionary of the stages asked for (a section the task leaves out is absent);
+    ``force_at_deg``: the crank angle of the kinetostatics (default: [analysis] force_position)."""
     out: dict[str, Any] = {"format": FORMAT}
     if project.task.mechanism is not None:
         if "structure" in sections:
             out["structure"] = project.structure.to_dict()
         if "kinematics" in sections:
             out["kinematics"] = kinematics_block(project.kinematics, project.strokes)
+        if "kinetostatics" in sections:
+            from .kinetostatics.results import kinetostatics_block, kinetostatics_of
+            out["kinetostatics"] = kinetostatics_block(kinetostatics_of(project, force_at_deg), project)
     if "dynamics" in sections and project.task.mechanism is not None and project.task.dynamics is not None:
         from .dynamics import dynamics_block, dynamics_of
         out["dynamics"] = dynamics_block(dynamics_of(project))

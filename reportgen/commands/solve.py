@@ -39,7 +39,7 @@ def write_atomic(path: str, text: str) -> None:
         raise
 
 
-def summary(project: Project) -> str:
+def summary(project: Project, force_at_deg: float | None = None) -> str:
     lines = []
     if project.task.mechanism is not None:
         s = project.structure
@@ -60,6 +60,12 @@ def summary(project: Project) -> str:
         for i, g, mu in kin.near_singular:
             lines.append(f"  warning: position {i} (φ1 = {math.degrees(kin.phi[i]) % 360:.2f}°) is near a singular "
                          f"position of group {g}: μ = {mu:.2f}°")
+        from ..kinetostatics.results import kinetostatics_of
+        ks = kinetostatics_of(project, force_at_deg)
+        lines.append(f"  kinetostatics at φ1 = {ks.phi_deg:.3f}°: balancing moment {ks.balancing_moment:.6g} N·m "
+                     f"(groups), {ks.balancing_moment_zhukovsky:.6g} N·m (Zhukovsky's lever), discrepancy "
+                     f"{ks.discrepancy_percent:.1e} %; graphical replica {ks.graphical.discrepancy_percent:+.3f} %")
+        lines.extend(f"  warning: {w}" for w in ks.warnings)
         if project.task.dynamics is not None:
             from ..dynamics import dynamics_of
             d = dynamics_of(project)
@@ -71,11 +77,11 @@ def summary(project: Project) -> str:
 def run(args: argparse.Namespace) -> int:
     task = load_task(args.task)
     project = Project(task, at_deg=args.at)
-    results = build_results(project)
+    results = build_results(project, force_at_deg=args.force_at)
     if args.json:
         write_atomic(args.json, dumps(results))
     if not args.quiet:
-        print(summary(project))
+        print(summary(project, args.force_at))
         if args.json:
             print(f"results: {args.json}")
     return 0
