@@ -29,7 +29,7 @@ import numpy as np
 
 from ..linkage import Linkage
 from ..structure import Group, Structure
-from .reactions import PairReaction, Reactions, _Known, _ro, pair_name, perp, solve_group
+from .reactions import Reactions, _cross, _Known, _ro, pair_name, perp, solve_group
 from .zhukovsky import Lever
 
 #: Mantissas of a round scale.
@@ -226,12 +226,12 @@ def _moment_term(name: str, point: np.ndarray, vec: np.ndarray, centre: np.ndarr
                  point_r: np.ndarray | None = None, vec_r: np.ndarray | None = None) -> tuple[MomentTerm, float]:
     """Exact term and the measured moment (with the read vector and point, arm rounded)."""
     mag = float(np.hypot(*vec))
-    mom = float(np.cross(point - centre, vec))
+    mom = float(_cross(point - centre, vec))
     arm = mom / mag if mag > 0 else 0.0
     pr = point if point_r is None else point_r
     vr = vec if vec_r is None else vec_r
     mag_r = float(np.hypot(*vr))
-    mom_r = float(np.cross(pr - centre, vr))
+    mom_r = float(_cross(pr - centre, vr))
     arm_r_mm = (mom_r / mag_r) / mu_l if mag_r > 0 else 0.0
     arm_meas = math.copysign(measure(abs(arm_r_mm), step), arm_r_mm)
     return MomentTerm(name, mag, arm, arm / mu_l, arm_meas, mom), mag_r * arm_meas * mu_l
@@ -295,9 +295,9 @@ def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, ar
             P1 = world(q, k, tuple(linkage.bodies[k].local[pts[0]]))[0]
             P2 = world(q, k, tuple(linkage.bodies[k].local[pts[1]]))[0]
             d = P2 - P1
-            den = float(np.cross(F, d))
+            den = float(_cross(F, d))
             if abs(den) > 1e-12 * mag * float(np.hypot(*d)):
-                t = float(np.cross(P1 - point, d)) / den
+                t = float(_cross(P1 - point, d)) / den
                 swing = _ro(point + t * F)
         m_meas = math.copysign(mag * h_meas * mu_l, M)
         out[k] = InertiaReplacement(k, fs[k].name, ms[k].name, _ro(F), M, _ro(S), h, h_mm, h_meas, _ro(point),
