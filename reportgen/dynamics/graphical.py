@@ -93,6 +93,22 @@ class GraphicalReplica:
     accuracy: float               # estimated drawing accuracy of J_fly, kg·m²
 
 
+def work_scale(mu_M: float, mu_phi: float, H: float) -> float:
+    """μA = μM·μφ·H, J/mm (seed 000: 25·0.032725·60 = 49.088)."""
+    return mu_M * mu_phi * H
+
+
+def tangent_slopes(mu_J: float, mu_E: float, omega_m: float, delta: float) -> tuple[float, float]:
+    """tg ψmax,min = μJ·(1 ± δ)·ω_m² / (2·μE) (seed 000, section 3)."""
+    base = mu_J * omega_m * omega_m / (2.0 * mu_E)
+    return base * (1.0 + delta), base * (1.0 - delta)
+
+
+def flywheel_from_KL(KL_mm: float, mu_E: float, omega_m: float, delta: float) -> float:
+    """J_fly = KL·μE / (ω_m²·δ), kg·m² (seed 000: 102.418·24.544/(18²·0.05) = 155.17)."""
+    return KL_mm * mu_E / (omega_m * omega_m * delta)
+
+
 def _ro(a) -> np.ndarray:
     a = np.array(a, dtype=float)
     a.setflags(write=False)
@@ -124,7 +140,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
         s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - 1e-12))
     H = s["H"]
     a = a_H / H
-    mu_A = mu_M * mu_phi * H
+    mu_A = work_scale(mu_M, mu_phi, H)
     drive = -a[-1] * x / x[-1]
     e_A = a + drive
     if "enlargement" not in s:
@@ -135,8 +151,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     e = e_A * k
     mu_J = s.setdefault("mu_J", nice_ceil(float(J.max()) / layout.j_width))
     jx = J / mu_J
-    t_max = mu_J * (1 + delta) * wm * wm / (2 * mu_E)
-    t_min = mu_J * (1 - delta) * wm * wm / (2 * mu_E)
+    t_max, t_min = tangent_slopes(mu_J, mu_E, wm, delta)
     up, lo = e - jx * t_max, e - jx * t_min
     iK, iL = int(np.argmax(up)), int(np.argmin(lo))
     KL = float(up[iK] - lo[iL])
@@ -144,7 +159,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
                 psi_max_deg=math.degrees(math.atan(t_max)), psi_min_deg=math.degrees(math.atan(t_min)),
                 theta=theta, x=x, M_mm=M / mu_M, mid_x=mid / mu_phi, mid_mm=y_mid, a_mm=a, drive_mm=drive,
                 e_mm=e, j_mm=jx, K_mm=float(up[iK]), L_mm=float(lo[iL]), KL_mm=KL, index_K=iK, index_L=iL,
-                J_fly=KL * mu_E / (wm * wm * delta), scales=s)
+                J_fly=flywheel_from_KL(KL, mu_E, wm, delta), scales=s)
 
 
 def graphical_replica(cycle: Cycle, delta: float, positions: int = 12,
