@@ -1,0 +1,201 @@
+"""Figures of section 4: the blocking contour, the meshing picture, the specific sliding graph
+(subsection 4.1) and the planetary scheme with the velocity triangle and the angular-velocity plan
+(subsection 4.2). Each function takes solver objects and returns a matplotlib figure."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import comma, comma_axes, new_figure
+
+#: Russian names of the contour lines (legend), in drawing order.
+CONTOUR_NAMES = {
+    "undercut1": "подрезание шестерни",
+    "undercut2": "подрезание колеса",
+    "sharpening1": "заострение шестерни",
+    "sharpening2": "заострение колеса",
+    "contact_ratio": "граница по $\\varepsilon_\\alpha$",
+    "eps_1": "$\\varepsilon_\\alpha = 1$",
+    "interference1": "интерференция у шестерни",
+    "interference2": "интерференция у колеса",
+    "equal_sliding": "$\\lambda_1(a) = \\lambda_2(b)$",
+}
+_STYLES = {
+    "undercut1": dict(color="C0", ls="-"), "undercut2": dict(color="C0", ls="--"),
+    "sharpening1": dict(color="C3", ls="-"), "sharpening2": dict(color="C3", ls="--"),
+    "contact_ratio": dict(color="C2", ls="-"), "eps_1": dict(color="C2", ls=":"),
+    "interference1": dict(color="C4", ls="-"), "interference2": dict(color="C4", ls="--"),
+    "equal_sliding": dict(color="k", ls="-.", lw=1.0),
+}
+
+
+def blocking_contour_figure(pair):
+    """The computed blocking contour of the pair with the chosen point (x1, x2)."""
+    choice = pair.shift_choice
+    bc = choice.contour
+    fig = new_figure(16, 12)
+    ax = fig.add_subplot(111)
+    X1, X2 = np.meshgrid(bc.x1, bc.x2, indexing="ij")
+    ax.contourf(X1, X2, bc.feasible.astype(float), levels=[0.5, 1.5], colors=["#dfe9f5"])
+    for name, label in CONTOUR_NAMES.items():
+        lines = bc.curves.get(name, ())
+        for i, ln in enumerate(lines):
+            ax.plot(ln[:, 0], ln[:, 1], label=label if i == 0 else None, **_STYLES[name])
+    ax.plot([choice.x1], [choice.x2], "o", color="k", ms=5, zorder=5)
+    ax.annotate(f"$x_1 = {comma(choice.x1)}$\n$x_2 = {comma(choice.x2)}$", (choice.x1, choice.x2),
+                xytext=(8, 8), textcoords="offset points", fontsize=9,
+                bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.6", lw=0.5))
+    ax.set_xlim(float(bc.x1[0]), float(bc.x1[-1]))
+    ax.set_ylim(float(bc.x2[0]), float(bc.x2[-1]))
+    ax.set_xlabel("$x_1$")
+    ax.set_ylabel("$x_2$")
+    comma_axes(ax)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=3, fontsize=8, frameon=False)
+    return fig
+
+
+def meshing_figure(pair, pic):
+    """The meshing picture around the pole: teeth (bold), circles (thin), N1N2, ab, P, the zones
+    of double and single contact, and a 10 mm scale bar (the figure is not to scale)."""
+    g = pair.geometry
+    fig = new_figure(16, 13)
+    ax = fig.add_subplot(111)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    x0, y0, x1, y1 = pic.view
+    pad = 0.6 * g.m
+    ax.set_xlim(x0 - pad, x1 + pad)
+    ax.set_ylim(y0 - pad, y1 + pad)
+    styles = {"pitch": dict(ls="-.", lw=0.5, color="0.25"), "base": dict(ls="-", lw=0.5, color="0.25"),
+              "working": dict(ls="--", lw=0.5, color="0.25"), "tip": dict(ls="-", lw=0.5, color="0.25"),
+              "root": dict(ls="-", lw=0.5, color="0.25")}
+    t = np.linspace(0, 2 * math.pi, 1441)
+    for c in pic.circles:
+        ax.plot(c.centre[0] + c.radius * np.cos(t), c.centre[1] + c.radius * np.sin(t), **styles[c.kind])
+    for tooth in pic.teeth1 + pic.teeth2:
+        ax.plot(tooth[:, 0], tooth[:, 1], color="k", lw=1.4)
+    n1, n2 = pic.points["N1"], pic.points["N2"]
+    ax.plot([n1[0], n2[0]], [n1[1], n2[1]], color="k", lw=0.8)
+    (tx0, ty0), (tx1, ty1) = pic.segments["tangent"]
+    ax.plot([tx0, tx1], [ty0, ty1], color="0.35", lw=0.5)
+    ax.plot([0, 0], [y0 - pad, y1 + pad], color="0.25", lw=0.5, ls="-.")
+    zone_colors = {2: "#1f77b4", 1: "#d62728", 0: "#999999"}
+    for z in pic.zones:
+        if z.pairs == 0:
+            continue
+        ax.plot([z.start[0], z.end[0]], [z.start[1], z.end[1]], color=zone_colors[z.pairs], lw=4,
+                solid_capstyle="butt", alpha=0.55, zorder=3)
+    for name in ("N1", "N2", "P", "a", "b"):
+        px, py = pic.points[name]
+        ax.plot([px], [py], "o", color="k", ms=2.5, zorder=4)
+        text = {"N1": "$N_1$", "N2": "$N_2$", "P": "$P$", "a": "$a$", "b": "$b$"}[name]
+        dx, dy = {"N1": (-10, -4), "N2": (4, -10), "P": (5, -11), "a": (-11, 3), "b": (4, 3)}[name]
+        ax.annotate(text, (px, py), xytext=(dx, dy), textcoords="offset points", fontsize=11,
+                    bbox=dict(boxstyle="square,pad=0.05", fc="white", ec="none", alpha=0.8), zorder=6)
+    # 10 mm scale bar, lower left
+    bar = 10.0 if g.m < 8 else 20.0
+    bx, by = x0 + 0.3 * g.m, y0 + 0.2 * g.m
+    ax.plot([bx, bx + bar], [by, by], color="k", lw=1.2)
+    for xx in (bx, bx + bar):
+        ax.plot([xx, xx], [by - 0.15 * g.m, by + 0.15 * g.m], color="k", lw=1.0)
+    ax.text(bx + bar / 2, by + 0.3 * g.m, f"{bar:g} мм", ha="center", va="bottom", fontsize=9)
+    from matplotlib.lines import Line2D
+    handles = [Line2D([], [], color=zone_colors[2], lw=4, alpha=0.55, label="зона двухпарного зацепления"),
+               Line2D([], [], color=zone_colors[1], lw=4, alpha=0.55, label="зона однопарного зацепления"),
+               Line2D([], [], color="0.25", lw=0.5, ls="-.", label="делительные окружности"),
+               Line2D([], [], color="0.25", lw=0.5, ls="--", label="начальные окружности")]
+    ax.legend(handles=handles, loc="upper left", fontsize=8, frameon=True, framealpha=0.9)
+    return fig
+
+
+def sliding_figure(pair):
+    """λ1 and λ2 along N1N2 with the working section ab and the pole marked."""
+    sl = pair.sliding
+    g = pair.geometry
+    rho, l1, l2 = sl.curve(401, clip=0.005)
+    fig = new_figure(16, 9)
+    ax = fig.add_subplot(111)
+    ax.plot(rho, l1, color="C0", label="$\\lambda_1$ (шестерня)")
+    ax.plot(rho, l2, color="C3", label="$\\lambda_2$ (колесо)")
+    lo = min(-4.0, 1.3 * min(sl.lambda1_a, sl.lambda2_b))
+    ax.set_ylim(lo, 1.5)
+    ax.set_xlim(0, sl.g)
+    ax.axhline(0, color="k", lw=0.6)
+    ax.axhline(1, color="0.4", lw=0.5, ls=":")
+    for name, x in (("$a$", g.n1a), ("$P$", g.n1p), ("$b$", g.n1b)):
+        ax.axvline(x, color="0.3", lw=0.6, ls="--")
+        ax.text(x, 1.52, name, ha="center", va="bottom", fontsize=10)
+    ax.axvspan(g.n1a, g.n1b, color="#dfe9f5", zorder=0)
+    rows = [r for r in sl.rows if math.isfinite(r.lambda1) and math.isfinite(r.lambda2)]
+    ax.plot([r.rho for r in rows], [r.lambda1 for r in rows], "o", color="C0", ms=3)
+    ax.plot([r.rho for r in rows], [r.lambda2 for r in rows], "s", color="C3", ms=3)
+    ax.set_xlabel("$\\rho = N_1K$, мм")
+    ax.set_ylabel("$\\lambda$")
+    comma_axes(ax)
+    ax.legend(loc="lower center", fontsize=9)
+    return fig
+
+
+# ------------------------------------------------------------------------------- planetary
+def planetary_figure(stage):
+    """The reducer's kinematic scheme (half view, as on sheet 4), Kutzbach's velocity triangle
+    beside it at the same heights, and the angular-velocity plan."""
+    from drawings.scenes.planetary import side_scheme
+    tri = stage.triangle
+    scene = side_scheme(stage.design, tri.length_scale)
+    fig = new_figure(16, 11)
+    ax_s = fig.add_axes([0.02, 0.08, 0.40, 0.86])
+    ax_v = fig.add_axes([0.44, 0.08, 0.30, 0.86], sharey=ax_s)
+    ax_p = fig.add_axes([0.78, 0.30, 0.21, 0.5])
+    _draw_scene(ax_s, scene)
+    ax_s.set_aspect("equal")
+    ax_s.axis("off")
+    # velocity triangle
+    pts = dict(tri.points)
+    for lab in ("A", "B", "C"):
+        y = pts[lab][1]
+        ax_v.plot([0, max(tri.vector_mm, 0) * 1.05], [y, y], color="0.6", lw=0.4, ls=":")
+    ax_v.axvline(0, color="k", lw=0.6)
+    seg_names = {"1": "1", "2": "2", "H": "H"}
+    for seg in tri.lines:
+        ax_v.plot([seg.start[0], seg.end[0]], [seg.start[1], seg.end[1]], color="k", lw=0.9)
+        mx, my = (seg.start[0] + 2 * seg.end[0]) / 3, (seg.start[1] + 2 * seg.end[1]) / 3
+        ax_v.text(mx, my, seg_names[seg.label], fontsize=9, ha="right", va="bottom")
+    a, b = pts["a"], pts["b"]
+    ax_v.annotate("", xy=a, xytext=(0, a[1]), arrowprops=dict(arrowstyle="-|>", lw=1.2, color="C3"))
+    ax_v.annotate("", xy=b, xytext=(0, b[1]), arrowprops=dict(arrowstyle="-|>", lw=1.2, color="C0"))
+    ax_v.text(a[0], a[1], "  $v_A$", va="center", fontsize=10)
+    ax_v.text(b[0], b[1], "  $v_B$", va="center", fontsize=10)
+    for lab in ("A", "B", "C"):
+        ax_v.text(-2, pts[lab][1], f"${lab}$", ha="right", va="bottom", fontsize=10)
+    ax_v.set_xlim(-12, tri.vector_mm * 1.25)
+    ax_v.set_aspect("equal")
+    ax_v.axis("off")
+    # angular-velocity plan
+    plan = tri.plan
+    ax_p.plot([min(0, *[c[1] for c in plan.cuts]) - 5, max(c[1] for c in plan.cuts) + 5],
+              [plan.h_mm, plan.h_mm], color="k", lw=0.6)
+    for ray, (lab, x) in zip(plan.rays, plan.cuts):
+        ax_p.plot([ray.start[0], ray.end[0]], [ray.start[1], ray.end[1]], color="k", lw=0.8)
+        ax_p.text(x, plan.h_mm * 1.04, f"${lab}$", ha="center", va="bottom", fontsize=9)
+    ax_p.plot([0], [0], "o", color="k", ms=3)
+    ax_p.text(0, -plan.h_mm * 0.06, "$p$", ha="center", va="top", fontsize=10)
+    ax_p.set_aspect("equal")
+    ax_p.axis("off")
+    return fig
+
+
+def _draw_scene(ax, scene) -> None:
+    """Draw a :class:`drawings.scenes.planetary.Scene` (mm) with matplotlib."""
+    widths = {"contour": 1.4, "thin": 0.5, "axis": 0.5, "hidden": 0.5}
+    dashes = {"axis": "-.", "hidden": "--"}
+    for line in scene.lines:
+        xs, ys = zip(*line.points)
+        ax.plot(xs, ys, color="k", lw=widths.get(line.layer, 0.8), ls=dashes.get(line.layer, "-"))
+    for hatch in scene.hatches:
+        (x0, y0), (x1, y1) = hatch
+        ax.plot([x0, x1], [y0, y1], color="k", lw=0.5)
+    for lab in scene.labels:
+        ax.text(lab.point[0], lab.point[1], lab.text, fontsize=9, ha="center", va="center",
+                bbox=dict(boxstyle="square,pad=0.05", fc="white", ec="none"))
