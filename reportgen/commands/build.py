@@ -81,11 +81,12 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
         if sheets:
             _sheets(project, tmp, progress)
         (tmp / "results.json").write_text(dumps(results), encoding="utf-8")
-    except BuildError:
+    except BuildError as exc:
         failed = out.with_name(out.name + ".failed")
         shutil.rmtree(failed, ignore_errors=True)
         tmp.rename(failed)
-        raise
+        kept = (exc.kept or "").replace(str(tmp), str(failed)) or str(failed)
+        raise BuildError(exc.stage, exc.problem.replace(str(tmp), str(failed)), kept) from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise

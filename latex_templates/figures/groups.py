@@ -1,0 +1,56 @@
+"""An Assur group drawn on its own: its links bold, the pairs by which it attaches drawn as free
+elements (hinges or slider guides) with the letters of the points."""
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.patches import Circle, Polygon
+
+from .mechanism import world_points, size_of
+
+
+def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
+    from . import new_figure
+    pts = world_points(linkage, q)
+    names = sorted({p for k in group.links for p in linkage.bodies[k].points})
+    xy = np.array([pts[n] for n in names])
+    L = max(float(np.ptp(xy[:, 0])), float(np.ptp(xy[:, 1])), 1e-9)
+    span = np.ptp(xy, axis=0) + 1e-9
+    h_cm = min(7.0, max(3.5, w_cm * span[1] / span[0] + 1.0))
+    fig = new_figure(w_cm, h_cm)
+    ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
+    r = 0.025 * L
+    for k in group.links:
+        b = linkage.bodies[k]
+        p = np.array([pts[n] for n in b.points])
+        if len(b.points) == 3:
+            ax.add_patch(Polygon(p, closed=True, facecolor="0.9", edgecolor="black", lw=1.5))
+        elif len(b.points) == 2:
+            ax.plot(p[:, 0], p[:, 1], "k-", lw=1.6)
+        c = p.mean(axis=0)
+        ax.text(c[0], c[1] + 0.06 * L, str(k), fontsize=9, ha="center",
+                bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec="black", lw=0.5))
+    for pr in group.pairs:
+        if pr.kind == "R":
+            p = pts[pr.point]
+            ax.add_patch(Circle(p, r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
+            ax.text(p[0] + 1.8 * r, p[1] + 1.8 * r, pr.point, fontsize=10, style="italic")
+        else:
+            s = linkage.slides[pr.slide]
+            p = pts[s.point]
+            ang = q[s.guide, 2] if s.guide else 0.0
+            d = np.array([np.cos(ang) * s.line_dir[0] - np.sin(ang) * s.line_dir[1],
+                          np.sin(ang) * s.line_dir[0] + np.cos(ang) * s.line_dir[1]])
+            n = np.array([-d[1], d[0]])
+            w, h = 0.12 * L, 0.06 * L
+            corners = np.array([p - d * w / 2 - n * h / 2, p + d * w / 2 - n * h / 2,
+                                p + d * w / 2 + n * h / 2, p - d * w / 2 + n * h / 2])
+            ax.add_patch(Polygon(corners, closed=True, facecolor="white", edgecolor="black", lw=1.2, zorder=4))
+            g0, g1 = p - d * 0.2 * L - n * h / 2, p + d * 0.2 * L - n * h / 2
+            ax.plot([g0[0], g1[0]], [g0[1], g1[1]], "k-", lw=0.8)
+            ax.text(p[0] + 1.8 * r, p[1] + h, s.point, fontsize=10, style="italic")
+    pad = 0.15 * L
+    ax.set_xlim(xy[:, 0].min() - pad, xy[:, 0].max() + pad)
+    ax.set_ylim(xy[:, 1].min() - pad, xy[:, 1].max() + pad)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    return fig

@@ -1,0 +1,240 @@
+"""Part «Кинематический анализ»: plan of positions, extreme positions, velocity and acceleration
+plans of the analysed position with every component, tables over all positions, s–v–a diagrams by
+graphical differentiation compared with the exact curves, transmission angles."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from markupsafe import Markup
+
+from reportgen.calc import Var, record
+from reportgen.diagrams import build_diagrams
+from reportgen.plans import MEASURE_MM, build_plans, round_scale
+
+from . import PartContent
+
+NEEDS = ("structure", "kinematics")
+
+
+def available(project) -> bool:
+    return project.task.mechanism is not None
+
+
+def detail_position(project) -> int:
+    """The position analysed in detail: [analysis] force_position (an index), else 2 (or the last)."""
+    fp = project.task.analysis.force_position
+    n = len(project.phi)
+    if isinstance(fp, int) and not isinstance(fp, bool):
+        return min(max(fp, 0), n - 1)
+    return min(2, n - 1)
+
+
+def _len(body, p: str, q: str) -> float:
+    return math.dist(body.local[p], body.local[q])
+
+
+def _plan_rows(plan, with_exact=True):
+    rows = []
+    for c in plan.components:
+        rows.append({"name": c.name, "dir": c.direction, "mm": plan.measured_mm(c), "read": plan.read_value(c),
+                     "exact": c.value, "dev": 100 * plan.deviation(c), "start": c.start, "end": c.end})
+    return rows
+
+
+def content(project) -> PartContent:
+    from ..figures.plans import diagrams_figure, plan_figure, positions_figure
+
+    lk, st, kin = project.linkage, project.structure, project.kinematics
+    i = detail_position(project)
+    d = lk.drive_link
+    axis, tip = lk.drive_axis, lk.drive_tip
+    crank = lk.bodies[d]
+    l_crank = _len(crank, axis, tip)
+    w1 = abs(lk.omega)
+    vplan, aplan = build_plans(lk, st, kin, i)
+    figures = {}
+    # --- plan of positions ----------------------------------------------------------------------
+    pts = np.concatenate([np.asarray(m.pos) for m in kin.points.values()])
+    extent = float(max(np.ptp(pts[:, 0]), np.ptp(pts[:, 1])))
+    mu_l_val = round_scale(extent, 200.0)
+    mu_l = Var("mu_l", r"\mu_l", mu_l_val, "м/мм", "масштабный коэффициент плана положений")
+    l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", f"длина кривошипа {axis}{tip}")
+    OA_mm = record(f"{axis}{tip}", "l_OA / mu_l", "мм", l_oa, mu_l, meaning=f"отрезок {axis}{tip} на чертеже")
+    dense = np.linspace(0, 2 * math.pi, 121)
+    dk = project.model.solve(dense)
+    traces = {f"S{k}": np.asarray(dk.coms[k].pos) for k in lk.moving if lk.bodies[k].mass > 0}
+    traces[tip] = np.asarray(dk.points[tip].pos)
+    figures["kin_positions"] = positions_figure(lk, np.asarray(kin.q), (0, i) if i != 0 else (0,), traces)
+    strokes = project.strokes
+    stroke_ctx = None
+    if strokes is not None:
+        wk = Var("phi_w", r"\varphi_\text{р.х}", strokes.working_deg, "°", "угол рабочего хода")
+        ik = Var("phi_i", r"\varphi_\text{х.х}", strokes.idle_deg, "°", "угол холостого хода")
+        K = record("K", "phi_w / phi_i", "", wk, ik, meaning="коэффициент изменения средней скорости")
+        stroke_ctx = {"K": K, "working": strokes.working_deg, "idle": strokes.idle_deg, "H": strokes.stroke,
+                      "kind": strokes.output.kind, "link": strokes.output.link, "point": strokes.output.point,
+                      "start": math.degrees(strokes.phi_start) % 360, "end": math.degrees(strokes.phi_end) % 360}
+    # positions table
+    from reportgen.kinematics.extremes import output_coordinate
+    out_rows = []
+    if strokes is not None:
+        x = output_coordinate(project.model, strokes.output, np.asarray(kin.q))
+        q0, _ = project.model.positions(np.array([strokes.phi_start]))
+        x0 = output_coordinate(project.model, strokes.output, q0)[0]
+        s_out = (x - x0) * strokes.direction
+    else:
+        s_out = np.zeros(len(kin.phi))
+    for j, ph in enumerate(kin.phi):
+        out_rows.append([j, math.degrees(ph) % 360, float(s_out[j])] +
+                        [float(kin.transmission_deg[g.key][j]) for g in st.groups[1:]])
+    # --- velocities -----------------------------------------------------------------------------
+    omega1 = Var("omega1", r"\omega_1", w1, "рад/с", "угловая скорость кривошипа")
+    VA = record(f"V_{{{tip}}}", "omega1 * l_OA", "м/с", omega1, l_oa, meaning=f"скорость точки {tip}")
+    pa_mm = VA.value / vplan.scale
+    pa = Var("pa", f"p{tip.lower()}", pa_mm, "мм", f"вектор скорости точки {tip} на плане")
+    mu_v = record(r"\mu_v", "V_A / pa", "(м/с)/мм", pa, V_A=VA, meaning="масштабный коэффициент плана скоростей")
+    vrows = _plan_rows(vplan)
+    omega_recs = []
+    eps_recs = []
+    an_recs = []
+    cor_recs = []
+    for g in st.groups[1:]:
+        if g.group_class != 2:
+            continue
+        inner = next(p for p in g.pairs if not p.external)
+        for k in g.links:
+            ext = next(p for p in g.pairs if p.external and k in p.bodies)
+            body = lk.bodies[k]
+            if g.kind in ("RRR", "RRP") and ext.kind == "R" and inner.kind == "R":
+                Q, P = inner.point, ext.point
+                l = _len(body, P, Q)
+                comp = vplan.component(f"V_{{{Q}{P}}}")
+                seg = Var("seg", f"{P.lower()}{Q.lower()}".replace("", "") if False else f"{comp.start}{comp.end}",
+                          vplan.measured_mm(comp), "мм", Markup(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
+                lv = Var("l", f"l_{{{P}{Q}}}", l, "м", f"длина звена {P}{Q}")
+                wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
+                              meaning=f"угловая скорость звена {k}")
+                omega_recs.append({"link": k, "rec": wrec, "exact": float(kin.links[k].omega[i]),
+                                   "sense": "против" if kin.links[k].omega[i] > 0 else "по"})
+                w_exact = Var("w", rf"\omega_{{{k}}}", abs(float(kin.links[k].omega[i])), "рад/с")
+                an = record(f"a^n_{{{Q}{P}}}", "w**2 * l", "м/с²", w_exact, lv)
+                an_recs.append({"rec": an, "mm": an.value / aplan.scale})
+                comp_t = aplan.component(f"a^{{\\tau}}_{{{Q}{P}}}")
+                segt = Var("segt", f"n_{{{Q}{P}}}{Q.lower()}", aplan.measured_mm(comp_t), "мм",
+                           Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{Q}{P}}}$"))
+                erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
+                              mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
+                              meaning=f"угловое ускорение звена {k}")
+                eps_recs.append({"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
+                                 "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"})
+            elif g.kind == "RPR":
+                s = lk.slides[inner.slide]
+                if k != s.guide:
+                    continue
+                H = next(p for p in g.pairs if p.external and s.link in p.bodies).point
+                G = ext.point
+                Hg = f"{H}_{{{k}}}"
+                comp = vplan.component(f"V_{{{Hg}{G}}}")
+                gh = float(np.hypot(*(np.asarray(kin.points[H].pos[i]) - np.asarray(kin.points[G].pos[i]))))
+                seg = Var("seg", f"{comp.start}{comp.end}", vplan.measured_mm(comp), "мм",
+                          Markup(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
+                lv = Var("l", f"l_{{{G}{H}}}", gh, "м", f"расстояние {G}{H} в данном положении")
+                wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
+                              meaning=f"угловая скорость звена {k}")
+                omega_recs.append({"link": k, "rec": wrec, "exact": float(kin.links[k].omega[i]),
+                                   "sense": "против" if kin.links[k].omega[i] > 0 else "по"})
+                vrel = vplan.component(f"V_{{{Hg}{H}}}")
+                w_exact = Var("w", rf"\omega_{{{k}}}", abs(float(kin.links[k].omega[i])), "рад/с")
+                vr = Var("vr", f"V_{{{Hg}{H}}}", vrel.value, "м/с", "скорость скольжения камня по кулисе")
+                cor = record(f"a^k_{{{Hg}{H}}}", "2 * w * vr", "м/с²", w_exact, vr,
+                             meaning="ускорение Кориолиса")
+                cor_recs.append({"rec": cor, "mm": cor.value / aplan.scale})
+                an = record(f"a^n_{{{Hg}{G}}}", "w**2 * l", "м/с²", w_exact, lv)
+                an_recs.append({"rec": an, "mm": an.value / aplan.scale})
+                comp_t = aplan.component(f"a^{{\\tau}}_{{{Hg}{G}}}")
+                segt = Var("segt", f"n{comp_t.end}", aplan.measured_mm(comp_t), "мм",
+                           Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{Hg}{G}}}$"))
+                erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
+                              mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
+                              meaning=f"угловое ускорение звена {k}")
+                eps_recs.append({"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
+                                 "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"})
+    # centres of mass from the plans (by similarity)
+    com_rows = []
+    for k in lk.moving:
+        if k == d:
+            continue
+        vs = np.asarray(kin.coms[k].vel[i])
+        as_ = np.asarray(kin.coms[k].acc[i])
+        mm_v = round(float(np.hypot(*vs)) / vplan.scale / MEASURE_MM) * MEASURE_MM
+        mm_a = round(float(np.hypot(*as_)) / aplan.scale / MEASURE_MM) * MEASURE_MM
+        com_rows.append([k, mm_v, mm_v * vplan.scale, float(np.hypot(*vs)), mm_a, mm_a * aplan.scale,
+                         float(np.hypot(*as_))])
+    # --- accelerations --------------------------------------------------------------------------
+    aA = record(f"a_{{{tip}}}", "omega1**2 * l_OA", "м/с²", omega1, l_oa, meaning=f"ускорение точки {tip}")
+    pia = Var("pia", f"\\pi {tip.lower()}", aA.value / aplan.scale, "мм", f"вектор ускорения точки {tip} на плане")
+    mu_a = record(r"\mu_a", "a_A / pia", "(м/с²)/мм", pia, a_A=aA, meaning="масштабный коэффициент плана ускорений")
+    arows = _plan_rows(aplan)
+    # --- tables over all positions ---------------------------------------------------------------
+    moving = [k for k in lk.moving if k != d]
+    vtab, atab = [], []
+    for j in range(len(kin.phi)):
+        vtab.append([j, math.degrees(kin.phi[j]) % 360] +
+                    [float(np.hypot(*np.asarray(kin.coms[k].vel[j]))) for k in moving] +
+                    [float(kin.links[k].omega[j]) for k in moving if not _translates(lk, k)])
+        atab.append([j, math.degrees(kin.phi[j]) % 360] +
+                    [float(np.hypot(*np.asarray(kin.coms[k].acc[j]))) for k in moving] +
+                    [float(kin.links[k].epsilon[j]) for k in moving if not _translates(lk, k)])
+    rot_links = [k for k in moving if not _translates(lk, k)]
+    # --- diagrams ------------------------------------------------------------------------------
+    diag = None
+    if strokes is not None:
+        dg = build_diagrams(project.model, strokes, float(project.phi[0]), n=24)
+        figures["kin_diagrams"] = diagrams_figure(dg)
+        L = Var("L", "L", dg.axis_mm, "мм", Markup("длина оси $\\varphi_1$, изображающая один оборот кривошипа"))
+        mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
+        mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning="масштабный коэффициент времени")
+        H1 = Var("H1", "H_1", dg.H1, "мм", "полюсное расстояние графика скорости")
+        H2 = Var("H2", "H_2", dg.H2, "мм", "полюсное расстояние графика ускорения")
+        unit_s = "м/мм" if dg.unit == "м" else "рад/мм"
+        mu_s = Var("mu_s", r"\mu_s", dg.mu_s, unit_s, "масштабный коэффициент графика перемещений")
+        mu_vd = record(r"\mu_{v}", "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
+                       mu_s, H1, mu_t=mu_t, meaning="масштабный коэффициент графика скорости")
+        mu_ad = record(r"\mu_{a}", "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
+                       H2, mu_v=mu_vd, mu_t=mu_t, meaning="масштабный коэффициент графика ускорения")
+        diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "n": dg.n,
+                "dev_v": 100 * dg.v_deviation, "dev_a": 100 * dg.a_deviation, "unit": dg.unit,
+                "vmax": float(np.abs(dg.v).max()), "amax": float(np.abs(dg.a).max())}
+    figures["kin_vplan"] = plan_figure(vplan)
+    figures["kin_aplan"] = plan_figure(aplan)
+    trans = [{"key": g.key, "label": g.label, "min": float(np.min(kin.transmission_deg[g.key])),
+              "at": int(np.argmin(kin.transmission_deg[g.key]))} for g in st.groups[1:]]
+    # minimal transmission angle over the whole turn
+    dense_trans = {g.key: float(np.min(dk.transmission_deg[g.key])) for g in st.groups[1:]}
+    ctx = {
+        "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi),
+        "mu_l": mu_l, "OA_mm": OA_mm, "strokes": stroke_ctx, "out_rows": out_rows,
+        "groups": [g.label for g in st.groups[1:]],
+        "VA": VA, "mu_v": mu_v, "vplan": vplan, "vrows": vrows, "omega": omega_recs,
+        "aA": aA, "mu_a": mu_a, "aplan": aplan, "arows": arows, "an": an_recs, "cor": cor_recs, "eps": eps_recs,
+        "com_rows": com_rows, "moving": moving, "rot_links": rot_links, "vtab": vtab, "atab": atab,
+        "diag": diag, "trans": trans, "dense_trans": dense_trans,
+        "near": [{"pos": j, "group": g, "mu": mu} for j, g, mu in kin.near_singular],
+        "tip": tip, "axis": axis, "equations_v": vplan.equations, "equations_a": aplan.equations,
+        "max_dev_v": max((abs(r["dev"]) for r in vrows), default=0.0),
+        "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0),
+    }
+    concl = []
+    if stroke_ctx:
+        from ..numbers import num
+        from ..render import Strings
+        strings = Strings(project.task.document.language or "ru")
+        concl.append(strings.get("findings.strokes").format(
+            work=Markup(num(strokes.working_deg)), idle=Markup(num(strokes.idle_deg)),
+            K=Markup(num(stroke_ctx["K"].value))))
+    return PartContent("sections/kinematics.tex.j2", ctx, figures, tuple(concl))
+
+
+def _translates(lk, k: int) -> bool:
+    return any(s.link == k and s.guide == 0 for s in lk.slides)
