@@ -33,6 +33,7 @@ venv: $(VENV)/.installed
 # The example note and sheets of the press mechanism.
 demo: system venv
 	$(VENV)/bin/reportgen build examples/press/task.toml -o $(DEMO_OUT)
+	@echo "open $(DEMO_OUT)/report.pdf and $(DEMO_OUT)/sheets/*.dxf (previews: *.png)"
 
 # The whole test suite (what CI runs).
 test: system venv
