@@ -1,0 +1,183 @@
+"""Sheet 1, the kinematic diagrams of the output: s(φ), v(φ), a(φ) one above the other, the φ axis
+divided into the n intervals of :func:`reportgen.diagrams.build_diagrams`, the chords of s, the
+steps of each replica and the curve through them, the rays from the poles P1, P2 at H1, H2, the
+exact curves thin, and the scales."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from drawings.primitives import format_number, format_significant
+from drawings.sheet import Sheet, View
+from drawings.scenes import kinematics_labels as rl
+from reportgen.diagrams import Diagrams
+
+#: Space above a diagram's largest ordinate (title, dimensions) and between diagrams, mm.
+TOP_MM = 26.0
+GAP_MM = 8.0
+RIGHT_MM = 28.0
+
+
+@dataclass(frozen=True)
+class Names:
+    s: str
+    v: str
+    a: str
+    mu_s: str
+    mu_v: str
+    mu_a: str
+
+
+def names(d: Diagrams) -> Names:
+    if d.unit == "м":
+        return Names("S, м", "V, м/с", "a, м/с²", "м/мм", "(м/с)/мм", "(м/с²)/мм")
+    return Names("ψ, рад", "ω, рад/с", "ε, рад/с²", "рад/мм", "(рад/с)/мм", "(рад/с²)/мм")
+
+
+def _x_nodes(d: Diagrams) -> np.ndarray:
+    return np.asarray(d.nodes) / d.mu_phi
+
+
+def _dense_x(d: Diagrams) -> np.ndarray:
+    return np.asarray(d.dense_offset) / d.mu_phi
+
+
+def _v_steps(d: Diagrams) -> list[tuple[float, float, float]]:
+    """(x0, x1, y) of the velocity steps: over each interval."""
+    x = _x_nodes(d)
+    return [(float(x[i]), float(x[i + 1]), float(d.v_chord_mm[i])) for i in range(d.n)]
+
+
+def _a_steps(d: Diagrams) -> list[tuple[float, float, float]]:
+    """(x0, x1, y) of the acceleration steps: between the middles of the velocity steps; the last
+    one wraps round to the start of the axis (the motion is periodic)."""
+    x = _x_nodes(d)
+    dx = d.axis_mm / d.n
+    out = []
+    for j in range(d.n):
+        x0, x1 = float(x[j] + dx / 2), float(x[j] + 3 * dx / 2)
+        if x1 <= d.axis_mm + 1e-9:
+            out.append((x0, x1, float(d.a_chord_mm[j])))
+        else:
+            out.append((x0, d.axis_mm, float(d.a_chord_mm[j])))
+            out.append((0.0, x1 - d.axis_mm, float(d.a_chord_mm[j])))
+    return out
+
+
+def _ranges(d: Diagrams) -> list[tuple[float, float]]:
+    """(up, down) ordinates in mm of the three diagrams (both ≥ 0)."""
+    s = np.concatenate([np.asarray(d.s) / d.mu_s, d.s_nodes_mm])
+    v = np.concatenate([np.asarray(d.v) / d.mu_v, d.v_chord_mm])
+    a = np.concatenate([np.asarray(d.a) / d.mu_a, d.a_chord_mm])
+    return [(max(float(arr.max()), 10.0) + 4.0, max(-float(arr.min()), 0.0) + 4.0) for arr in (s, v, a)]
+
+
+def size(d: Diagrams) -> tuple[float, float]:
+    left = max(d.H1, d.H2) + 22.0
+    w = left + d.axis_mm + RIGHT_MM + 6.0
+    h = sum(up + down + TOP_MM + GAP_MM for up, down in _ranges(d)) + 6.0
+    return w, h
+
+
+def add_diagrams_view(sheet: Sheet, d: Diagrams, positions: int, working_deg: float, preferred: str) -> View:
+    w, h = size(d)
+    view = sheet.add_view("diagrams", w, h, preferred=preferred)
+    draw_diagrams(view, d, positions, working_deg)
+    return view
+
+
+def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -> None:
+    nm = names(d)
+    left = max(d.H1, d.H2) + 22.0
+    ranges = _ranges(d)
+    x0 = left                                  # view coordinates: mm from its lower-left corner
+    top = view.rect.height - 2.0
+    origins = []
+    for up, down in ranges:
+        oy = top - TOP_MM - up
+        origins.append((x0, oy))
+        top = oy - down - GAP_MM
+    xs = _x_nodes(d)
+    dense_x = _dense_x(d)
+    step = max(d.n // positions, 1) if d.n % positions == 0 else 0
+    # ---- s(φ)
+    o = origins[0]
+    _axes(view, o, d, ranges[0], nm.s, numbered=step, positions=positions)
+    view.curve(o[0] + dense_x, o[1] + np.asarray(d.s) / d.mu_s, "thin")
+    view.polyline([(o[0] + x, o[1] + y) for x, y in zip(xs, d.s_nodes_mm)], "contour")
+    for x, y in zip(xs, d.s_nodes_mm):
+        view.circle_mm((o[0] + x, o[1] + y), 0.7, "contour")
+    xw = working_deg / 360.0 * d.axis_mm
+    ytop = o[1] + ranges[0][0] + 3.0
+    view.line((o[0] + xw, o[1]), (o[0] + xw, ytop + 4.0), "axis")
+    view.dimension((o[0], ytop), (o[0] + xw, ytop), offset_mm=4.0, text="φр.х.")
+    view.dimension((o[0] + xw, ytop), (o[0] + d.axis_mm, ytop), offset_mm=4.0, text="φх.х.")
+    _title(view, o, ranges[0], f"Диаграмма перемещения, μs = {format_significant(d.mu_s, 4)} {nm.mu_s}")
+    # ---- v(φ)
+    o = origins[1]
+    _axes(view, o, d, ranges[1], nm.v, numbered=0, positions=positions)
+    _pole(view, o, d.H1, d.v_chord_mm, "P", "1")
+    view.curve(o[0] + dense_x, o[1] + np.asarray(d.v) / d.mu_v, "thin")
+    steps = _v_steps(d)
+    _steps(view, o, steps)
+    mids = [((a + b) / 2, y) for a, b, y in steps]
+    ends = [(0.0, (mids[0][1] + mids[-1][1]) / 2)] + mids + [(d.axis_mm, (mids[0][1] + mids[-1][1]) / 2)]
+    view.polyline([(o[0] + x, o[1] + y) for x, y in ends], "contour")
+    _title(view, o, ranges[1], f"Диаграмма скорости, μv = {format_significant(d.mu_v, 4)} {nm.mu_v}")
+    # ---- a(φ)
+    o = origins[2]
+    _axes(view, o, d, ranges[2], nm.a, numbered=0, positions=positions)
+    _pole(view, o, d.H2, d.a_chord_mm, "P", "2")
+    view.curve(o[0] + dense_x, o[1] + np.asarray(d.a) / d.mu_a, "thin")
+    a_steps = _a_steps(d)
+    _steps(view, o, a_steps)
+    pts = sorted(((a + b) / 2 if b - a > d.axis_mm / d.n / 2 else (a if a > 0 else b), y)
+                 for a, b, y in a_steps if b - a > d.axis_mm / d.n / 2)
+    pts = [(0.0, d.a_chord_mm[-1])] + pts + [(d.axis_mm, d.a_chord_mm[-1])]
+    view.polyline([(o[0] + x, o[1] + y) for x, y in pts], "contour")
+    _title(view, o, ranges[2], f"Диаграмма ускорения, μa = {format_significant(d.mu_a, 4)} {nm.mu_a}")
+
+
+def _title(view: View, o: tuple[float, float], rng: tuple[float, float], text: str) -> None:
+    view.text((o[0] + 30.0, o[1] + rng[0] + TOP_MM - 8.0), text, 5.0, "bottom-left")
+
+
+def _axes(view: View, o: tuple[float, float], d: Diagrams, rng: tuple[float, float], y_label: str,
+          numbered: int, positions: int) -> None:
+    xs = _x_nodes(d)
+    ticks = []
+    for j, x in enumerate(xs):
+        text = ""
+        if numbered and j % numbered == 0:
+            text = str((j // numbered) % positions)
+        ticks.append((float(x), text))
+    view.axes(o, d.axis_mm + RIGHT_MM - 6.0, rng[0] + 10.0, rng[1], x_label="φ", y_label=y_label,
+              x_ticks=ticks)
+
+
+def _pole(view: View, o: tuple[float, float], H: float, ordinates, name: str, index: str) -> None:
+    """The pole at H left of the origin, its rays to the ordinates on the y axis, its letter and
+    the dimension H."""
+    p = (o[0] - H, o[1])
+    for y in sorted(set(float(v) for v in ordinates)):
+        view.line(p, (o[0], o[1] + y), "construction")
+    view.circle_mm(p, 0.8, "contour")
+    rich = rl.Rich(name, "", index)
+    sp = view.transform(p)
+    rl.place_rich(view, rl.around(sp, rich, 5.0, 180.0), rich, 5.0)
+    low = min(min(float(v) for v in ordinates), 0.0)
+    y = o[1] + low - 4.0
+    view.dimension((p[0], y), (o[0], y), offset_mm=-4.0,
+                   text=f"H{index} = {format_number(H, 1)}")
+    view.line(p, (p[0], y - 4.0), "thin")
+
+
+def _steps(view: View, o: tuple[float, float], steps: list[tuple[float, float, float]]) -> None:
+    """The steps of a replica: horizontal segments and the verticals joining them."""
+    prev = None
+    for a, b, y in sorted(steps):
+        if prev is not None and abs(prev[0] - a) < 1e-6:
+            view.line((o[0] + a, o[1] + prev[1]), (o[0] + a, o[1] + y), "thin")
+        view.line((o[0] + a, o[1] + y), (o[0] + b, o[1] + y), "thin")
+        prev = (b, y)

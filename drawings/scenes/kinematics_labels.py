@@ -1,0 +1,196 @@
+"""Labels with indices for sheet 1: «aⁿBA», «s₂», «H1», drawn as several TEXT entities (a base, a
+raised superscript and a lowered subscript of the next smaller ГОСТ size), placed where they
+overlap no text and cross no drawn line."""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Sequence
+
+from shapely.geometry import Polygon, box
+
+from drawings import style
+from drawings.primitives import Canvas
+
+Vec = tuple[float, float]
+
+#: LaTeX commands that appear in the names of plan components.
+_GREEK = {r"\tau": "τ", r"\omega": "ω", r"\varepsilon": "ε", r"\varphi": "φ", r"\pi": "π",
+          r"\psi": "ψ", r"\mu": "μ"}
+
+
+@dataclass(frozen=True)
+class Rich:
+    """A base text with an optional superscript and subscript (stacked after the base)."""
+    base: str
+    sup: str = ""
+    sub: str = ""
+
+
+def _smaller(height: float) -> float:
+    sizes = [h for h in style.TEXT_HEIGHTS if h < height - 1e-9]
+    return sizes[-1] if sizes else height
+
+
+def _flatten(tex: str) -> str:
+    """``A_{3}A`` → ``A3A``; Greek commands to letters; braces dropped."""
+    for cmd, ch in _GREEK.items():
+        tex = tex.replace(cmd, ch)
+    return re.sub(r"[{}_^\\ ]", "", tex)
+
+
+def _group(tex: str, start: int) -> tuple[str, int]:
+    """The argument of ^ or _ at ``start``: a braced group or one character."""
+    if start < len(tex) and tex[start] == "{":
+        depth, i = 0, start
+        while i < len(tex):
+            depth += {"{": 1, "}": -1}.get(tex[i], 0)
+            if depth == 0:
+                return tex[start + 1:i], i + 1
+            i += 1
+        return tex[start + 1:], len(tex)
+    return tex[start:start + 1], start + 1
+
+
+def from_tex(tex: str) -> Rich:
+    """A component name as :mod:`reportgen.plans` writes it (``a^{\\tau}_{BA}``) as a :class:`Rich`."""
+    m = re.match(r"^([^_^]*)", tex)
+    base = m.group(1) if m else ""
+    i = len(base)
+    sup = sub = ""
+    while i < len(tex):
+        mark = tex[i]
+        arg, i = _group(tex, i + 1)
+        if mark == "^":
+            sup = _flatten(arg)
+        elif mark == "_":
+            sub = _flatten(arg)
+        else:
+            break
+    return Rich(_flatten(base), sup, sub)
+
+
+def from_letter(key: str, helpers: bool = False) -> Rich:
+    """A plan letter: ``s2`` → s₂, ``a3`` → a₃; a helper point (``nba``, ``ka3``) → n_ba, k_a3."""
+    if helpers and len(key) > 1:
+        return Rich(key[0], "", key[1:])
+    m = re.match(r"^(\D+)(\d+)$", key)
+    if m:
+        return Rich(m.group(1), "", m.group(2))
+    return Rich(key)
+
+
+Label = Rich | tuple[Rich, ...]
+SEPARATOR = ", "
+
+
+def _items(label: Label) -> tuple[Rich, ...]:
+    return (label,) if isinstance(label, Rich) else tuple(label)
+
+
+def _one_width(rich: Rich, height: float) -> float:
+    small = _smaller(height)
+    extra = max(style.text_width(rich.sup, small) if rich.sup else 0.0,
+                style.text_width(rich.sub, small) if rich.sub else 0.0)
+    return style.text_width(rich.base, height) + extra
+
+
+def size(label: Label, height: float) -> tuple[float, float, float]:
+    """Width, depth below the baseline, rise above the base's top (sheet mm)."""
+    items = _items(label)
+    small = _smaller(height)
+    w = sum(_one_width(r, height) for r in items)
+    w += style.text_width(SEPARATOR, height) * (len(items) - 1)
+    depth = 0.35 * height if any(r.sub for r in items) else 0.0
+    rise = max(0.0, 0.45 * height + small - height) if any(r.sup for r in items) else 0.0
+    return w, depth, rise
+
+
+def rich_box(label: Label, center: Vec, height: float, pad: float = 0.5) -> Polygon:
+    w, depth, rise = size(label, height)
+    x0 = center[0] - w / 2
+    y0 = center[1] - height / 2
+    return box(x0 - pad, y0 - depth - pad, x0 + w + pad, y0 + height + rise + pad)
+
+
+def label_name(label: Label) -> str:
+    return SEPARATOR.join(r.base + (f"^{r.sup}" if r.sup else "") + (f"_{r.sub}" if r.sub else "")
+                          for r in _items(label))
+
+
+def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float) -> Polygon:
+    """Draw ``label`` centred (its base line) at a sheet point; returns its box (registered once)."""
+    small = _smaller(height)
+    w, _, _ = size(label, height)
+    x = center[0] - w / 2
+    y0 = center[1] - height / 2
+    for k, rich in enumerate(_items(label)):
+        if k:
+            canvas.text_mm((x, y0), SEPARATOR.strip(), height, register=False)
+            x += style.text_width(SEPARATOR, height)
+        canvas.text_mm((x, y0), rich.base, height, register=False)
+        xb = x + style.text_width(rich.base, height)
+        if rich.sup:
+            canvas.text_mm((xb, y0 + 0.45 * height), rich.sup, small, register=False)
+        if rich.sub:
+            canvas.text_mm((xb, y0 - 0.35 * height), rich.sub, small, register=False)
+        x += _one_width(rich, height)
+    poly = rich_box(label, center, height)
+    canvas.annotations.add_box(f"{canvas.name}: «{label_name(label)}»", poly)
+    return poly
+
+
+def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: float,
+               inside: Polygon | None = None, optional: bool = False) -> Polygon | None:
+    """Draw ``label`` at the first candidate centre (sheet mm) whose box overlaps no text and
+    crosses no line (and lies ``inside``), else at the one with the fewest conflicts; an
+    ``optional`` label that would overlap a text (or leave ``inside``) is not drawn."""
+    best: tuple[tuple[int, int, int, int], Vec] | None = None
+    for rank, c in enumerate(candidates):
+        poly = rich_box(label, c, height)
+        out = 0 if inside is None or inside.contains(poly) else 1
+        score = (out, canvas.annotations.hits_box(poly), canvas.annotations.crossings(poly), rank)
+        if best is None or score < best[0]:
+            best = (score, c)
+        if score[:3] == (0, 0, 0):
+            break
+    if best is None or (optional and best[0][:2] != (0, 0)):
+        return None
+    return draw_rich(canvas, best[1], label, height)
+
+
+def around(p: Vec, rich: Label, height: float, prefer_deg: float = 45.0,
+           gaps: Sequence[float] = (1.0, 3.0, 6.0, 10.0)) -> list[Vec]:
+    """Candidate centres around a sheet point in 16 directions from ``prefer_deg``, at several gaps."""
+    w, depth, rise = size(rich, height)
+    hw, hh = w / 2 + 0.5, (height + depth + rise) / 2 + 0.5
+    out = []
+    order = [prefer_deg + s * k * 22.5 for k in range(9) for s in ((1, -1) if k else (1,))][:16]
+    for gap in gaps:
+        for ang in order:
+            ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
+            t = min(hw / abs(ux) if abs(ux) > 1e-9 else math.inf, hh / abs(uy) if abs(uy) > 1e-9 else math.inf)
+            out.append((p[0] + ux * (t + gap), p[1] + uy * (t + gap)))
+    return out
+
+
+def along(a: Vec, b: Vec, rich: Label, height: float) -> list[Vec]:
+    """Candidate centres beside the segment a→b (sheet mm): at its middle first, then towards the
+    ends, on either side, at growing distances."""
+    d = math.dist(a, b)
+    if d < 1e-9:
+        return around(a, rich, height)
+    ux, uy = (b[0] - a[0]) / d, (b[1] - a[1]) / d
+    nx, ny = -uy, ux
+    w, depth, rise = size(rich, height)
+    hw, hh = w / 2 + 0.5, (height + depth + rise) / 2 + 0.5
+    reach = abs(nx) * hw + abs(ny) * hh          # half-extent of the box across the segment
+    out = []
+    for gap in (1.0, 3.0, 6.0):
+        for t in (0.5, 0.35, 0.65, 0.2, 0.8):
+            m = (a[0] + ux * d * t, a[1] + uy * d * t)
+            for side in (1, -1):
+                k = side * (reach + gap)
+                out.append((m[0] + nx * k, m[1] + ny * k))
+    return out

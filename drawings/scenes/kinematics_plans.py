@@ -1,0 +1,164 @@
+"""Sheet 1, the plans: the velocity and acceleration plans of the analysed position (pole, every
+component of :func:`reportgen.plans.build_plans` as an arrow between its plan points with its
+name, the absolute vectors from the pole, the plan letters, the scale caption) and the velocity
+plans of all positions in small form."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from drawings.primitives import format_significant
+from drawings.sheet import Sheet, View
+from drawings.scenes import kinematics_labels as rl
+from reportgen.plans import Plan
+
+#: Margins of a plan view around its points, mm: left/right, bottom (caption), top (title).
+PAD_SIDE, PAD_BOTTOM, PAD_TOP = 22.0, 22.0, 20.0
+#: Points of a plan closer than this (mm) share one label.
+SAME_MM = 0.3
+
+UNITS = {"velocity": ("μv", "(м/с)/мм", "V"), "acceleration": ("μa", "(м/с²)/мм", "a")}
+
+
+def pole(plan: Plan) -> str:
+    return "p" if plan.kind == "velocity" else "π"
+
+
+def helpers(plan: Plan, image_keys: set[str]) -> set[str]:
+    """Plan points that are not images of mechanism points (ends of normal/Coriolis parts)."""
+    return {k for k in plan.points if k not in image_keys and k != pole(plan)}
+
+
+def extent(plan: Plan) -> tuple[float, float, float, float]:
+    arr = np.array(list(plan.points.values()), float)
+    return float(arr[:, 0].min()), float(arr[:, 1].min()), float(arr[:, 0].max()), float(arr[:, 1].max())
+
+
+def view_size(plan: Plan, title: str, pad: float = PAD_SIDE) -> tuple[float, float, tuple[float, float]]:
+    """Width, height and the model point at the lower-left corner of a plan's view."""
+    x0, y0, x1, y1 = extent(plan)
+    from drawings import style
+    w = max(x1 - x0 + 2 * pad, style.text_width(title, 5.0) + 10.0, 120.0)
+    h = y1 - y0 + PAD_BOTTOM + PAD_TOP + 2 * 6.0
+    cx = (x0 + x1) / 2
+    return w, h, (cx - w / 2, y0 - PAD_BOTTOM - 6.0)
+
+
+def _groups(plan: Plan, keys: list[str]) -> list[tuple[tuple[float, float], list[str]]]:
+    """Plan points grouped by position (coincident points share a label), pole first."""
+    out: list[tuple[tuple[float, float], list[str]]] = []
+    for k in keys:
+        p = plan.points[k]
+        for pos, names in out:
+            if math.dist(pos, p) < SAME_MM:
+                names.append(k)
+                break
+        else:
+            out.append((tuple(p), [k]))
+    return out
+
+
+@dataclass(frozen=True)
+class Drawn:
+    """An arrow drawn in a plan view, for the tests: the component's name, start and end (mm)."""
+    name: str
+    start: tuple[float, float]
+    end: tuple[float, float]
+
+
+def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names: bool = True,
+              letter_height: float = 5.0, small: bool = False) -> list[Drawn]:
+    """The plan in ``view`` (model = plan mm). Returns the arrows drawn."""
+    drawn: list[Drawn] = []
+    pl = pole(plan)
+    helper = helpers(plan, image_keys)
+    order = [pl] + [k for k in plan.points if k != pl and k not in helper] + sorted(helper)
+    # absolute vectors from the pole to the images not reached by a component from the pole
+    from_pole = {c.end for c in plan.components if c.start == pl}
+    ends_done = {tuple(np.round(plan.points[e], 6)) for e in from_pole}
+    head = 3.5 if small else 5.0
+    for k in order:
+        if k == pl or k in helper or k in from_pole:
+            continue
+        p = plan.points[k]
+        key = tuple(np.round(p, 6))
+        if math.hypot(*p) < SAME_MM or key in ends_done:
+            continue
+        ends_done.add(key)
+        view.arrow((0.0, 0.0), p, head_mm=head)
+        drawn.append(Drawn(f"{UNITS[plan.kind][2]}_{{{k.upper()}}}", (0.0, 0.0), tuple(p)))
+    for c in plan.components:
+        a, b = plan.points[c.start], plan.points[c.end]
+        view.arrow(a, b, head_mm=head)
+        drawn.append(Drawn(c.name, tuple(a), tuple(b)))
+    # letters at the points
+    inside = view.rect.polygon()
+    for pos, keys in _groups(plan, order):
+        label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
+        p = view.transform(pos)
+        rl.place_rich(view, rl.around(p, label, letter_height, 45.0), label, letter_height,
+                      inside=inside, optional=small)
+    # names of the components along their arrows
+    if names:
+        for c in plan.components:
+            a, b = view.transform(plan.points[c.start]), view.transform(plan.points[c.end])
+            if math.dist(a, b) < 1.0:
+                continue
+            rich = rl.from_tex(c.name)
+            rl.place_rich(view, rl.along(a, b, rich, 3.5), rich, 3.5, inside=inside)
+    symbol, unit, _ = UNITS[plan.kind]
+    caption = f"{symbol} = {format_significant(plan.scale, 4)} {unit}"
+    if small:
+        view.text_mm((view.rect.x0 + 2.0, view.rect.y1 - 2.0), title, 3.5, "top-left")
+    else:
+        view.text_mm((view.rect.center[0], view.rect.y0 + 5.0), caption, 5.0, "bottom-center")
+        view.title(title)
+    return drawn
+
+
+def add_plan_view(sheet: Sheet, name: str, plan: Plan, image_keys: set[str], title: str,
+                  preferred: str) -> tuple[View, list[Drawn]]:
+    w, h, origin = view_size(plan, title)
+    view = sheet.add_view(name, w, h, preferred=preferred, scale=1.0, origin=origin)
+    return view, draw_plan(view, plan, image_keys, title)
+
+
+def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str,
+                    max_columns: int | None = None) -> View | None:
+    """All velocity plans in one view, a grid of equal cells numbered by position; None if the
+    sheet has no room for them."""
+    from drawings.layout import Rect
+    from drawings.primitives import Transform
+    from reportgen.errors import BuildError
+    ext = np.array([extent(p) for p in plans])
+    pad = 9.0
+    cw = float((ext[:, 2] - ext[:, 0]).max()) + 2 * pad
+    ch = float((ext[:, 3] - ext[:, 1]).max()) + 2 * pad + 5.0
+    n = len(plans)
+    title_h = 14.0
+    title = (f"Планы скоростей положений 0–{n - 1}, "
+             f"μv = {format_significant(plans[0].scale, 4)} (м/с)/мм")
+    for cols in range(min(n, max_columns or n), 0, -1):
+        rows = math.ceil(n / cols)
+        w, h = cols * cw, rows * ch + title_h
+        try:
+            holder = sheet.add_view("plans_all", w, h, preferred=preferred)
+        except BuildError:
+            continue
+        break
+    else:
+        return None
+    holder.title(title)
+    for i, plan in enumerate(plans):
+        r, c = divmod(i, cols)
+        x0 = holder.rect.x0 + c * cw
+        y1 = holder.rect.y1 - title_h - r * ch
+        cell = Rect(x0, y1 - ch, x0 + cw, y1)
+        e = extent(plan)
+        cx, cy = (e[0] + e[2]) / 2, (e[1] + e[3]) / 2
+        tr = Transform(1.0, (cx, cy), ((cell.x0 + cell.x1) / 2, (cell.y0 + cell.y1 - 5.0) / 2))
+        sub = View(sheet, "plans_all", cell, tr)
+        draw_plan(sub, plan, image_keys, f"{i}", names=False, letter_height=3.5, small=True)
+    return holder

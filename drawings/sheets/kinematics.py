@@ -1,0 +1,144 @@
+"""Sheet 1 «Кинематический анализ рычажного механизма» (A1): the mechanism in every analysed
+position with the trajectories, the velocity and acceleration plans of the analysed position, the
+velocity plans of all positions in small form, the s–v–a diagrams of the output, and a table of
+the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
+from __future__ import annotations
+
+import math
+
+from drawings import style
+from drawings.layout import Rect
+from drawings.primitives import format_number, format_significant
+from drawings.sheet import Sheet, View
+from drawings.scenes import kinematics_diagrams as kd
+from drawings.scenes import kinematics_plans as kp
+from drawings.scenes import kinematics_scheme as ks
+from reportgen.diagrams import Diagrams, build_diagrams
+from reportgen.plans import Plan, build_plans, round_scale
+from reportgen.project import Project
+
+NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
+TITLE = "Кинематический анализ рычажного механизма"
+
+#: The scheme's view (with its padding) is at most this big, mm.
+SCHEME_MAX_MM = (440.0, 300.0)
+SCHEME_PAD_MM = 28.0
+#: Intervals of the φ axis of the diagrams: a multiple of the positions, at least this many.
+MIN_INTERVALS = 24
+#: The small velocity plans: the crank's vector is at most this long, mm.
+SMALL_PLAN_MM = 36.0
+
+
+def available(project: Project) -> bool:
+    return project.task.mechanism is not None
+
+
+def code(number: int) -> str:
+    return f"ТММ.КП.00.00.{number:03d}"
+
+
+def analysed_position(project: Project) -> int:
+    """The position the note analyses: ``[analysis] force_position`` if it is an index, else 2."""
+    fp = project.task.analysis.force_position
+    n = len(project.phi)
+    i = fp if isinstance(fp, int) else 2
+    return min(max(i, 0), n - 1)
+
+
+def intervals(positions: int) -> int:
+    return positions * math.ceil(MIN_INTERVALS / positions)
+
+
+def diagrams_of(project: Project) -> Diagrams | None:
+    if project.strokes is None:
+        return None
+    return build_diagrams(project.model, project.strokes, float(project.phi[0]),
+                          n=intervals(len(project.phi)))
+
+
+def image_keys(project: Project) -> set[str]:
+    """Plan letters that are images of mechanism points (not the helper points n…, k…)."""
+    v, _ = build_plans(project.linkage, project.structure, project.kinematics, 0)
+    return set(v.points)
+
+
+def draw(project: Project, number: int, count: int) -> Sheet:
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    i = analysed_position(project)
+    # the scheme
+    data = ks.scheme_data(project, i)
+    b = ks.bounds(project, data)
+    k, scale_text = ks.gost_scale(b[2] - b[0], b[3] - b[1], SCHEME_MAX_MM[0] - 2 * SCHEME_PAD_MM,
+                                  SCHEME_MAX_MM[1] - 2 * SCHEME_PAD_MM)
+    scheme = sheet.add_model_view("scheme", b, k, padding_mm=SCHEME_PAD_MM, preferred="top-left")
+    ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
+    # the diagrams
+    d = diagrams_of(project)
+    if d is not None:
+        kd.add_diagrams_view(sheet, d, len(project.phi), project.strokes.working_deg, "top-right")
+    # the plans of the analysed position
+    keys = image_keys(project)
+    vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
+    kp.add_plan_view(sheet, "plan_v", vplan, keys, f"План скоростей, положение {i}", "bottom-left")
+    kp.add_plan_view(sheet, "plan_a", aplan, keys, f"План ускорений, положение {i}", "bottom-left")
+    # the small velocity plans of all positions
+    small = small_plans(project)
+    kp.add_small_plans(sheet, small, keys, "bottom-left")
+    add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
+    return sheet
+
+
+def small_plans(project: Project) -> list[Plan]:
+    kin = project.kinematics
+    tip = project.linkage.drive_tip
+    import numpy as np
+    v_tip = float(np.hypot(*np.asarray(kin.points[tip].vel[0])))
+    mu = round_scale(v_tip, SMALL_PLAN_MM)
+    return [build_plans(project.linkage, project.structure, kin, j, mu_v=mu)[0] for j in range(len(project.phi))]
+
+
+def scale_rows(mu_l: float, scale_text: str, vplan: Plan, aplan: Plan, d: Diagrams | None
+               ) -> list[tuple[str, str, str]]:
+    rows = [("μl", f"схема, М {scale_text}", f"{format_significant(mu_l, 4)} м/мм"),
+            ("μv", "план скоростей", f"{format_significant(vplan.scale, 4)} (м/с)/мм"),
+            ("μa", "план ускорений", f"{format_significant(aplan.scale, 4)} (м/с²)/мм")]
+    if d is not None:
+        nm = kd.names(d)
+        rows += [("μφ", "ось φ, диаграммы", f"{format_significant(d.mu_phi, 4)} рад/мм"),
+                 ("μt", "ось t, диаграммы", f"{format_significant(d.mu_t, 4)} с/мм"),
+                 ("μs", "диаграмма перемещения", f"{format_significant(d.mu_s, 4)} {nm.mu_s}"),
+                 ("μv", "диаграмма скорости", f"{format_significant(d.mu_v, 4)} {nm.mu_v}"),
+                 ("μa", "диаграмма ускорения", f"{format_significant(d.mu_a, 4)} {nm.mu_a}"),
+                 ("H1", "полюсное расстояние", f"{format_number(d.H1, 1)} мм"),
+                 ("H2", "полюсное расстояние", f"{format_number(d.H2, 1)} мм")]
+    return rows
+
+
+def add_scales_table(sheet: Sheet, mu_l: float, scale_text: str, vplan: Plan, aplan: Plan,
+                     d: Diagrams | None) -> View:
+    rows = scale_rows(mu_l, scale_text, vplan, aplan, d)
+    header = ("Обозн.", "Величина", "Масштаб")
+    widths = tuple(max(style.text_width(r[c], 3.5) for r in [header, *rows]) + 5.0 for c in range(3))
+    row_h = 8.0
+    w = sum(widths)
+    h = row_h * (len(rows) + 1) + 12.0
+    view = sheet.add_view("scales", w, h, preferred="bottom-right")
+    view.title("Масштабы")
+    top = h - 12.0                             # view coordinates: mm from its lower-left corner
+    x0 = 0.0
+    table = Rect(x0, top - row_h * (len(rows) + 1), x0 + w, top)
+    c = view
+    for r in range(len(rows) + 2):
+        y = top - r * row_h
+        c.line((x0, y), (x0 + w, y), "contour" if r in (0, 1, len(rows) + 1) else "thin")
+    x = x0
+    for wi in (0.0, *widths):
+        x += wi
+        c.line((x, table.y0), (x, table.y1), "contour")
+    for r, row in enumerate([header, *rows]):
+        y = top - r * row_h - row_h / 2
+        x = x0
+        for wi, text in zip(widths, row):
+            c.text((x + 2.0, y), text, 3.5, "middle-left")
+            x += wi
+    return view
