@@ -2,7 +2,8 @@
 the cycle, and the near-dead-centre warning.
 
 The analysed position (RESULTS_FORMAT ``kinetostatics.phi_deg``): ``--force-at DEG`` if given, else
-``[analysis] force_position`` — an index into ``project.phi``, or ``"max-load"``: the crank angle of
+``[analysis] force_position`` — an index into the task's [analysis] positions (``project.phi``
+without ``--at``; with ``--at`` the angle of that position of the task's grid), or ``"max-load"``: the crank angle of
 the largest production resistance on a grid of :data:`MAX_LOAD_GRID` angles from position 0 in the
 direction of rotation; where the law has a plateau (equal maxima), the angle where the resistance
 takes the most power (|F·v| or |M·ω|, the largest share of the balancing moment), then the earliest.
@@ -93,7 +94,8 @@ def force_angle(project, force_at_deg: float | None = None) -> tuple[float, int 
     if fp == "max-load":
         n = MAX_LOAD_GRID
         sgn = 1.0 if project.model.omega >= 0 else -1.0
-        grid = np.mod(float(project.phi[0]) + sgn * np.arange(n) * 2 * math.pi / n, 2 * math.pi)
+        base = project if getattr(project, "at_deg", None) is None else type(project)(project.task)
+        grid = np.mod(float(base.phi[0]) + sgn * np.arange(n) * 2 * math.pi / n, 2 * math.pi)
         kin = project.kinematics_at(grid)
         mag, pw = resistance_magnitude(project, kin)
         top = mag.max()
@@ -104,11 +106,14 @@ def force_angle(project, force_at_deg: float | None = None) -> tuple[float, int 
         best = cand[np.argmax(pw[cand] >= pw[cand].max() * (1 - 1e-9))]
         phi = float(grid[best])
         return phi, _index_of(project.phi, phi)
+    # the index names a position of the task's own [analysis] grid, also when --at replaces it
+    base = project if getattr(project, "at_deg", None) is None else type(project)(project.task)
     idx = int(fp)
-    if not 0 <= idx < len(project.phi):
-        raise TaskError("analysis.force_position", f"got {idx}, but only {len(project.phi)} positions are analysed",
-                        f"an index 0…{len(project.phi) - 1} or \"max-load\"")
-    return float(project.phi[idx]), idx
+    if not 0 <= idx < len(base.phi):
+        raise TaskError("analysis.force_position", f"got {idx}, but only {len(base.phi)} positions are analysed",
+                        f"an index 0…{len(base.phi) - 1} or \"max-load\"")
+    phi = float(base.phi[idx])
+    return phi, _index_of(project.phi, phi)
 
 
 def _index_of(phis: np.ndarray, phi: float) -> int | None:

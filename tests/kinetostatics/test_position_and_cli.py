@@ -31,10 +31,21 @@ def test_force_position_index_and_force_at():
     assert idx == 5
 
 
-def test_force_position_out_of_range_with_at():
-    p = example("press", at_deg=[10.0, 20.0])  # index 2 of two angles
+def test_force_position_with_at_names_the_task_grid():
+    """--at replaces the analysed angles; force_position still names a position of [analysis]."""
+    p = example("press", at_deg=[10.0, 20.0])
+    phi, idx = force_angle(p)
+    assert phi == pytest.approx(float(example("press").phi[2])) and idx is None
+    p = example("press", at_deg=[10.0, math.degrees(float(example("press").phi[2]))])
+    assert force_angle(p)[1] == 1
+
+
+def test_force_position_out_of_range():
+    from dataclasses import replace
+    p = example("press")
+    p2 = Project(replace(p.task, analysis=replace(p.task.analysis, force_position=8)))
     with pytest.raises(TaskError) as e:
-        force_angle(p)
+        force_angle(p2)
     assert "analysis.force_position" in str(e.value)
 
 
