@@ -139,63 +139,49 @@ def sliding_figure(pair):
 
 # ------------------------------------------------------------------------------- planetary
 def planetary_figure(stage):
-    """The reducer's kinematic scheme (half view, as on sheet 4), Kutzbach's velocity triangle
-    beside it at the same heights, and the angular-velocity plan."""
-    from drawings.scenes.planetary import side_scheme
+    """The reducer's kinematic scheme (as on sheet 4), Kutzbach's velocity triangle beside it at the
+    same heights with projection lines, and the angular-velocity plan below the triangle."""
+    from drawings.scenes.planetary import merge, plan_scene, side_scheme, triangle_scene
     tri = stage.triangle
-    scene = side_scheme(stage.design, tri.length_scale)
-    fig = new_figure(16, 11)
-    ax_s = fig.add_axes([0.02, 0.08, 0.40, 0.86])
-    ax_v = fig.add_axes([0.44, 0.08, 0.30, 0.86], sharey=ax_s)
-    ax_p = fig.add_axes([0.78, 0.30, 0.21, 0.5])
-    _draw_scene(ax_s, scene)
-    ax_s.set_aspect("equal")
-    ax_s.axis("off")
-    # velocity triangle
+    scheme = side_scheme(stage.design, tri.length_scale)
+    x_line = scheme.bounds()[2] + 25
+    triangle = triangle_scene(tri, x_line, scheme.marks)
     pts = dict(tri.points)
-    for lab in ("A", "B", "C"):
-        y = pts[lab][1]
-        ax_v.plot([0, max(tri.vector_mm, 0) * 1.05], [y, y], color="0.6", lw=0.4, ls=":")
-    ax_v.axvline(0, color="k", lw=0.6)
-    seg_names = {"1": "1", "2": "2", "H": "H"}
-    for seg in tri.lines:
-        ax_v.plot([seg.start[0], seg.end[0]], [seg.start[1], seg.end[1]], color="k", lw=0.9)
-        mx, my = (seg.start[0] + 2 * seg.end[0]) / 3, (seg.start[1] + 2 * seg.end[1]) / 3
-        ax_v.text(mx, my, seg_names[seg.label], fontsize=9, ha="right", va="bottom")
-    a, b = pts["a"], pts["b"]
-    ax_v.annotate("", xy=a, xytext=(0, a[1]), arrowprops=dict(arrowstyle="-|>", lw=1.2, color="C3"))
-    ax_v.annotate("", xy=b, xytext=(0, b[1]), arrowprops=dict(arrowstyle="-|>", lw=1.2, color="C0"))
-    ax_v.text(a[0], a[1], "  $v_A$", va="center", fontsize=10)
-    ax_v.text(b[0], b[1], "  $v_B$", va="center", fontsize=10)
-    for lab in ("A", "B", "C"):
-        ax_v.text(-2, pts[lab][1], f"${lab}$", ha="right", va="bottom", fontsize=10)
-    ax_v.set_xlim(-12, tri.vector_mm * 1.25)
-    ax_v.set_aspect("equal")
-    ax_v.axis("off")
-    # angular-velocity plan
-    plan = tri.plan
-    ax_p.plot([min(0, *[c[1] for c in plan.cuts]) - 5, max(c[1] for c in plan.cuts) + 5],
-              [plan.h_mm, plan.h_mm], color="k", lw=0.6)
-    for ray, (lab, x) in zip(plan.rays, plan.cuts):
-        ax_p.plot([ray.start[0], ray.end[0]], [ray.start[1], ray.end[1]], color="k", lw=0.8)
-        ax_p.text(x, plan.h_mm * 1.04, f"${lab}$", ha="center", va="bottom", fontsize=9)
-    ax_p.plot([0], [0], "o", color="k", ms=3)
-    ax_p.text(0, -plan.h_mm * 0.06, "$p$", ha="center", va="top", fontsize=10)
-    ax_p.set_aspect("equal")
-    ax_p.axis("off")
+    plan_origin = (x_line + 10 - min(0.0, *[x for _, x in tri.plan.cuts]), -tri.plan.h_mm - 25)
+    scene = merge(scheme, triangle, plan_scene(tri, plan_origin))
+    del pts
+    x0, y0, x1, y1 = scene.bounds()
+    w_cm = 16.0
+    h_cm = min(20.0, w_cm * (y1 - y0 + 10) / (x1 - x0 + 10))
+    fig = new_figure(w_cm, h_cm)
+    ax = fig.add_axes([0, 0, 1, 1])
+    _draw_scene(ax, scene)
+    ax.set_aspect("equal")
+    ax.set_xlim(x0 - 5, x1 + 5)
+    ax.set_ylim(y0 - 5, y1 + 5)
+    ax.axis("off")
     return fig
 
 
 def _draw_scene(ax, scene) -> None:
     """Draw a :class:`drawings.scenes.planetary.Scene` (mm) with matplotlib."""
-    widths = {"contour": 1.4, "thin": 0.5, "axis": 0.5, "hidden": 0.5}
+    widths = {"contour": 1.3, "thin": 0.4, "axis": 0.5, "hidden": 0.5}
     dashes = {"axis": "-.", "hidden": "--"}
     for line in scene.lines:
         xs, ys = zip(*line.points)
-        ax.plot(xs, ys, color="k", lw=widths.get(line.layer, 0.8), ls=dashes.get(line.layer, "-"))
-    for hatch in scene.hatches:
-        (x0, y0), (x1, y1) = hatch
+        ax.plot(xs, ys, color="k" if line.layer != "thin" else "0.4", lw=widths.get(line.layer, 0.8),
+                ls=dashes.get(line.layer, "-"))
+    for c in scene.circles:
+        t = np.linspace(0, 2 * math.pi, 361)
+        ax.plot(c.centre[0] + c.radius * np.cos(t), c.centre[1] + c.radius * np.sin(t), color="k",
+                lw=widths.get(c.layer, 0.8), ls=dashes.get(c.layer, "-"))
+    for (x0, y0), (x1, y1) in scene.hatches:
         ax.plot([x0, x1], [y0, y1], color="k", lw=0.5)
+    for (x0, y0), (x1, y1), lab in scene.arrows:
+        ax.annotate("", xy=(x1, y1), xytext=(x0, y0),
+                    arrowprops=dict(arrowstyle="-|>", lw=1.1, color="k", shrinkA=0, shrinkB=0))
+        text = {"vA": "$v_A$", "vB": "$v_B$"}.get(lab, lab)
+        ax.text(x1 + 2, y1 + 2, text, fontsize=9, ha="left", va="bottom")
     for lab in scene.labels:
         ax.text(lab.point[0], lab.point[1], lab.text, fontsize=9, ha="center", va="center",
                 bbox=dict(boxstyle="square,pad=0.05", fc="white", ec="none"))
