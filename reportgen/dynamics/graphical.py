@@ -130,7 +130,9 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     J = r.J[:theta.size]
     s = dict(scales or {})
     mu_phi = s.setdefault("mu_phi", TWO_PI / layout.phi_axis)
-    mu_M = s.setdefault("mu_M", nice_ceil(float(np.abs(np.concatenate((M, Mmid))).max()) / layout.m_height))
+    # a machine without load (M_red ≈ 0) still gets a finite scale: a floor of 1e-9·J·ω² (N·m)
+    m_ref = max(float(np.abs(np.concatenate((M, Mmid))).max()), 1e-9 * float(J.max()) * wm * wm)
+    mu_M = s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
     x = theta / mu_phi
     y_mid = Mmid / mu_M
     steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
