@@ -126,8 +126,8 @@ def test_any_smooth_cycle_returns_the_target_delta(a1, b2, c, j1, j2, delta):
 
 
 def test_negligible_load_keeps_finite_scales():
-    """A load of 1e-300 N·m is no load: the replica's scales stay finite (no overflow)."""
-    cyc = FunctionCycle(M=lambda t: 1e-300 * np.cos(t), J=lambda t: 1.0 + 0.5 * np.sin(t) ** 2,
+    """A load of 1e-318 N·m (subnormal) is no load: the replica's scales stay finite (no overflow)."""
+    cyc = FunctionCycle(M=lambda t: 1e-318 * np.cos(t), J=lambda t: 1.0 + 0.5 * np.sin(t) ** 2,
                         dJ=lambda t: 0.5 * np.sin(2 * t), omega_m=10.0, J_const=1.0)
     with np.errstate(over="raise", invalid="raise", divide="raise"):
         r = solve_cycle(cyc, 0.05, n=72)
