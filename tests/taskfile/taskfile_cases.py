@@ -16,7 +16,14 @@ FULL = DATA / "full.toml"
 SLOTTED = DATA / "slotted.toml"
 
 _CACHE: dict[Path, dict] = {}
-DELETE = object()
+class _Delete:
+    """Marker: remove the key (a stable repr, so test ids are the same in every process)."""
+
+    def __repr__(self) -> str:
+        return "DELETE"
+
+
+DELETE = _Delete()
 
 
 def example(path: Path = FULL) -> dict:
