@@ -136,9 +136,14 @@ def triangle_records(stage, u_main: CalcRecord) -> dict[str, CalcRecord]:
 
 
 def content(project) -> PartContent:
+    from dataclasses import replace
+
+    from drawings.scenes.planetary import sheet_triangle
     from latex_templates.figures.gears import planetary_figure
 
     stage = project.planetary
+    if stage.triangle is not None:       # the construction as drawn on sheet 4
+        stage = replace(stage, triangle=sheet_triangle(stage))
     d = stage.design
     r = planetary_records(stage)
     u_main = r.get("uh1", r["u1h"])
