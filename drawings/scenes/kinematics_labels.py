@@ -8,6 +8,7 @@ import re
 from dataclasses import dataclass
 from typing import Sequence
 
+import shapely
 from shapely.geometry import Polygon, box
 
 from drawings import style
@@ -147,10 +148,18 @@ def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: 
     crosses no line (and lies ``inside``), else at the one with the fewest conflicts; an
     ``optional`` label that would overlap a text (or leave ``inside``) is not drawn."""
     best: tuple[tuple[int, int, int, int], Vec] | None = None
+    boxes = [b for _, b in canvas.annotations.boxes]
+    tree = shapely.STRtree(boxes) if boxes else None
+
+    def hits(poly: Polygon) -> int:
+        if tree is None:
+            return 0
+        return sum(1 for j in tree.query(poly) if poly.intersection(boxes[j]).area > 1e-6)
+
     for rank, c in enumerate(candidates):
         poly = rich_box(label, c, height)
         out = 0 if inside is None or inside.contains(poly) else 1
-        score = (out, canvas.annotations.hits_box(poly), canvas.annotations.crossings(poly), rank)
+        score = (out, hits(poly), canvas.annotations.crossings(poly), rank)
         if best is None or score < best[0]:
             best = (score, c)
         if score[:3] == (0, 0, 0):
@@ -193,4 +202,5 @@ def along(a: Vec, b: Vec, rich: Label, height: float) -> list[Vec]:
             for side in (1, -1):
                 k = side * (reach + gap)
                 out.append((m[0] + nx * k, m[1] + ny * k))
-    return out
+    middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    return out + around(middle, rich, height, math.degrees(math.atan2(ny, nx)), gaps=(4.0, 8.0, 12.0, 16.0))

@@ -8,14 +8,18 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from shapely.geometry import Polygon, box
 
-from drawings.primitives import format_significant
+from drawings import style
+from drawings.layout import Rect
+from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
+from reportgen.errors import BuildError
 from reportgen.plans import Plan
 
-#: Margins of a plan view around its points, mm: left/right, bottom (caption), top (title).
-PAD_SIDE, PAD_BOTTOM, PAD_TOP = 22.0, 22.0, 20.0
+#: Room for letters and names around a plan's points, and the caption / title strips, mm.
+PAD_LABELS, STRIP = 16.0, 12.0
 #: Points of a plan closer than this (mm) share one label.
 SAME_MM = 0.3
 
@@ -36,14 +40,20 @@ def extent(plan: Plan) -> tuple[float, float, float, float]:
     return float(arr[:, 0].min()), float(arr[:, 1].min()), float(arr[:, 0].max()), float(arr[:, 1].max())
 
 
-def view_size(plan: Plan, title: str, pad: float = PAD_SIDE) -> tuple[float, float, tuple[float, float]]:
+def view_size(plan: Plan, title: str) -> tuple[float, float, tuple[float, float]]:
     """Width, height and the model point at the lower-left corner of a plan's view."""
     x0, y0, x1, y1 = extent(plan)
-    from drawings import style
-    w = max(x1 - x0 + 2 * pad, style.text_width(title, 5.0) + 10.0, 120.0)
-    h = y1 - y0 + PAD_BOTTOM + PAD_TOP + 2 * 6.0
+    w = max(x1 - x0 + 2 * PAD_LABELS, style.text_width(title, 5.0) + 10.0, 120.0)
+    h = y1 - y0 + 2 * PAD_LABELS + 2 * STRIP
     cx = (x0 + x1) / 2
-    return w, h, (cx - w / 2, y0 - PAD_BOTTOM - 6.0)
+    return w, h, (cx - w / 2, y0 - PAD_LABELS - STRIP)
+
+
+def label_region(view: View, small: bool) -> Polygon:
+    """Where letters and names may go: the view less its caption and title strips."""
+    r = view.rect
+    strip = 6.0 if small else STRIP
+    return box(r.x0, r.y0 + (0.0 if small else strip), r.x1, r.y1 - strip)
 
 
 def _groups(plan: Plan, keys: list[str]) -> list[tuple[tuple[float, float], list[str]]]:
@@ -76,6 +86,13 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
     helper = helpers(plan, image_keys)
     order = [pl] + [k for k in plan.points if k != pl and k not in helper] + sorted(helper)
     # absolute vectors from the pole to the images not reached by a component from the pole
+    symbol, unit, _ = UNITS[plan.kind]
+    if small:
+        view.text_mm((view.rect.x0 + 2.0, view.rect.y1 - 1.0), title, 3.5, "top-left")
+    else:
+        caption = f"{symbol} = {format_significant(plan.scale, 4)} {unit}"
+        view.text_mm((view.rect.center[0], view.rect.y0 + 4.0), caption, 5.0, "bottom-center")
+        view.title(title)
     from_pole = {c.end for c in plan.components if c.start == pl}
     ends_done = {tuple(np.round(plan.points[e], 6)) for e in from_pole}
     head = 3.5 if small else 5.0
@@ -94,7 +111,7 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         view.arrow(a, b, head_mm=head)
         drawn.append(Drawn(c.name, tuple(a), tuple(b)))
     # letters at the points
-    inside = view.rect.polygon()
+    inside = label_region(view, small)
     for pos, keys in _groups(plan, order):
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
         p = view.transform(pos)
@@ -108,13 +125,6 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
                 continue
             rich = rl.from_tex(c.name)
             rl.place_rich(view, rl.along(a, b, rich, 3.5), rich, 3.5, inside=inside)
-    symbol, unit, _ = UNITS[plan.kind]
-    caption = f"{symbol} = {format_significant(plan.scale, 4)} {unit}"
-    if small:
-        view.text_mm((view.rect.x0 + 2.0, view.rect.y1 - 2.0), title, 3.5, "top-left")
-    else:
-        view.text_mm((view.rect.center[0], view.rect.y0 + 5.0), caption, 5.0, "bottom-center")
-        view.title(title)
     return drawn
 
 
@@ -125,13 +135,9 @@ def add_plan_view(sheet: Sheet, name: str, plan: Plan, image_keys: set[str], tit
     return view, draw_plan(view, plan, image_keys, title)
 
 
-def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str,
-                    max_columns: int | None = None) -> View | None:
+def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str) -> View | None:
     """All velocity plans in one view, a grid of equal cells numbered by position; None if the
     sheet has no room for them."""
-    from drawings.layout import Rect
-    from drawings.primitives import Transform
-    from reportgen.errors import BuildError
     ext = np.array([extent(p) for p in plans])
     pad = 9.0
     cw = float((ext[:, 2] - ext[:, 0]).max()) + 2 * pad
@@ -140,8 +146,12 @@ def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], prefe
     title_h = 14.0
     title = (f"Планы скоростей положений 0–{n - 1}, "
              f"μv = {format_significant(plans[0].scale, 4)} (м/с)/мм")
-    for cols in range(min(n, max_columns or n), 0, -1):
-        rows = math.ceil(n / cols)
+    tried: set[int] = set()
+    for rows in range(1, 5):
+        cols = math.ceil(n / rows)
+        if cols in tried or cols * cw > sheet.frame.width:
+            continue
+        tried.add(cols)
         w, h = cols * cw, rows * ch + title_h
         try:
             holder = sheet.add_view("plans_all", w, h, preferred=preferred)

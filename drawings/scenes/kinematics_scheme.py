@@ -101,9 +101,15 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_stroke(view, project, data, centre)
     _draw_letters(view, project, data)
     _draw_numbers(view, project, data)
-    x0 = view.rect.x0 + 5.0
-    view.text_mm((x0, view.rect.y0 + 5.0), f"μl = {format_number(mu_l, 5)} м/мм (М {scale_text})", 5.0)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
+                 f"μl = {format_number(mu_l, 5)} м/мм (М {scale_text})", 5.0, "bottom-center")
     view.title(f"Кинематическая схема механизма ({len(data.kin.phi)} положений)")
+
+
+def _inside(view: View) -> Polygon:
+    """Where labels may go: the view less its title and caption strips."""
+    r = view.rect
+    return Polygon([(r.x0, r.y0 + 12.0), (r.x1, r.y0 + 12.0), (r.x1, r.y1 - 9.0), (r.x0, r.y1 - 9.0)])
 
 
 def _link_outline(names: tuple[str, ...]) -> list[tuple[str, str]]:
@@ -235,8 +241,10 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
         tip = view.transform(pts[-1])
         prev = view.transform(pts[-3])
         view.arrowhead_mm(tip, (tip[0] - prev[0], tip[1] - prev[1]), 4.0, 1.3, "thin")
-        am = a0 + sweep / 2
-        view.label(pts[len(pts) // 2], text, 3.5, gap_mm=1.0, prefer_deg=math.degrees(am))
+        am = math.degrees(a0 + sweep / 2)
+        mid = view.transform(pts[len(pts) // 2])
+        rich = rl.Rich(text)
+        rl.place_rich(view, rl.around(mid, rich, 3.5, am), rich, 3.5, inside=_inside(view))
 
 
 def _draw_stroke(view: View, project: Project, data: SchemeData, centre: np.ndarray) -> None:
@@ -247,7 +255,9 @@ def _draw_stroke(view: View, project: Project, data: SchemeData, centre: np.ndar
     out = st.output
     if out.kind != "slider":
         piv = np.asarray(data.extremes.points[out.point].pos[0])
-        view.label(tuple(piv), f"ψ = {format_number(math.degrees(st.stroke), 1)}°", 3.5, gap_mm=12.0, prefer_deg=-45)
+        rich = rl.Rich(f"ψ = {format_number(math.degrees(st.stroke), 1)}°")
+        rl.place_rich(view, rl.around(view.transform(tuple(piv)), rich, 3.5, -45.0, gaps=(12.0, 16.0, 20.0)),
+                      rich, 3.5, inside=_inside(view))
         return
     p0 = np.asarray(data.extremes.points[out.point].pos[0])
     p1 = np.asarray(data.extremes.points[out.point].pos[1])
@@ -270,7 +280,7 @@ def _draw_letters(view: View, project: Project, data: SchemeData) -> None:
     for name in pts:
         p = view.transform(tuple(pts[name]))
         prefer = math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
-        rl.place_rich(view, rl.around(p, rl.Rich(name), 5.0, prefer), rl.Rich(name), 5.0)
+        rl.place_rich(view, rl.around(p, rl.Rich(name), 5.0, prefer), rl.Rich(name), 5.0, inside=_inside(view))
     if i != 0:
         p0s = _pts(data.kin, 0)
         for name in p0s:
@@ -279,7 +289,7 @@ def _draw_letters(view: View, project: Project, data: SchemeData) -> None:
             p = view.transform(tuple(p0s[name]))
             prefer = math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
             rich = rl.Rich(name, "", "0")
-            rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0)
+            rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0, inside=_inside(view))
     for k, m in sorted(data.kin.coms.items()):
         pos = tuple(np.asarray(m.pos[i]))
         if any(np.allclose(pos, pts[n]) for n in pts):
@@ -287,7 +297,7 @@ def _draw_letters(view: View, project: Project, data: SchemeData) -> None:
         view.circle_mm(pos, 1.0, "contour")
         p = view.transform(pos)
         rich = rl.Rich("S", "", str(k))
-        rl.place_rich(view, rl.around(p, rich, 5.0, 90.0), rich, 5.0)
+        rl.place_rich(view, rl.around(p, rich, 5.0, 90.0), rich, 5.0, inside=_inside(view))
 
 
 def _draw_numbers(view: View, project: Project, data: SchemeData) -> None:
@@ -307,4 +317,4 @@ def _draw_numbers(view: View, project: Project, data: SchemeData) -> None:
         # keep the number outside the crank circle
         r = math.dist(p, o)
         cands = [q for q in cands if math.dist(q, o) > r] or cands
-        rl.place_rich(view, cands, rich, 3.5)
+        rl.place_rich(view, cands, rich, 3.5, inside=_inside(view))

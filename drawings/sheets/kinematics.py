@@ -6,9 +6,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from drawings import style
 from drawings.layout import Rect
-from drawings.primitives import format_number, format_significant
+from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_diagrams as kd
 from drawings.scenes import kinematics_plans as kp
@@ -22,11 +24,12 @@ TITLE = "Кинематический анализ рычажного механ
 
 #: The scheme's view (with its padding) is at most this big, mm.
 SCHEME_MAX_MM = (440.0, 300.0)
-SCHEME_PAD_MM = 28.0
+#: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
+SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
 #: Intervals of the φ axis of the diagrams: a multiple of the positions, at least this many.
 MIN_INTERVALS = 24
 #: The small velocity plans: the crank's vector is at most this long, mm.
-SMALL_PLAN_MM = 36.0
+SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
 
 
 def available(project: Project) -> bool:
@@ -68,32 +71,45 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     # the scheme
     data = ks.scheme_data(project, i)
     b = ks.bounds(project, data)
-    k, scale_text = ks.gost_scale(b[2] - b[0], b[3] - b[1], SCHEME_MAX_MM[0] - 2 * SCHEME_PAD_MM,
-                                  SCHEME_MAX_MM[1] - 2 * SCHEME_PAD_MM)
-    scheme = sheet.add_model_view("scheme", b, k, padding_mm=SCHEME_PAD_MM, preferred="top-left")
+    k, scale_text = ks.gost_scale(b[2] - b[0], b[3] - b[1],
+                                  SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
+                                  SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
+    scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
     # the diagrams
     d = diagrams_of(project)
     if d is not None:
         kd.add_diagrams_view(sheet, d, len(project.phi), project.strokes.working_deg, "top-right")
-    # the plans of the analysed position
+    # the plans of the analysed position (the note's scales), the table of scales
     keys = image_keys(project)
     vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
+    add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
     kp.add_plan_view(sheet, "plan_v", vplan, keys, f"План скоростей, положение {i}", "bottom-left")
     kp.add_plan_view(sheet, "plan_a", aplan, keys, f"План ускорений, положение {i}", "bottom-left")
-    # the small velocity plans of all positions
-    small = small_plans(project)
-    kp.add_small_plans(sheet, small, keys, "bottom-left")
-    add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
+    # the velocity plans of all positions in small form, as large as the room left allows
+    for crank_mm in SMALL_PLAN_MM:
+        if kp.add_small_plans(sheet, small_plans(project, crank_mm), keys, "bottom-left") is not None:
+            break
     return sheet
 
 
-def small_plans(project: Project) -> list[Plan]:
+def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float) -> View:
+    """The scheme's view: model bounds ``b`` at ``k`` mm per metre with padding, more below (the
+    scale caption) and above (the title)."""
+    left, bottom, right, top = SCHEME_PADS_MM
+    w = (b[2] - b[0]) * k + left + right
+    h = (b[3] - b[1]) * k + bottom + top
+    view = sheet.add_view("scheme", w, h, preferred="top-left")
+    view.transform = Transform(k, (b[0], b[1]), (view.rect.x0 + left, view.rect.y0 + bottom))
+    return view
+
+
+def small_plans(project: Project, crank_mm: float) -> list[Plan]:
+    """Velocity plans of every position at one round scale, the crank's vector ≤ ``crank_mm``."""
     kin = project.kinematics
     tip = project.linkage.drive_tip
-    import numpy as np
     v_tip = float(np.hypot(*np.asarray(kin.points[tip].vel[0])))
-    mu = round_scale(v_tip, SMALL_PLAN_MM)
+    mu = round_scale(v_tip, crank_mm)
     return [build_plans(project.linkage, project.structure, kin, j, mu_v=mu)[0] for j in range(len(project.phi))]
 
 
