@@ -16,9 +16,11 @@ def example(name: str, at_deg=None) -> Project:
 
 
 def slider_crank(r: float, l: float, e: float = 0.0, omega: float = 10.0, m2: float = 2.0, j2: float = 0.02,
-                 m3: float = 3.0, force: float = 500.0, g: float = 9.81, phi_deg: float = 30.0) -> Project:
+                 m3: float = 3.0, force: float = 500.0, g: float = 9.81, phi_deg: float = 31.7) -> Project:
     """Crank O–A (r), rod A–B (l) with mass m2 and J2, slider B (m3) on the line y = e, a constant
-    force ``force`` along +x on the slider."""
+    force ``force`` along +x on the slider. The sketch stands at 31.7° (not 30°): with the sketch at
+    30° the stroke search of reportgen.kinematics.extremes can land a grid point on a dead centre and
+    brentq fails (reported; e.g. r = 0.125, l = 0.25, e = 0, ω = −2)."""
     ph = math.radians(phi_deg)
     A = (r * math.cos(ph), r * math.sin(ph))
     B = (A[0] + math.sqrt(l * l - (A[1] - e) ** 2), e)
