@@ -185,7 +185,8 @@ def _draw_guides(view: View, project: Project, data: SchemeData, centre: np.ndar
         p = lp + d * (t0 - np.dot(lp, d)) + off
         q = lp + d * (t1 - np.dot(lp, d)) + off
         # hatch on the side of n (away from the mechanism): ground() hatches on the right of p→q
-        side = -1.0 if np.cross(q - p, n) < 0 else 1.0
+        t = q - p
+        side = -1.0 if t[0] * n[1] - t[1] * n[0] < 0 else 1.0
         view.ground(tuple(p), tuple(q), side=side)
     pos = data.analysed
     for g in lk.ground:
@@ -306,9 +307,9 @@ def _draw_numbers(view: View, project: Project, data: SchemeData) -> None:
     o = view.transform(tuple(_pts(data.kin, 0)[lk.drive_axis]))
     items = [(str(i), tuple(np.asarray(data.kin.points[lk.drive_tip].pos[i]))) for i in range(len(data.kin.phi))]
     if data.extremes is not None:
-        items.append(("0'" if data.start_is_zero else "к", tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[1]))))
+        items.append(("0'" if data.start_is_zero else "к.р.х.", tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[1]))))
         if not data.start_is_zero:
-            items.append(("н", tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[0]))))
+            items.append(("н.р.х.", tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[0]))))
     for text, pos in items:
         p = view.transform(pos)
         ang = math.degrees(math.atan2(p[1] - o[1], p[0] - o[0]))

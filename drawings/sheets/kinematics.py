@@ -15,6 +15,7 @@ from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_diagrams as kd
 from drawings.scenes import kinematics_plans as kp
 from drawings.scenes import kinematics_scheme as ks
+from reportgen.errors import BuildError
 from reportgen.diagrams import Diagrams, build_diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
@@ -23,7 +24,7 @@ NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
 TITLE = "Кинематический анализ рычажного механизма"
 
 #: The scheme's view (with its padding) is at most this big, mm.
-SCHEME_MAX_MM = (440.0, 300.0)
+SCHEME_MAX_MM = (470.0, 400.0)
 #: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
 #: Intervals of the φ axis of the diagrams: a multiple of the positions, at least this many.
@@ -66,14 +67,35 @@ def image_keys(project: Project) -> set[str]:
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    """The sheet at the largest ГОСТ scale of the scheme with which every view fits."""
     i = analysed_position(project)
-    # the scheme
     data = ks.scheme_data(project, i)
     b = ks.bounds(project, data)
-    k, scale_text = ks.gost_scale(b[2] - b[0], b[3] - b[1],
-                                  SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
-                                  SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
+    failure: BuildError | None = None
+    for k, scale_text in scheme_scales(b):
+        try:
+            return draw_at(project, number, count, data, b, k, scale_text)
+        except BuildError as exc:
+            if exc.stage != "sheet layout":
+                raise
+            failure = exc
+    assert failure is not None
+    raise failure
+
+
+def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str]]:
+    """ГОСТ 2.302 scales to try for the scheme, the largest that fits ``SCHEME_MAX_MM`` first."""
+    width, height = b[2] - b[0], b[3] - b[1]
+    k, _ = ks.gost_scale(width, height, SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
+                         SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
+    out = [(1000.0 * p / r, f"{format_number(p, 1)}:{format_number(r, 1)}") for p, r in ks.GOST_SCALES]
+    return [c for c in out if c[0] <= k * (1 + 1e-9)]
+
+
+def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
+            b: tuple[float, float, float, float], k: float, scale_text: str) -> Sheet:
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    i = data.analysed
     scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
     # the diagrams
