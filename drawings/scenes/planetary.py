@@ -213,8 +213,9 @@ def triangle_scene(tri, x_line: float, scheme_marks: dict[str, Point] | None = N
     s.arrows.append(((x_line, b[1]), (x_line + b[0], b[1]), "vB"))
     names = {"1": "1", "2": "2", "H": "H"}
     for seg in tri.lines:
-        mx = x_line + 0.45 * seg.end[0] + 0.55 * seg.start[0]
-        my = 0.45 * seg.end[1] + 0.55 * seg.start[1]
+        t = 0.2 if seg.label == "2" else 0.45     # the planet's line: near C, away from v_B
+        mx = x_line + t * seg.end[0] + (1 - t) * seg.start[0]
+        my = t * seg.end[1] + (1 - t) * seg.start[1]
         s.labels.append(SceneLabel(names[seg.label], (mx - 5, my + 3)))
     s.marks.update({"O": (x_line, 0.0)})
     return s

@@ -37,7 +37,7 @@ def draw(project, number: int, count: int) -> Sheet:
         draw_sliding(sheet, pair, slide_rect, scale.factor)
     if task.planetary is not None and task.planetary.module is not None:
         stage = project.planetary
-        region = right if task.gears is not None else Rect(left.x0, left.y0, right.x1, right.y1)
+        region = right if task.gears is not None else Rect(left.x0, left.y0, right.x1, left.y1)
         draw_reducer(sheet, stage, Rect(region.x0, sheet.title_rect.y1 + 8, region.x1, region.y1))
     # the views have different scales, each written in its caption: «Масштаб» stays blank (ГОСТ 2.104)
     return sheet
