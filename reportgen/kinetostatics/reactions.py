@@ -25,8 +25,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterable
-
 import numpy as np
 
 from ..errors import SingularPositionError
@@ -320,6 +318,3 @@ def solve_reactions(linkage: Linkage, structure: Structure, kin: KinematicsResul
     return Reactions(kin, loads, tuple(pairs), d, linkage.drive_axis, linkage.drive_tip, _ro(M_b), _ro(F_b), _ro(A),
                      _ro(R0d_couple), L)
 
-
-def link_ids(reactions: Reactions) -> Iterable[int]:
-    return sorted({k for p in reactions.pairs for k in (p.lo, p.hi) if k != 0})
