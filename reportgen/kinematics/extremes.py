@@ -102,7 +102,12 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
             roots.append(grid[i])
         elif v[i] * v[j] < 0:
             lo, hi = (a, b) if a < b else (b, a)
-            roots.append(brentq(lambda ph: _velocity_at(model, out, ph), lo, hi, xtol=ROOT_XTOL))
+            f = lambda ph: _velocity_at(model, out, ph)  # noqa: E731
+            flo, fhi = f(lo), f(hi)
+            if flo * fhi < 0:
+                roots.append(brentq(f, lo, hi, xtol=ROOT_XTOL))
+            else:   # a grid point sits on the dead centre itself (|v| at rounding level)
+                roots.append(lo if abs(flo) <= abs(fhi) else hi)
     if len(roots) < 2:
         raise NoExtremesError("the output link has no extreme positions (it turns fully)")
     rq, _ = model.positions(np.array(roots))

@@ -69,3 +69,13 @@ def test_scaling_is_exact(k):
         assert np.allclose(b.points[name].pos, k * a.points[name].pos, rtol=1e-12, atol=1e-15 * k)
         assert np.allclose(b.points[name].acc, k * a.points[name].acc, rtol=1e-10, atol=1e-12 * k)
     assert np.allclose(b.links[2].epsilon, a.links[2].epsilon, rtol=1e-10, atol=1e-10)
+
+
+def test_dead_centre_on_a_grid_point():
+    """A central slider-crank turning clockwise with its sketch where a grid point of the extreme
+    search falls on a dead centre (reported by the kinetostatics tests)."""
+    from reportgen.kinematics.extremes import find_strokes
+    m = model_from_text(slider_crank(0.125, 0.25, 0.0, phi_deg=30.0, omega=-2.0))
+    st = find_strokes(m)
+    assert st.working_deg == pytest.approx(180.0, abs=1e-6) and st.idle_deg == pytest.approx(180.0, abs=1e-6)
+    assert st.stroke == pytest.approx(0.25, rel=1e-12)
