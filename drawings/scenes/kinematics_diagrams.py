@@ -27,12 +27,18 @@ class Names:
     mu_s: str
     mu_v: str
     mu_a: str
+    symbols: tuple[str, str, str]       # the scales' symbols
+    titles: tuple[str, str, str]        # the diagrams' titles
 
 
 def names(d: Diagrams) -> Names:
+    """Axis names, units of the scales, their symbols and the titles: a slider's s, V, a or a
+    rocker's ψ, ω, ε."""
     if d.unit == "м":
-        return Names("S, м", "V, м/с", "a, м/с²", "м/мм", "(м/с)/мм", "(м/с²)/мм")
-    return Names("ψ, рад", "ω, рад/с", "ε, рад/с²", "рад/мм", "(рад/с)/мм", "(рад/с²)/мм")
+        return Names("S, м", "V, м/с", "a, м/с²", "м/мм", "(м/с)/мм", "(м/с²)/мм", ("μs", "μv", "μa"),
+                     ("Диаграмма перемещения", "Диаграмма скорости", "Диаграмма ускорения"))
+    return Names("ψ, рад", "ω, рад/с", "ε, рад/с²", "рад/мм", "(рад/с)/мм", "(рад/с²)/мм", ("μψ", "μω", "με"),
+                 ("Диаграмма угла поворота", "Диаграмма угловой скорости", "Диаграмма углового ускорения"))
 
 
 def _x_nodes(d: Diagrams) -> np.ndarray:
@@ -100,10 +106,9 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -
         top = oy - down - GAP_MM
     xs = _x_nodes(d)
     dense_x = _dense_x(d)
-    step = max(d.n // positions, 1) if d.n % positions == 0 else 0
     # ---- s(φ)
     o = origins[0]
-    _axes(view, o, d, ranges[0], nm.s, numbered=step, positions=positions)
+    _axes(view, o, d, ranges[0], nm.s, numbered=True, positions=positions)
     view.curve(o[0] + dense_x, o[1] + np.asarray(d.s) / d.mu_s, "thin")
     view.polyline([(o[0] + x, o[1] + y) for x, y in zip(xs, d.s_nodes_mm)], "contour")
     for x, y in zip(xs, d.s_nodes_mm):
@@ -113,10 +118,10 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -
     view.line((o[0] + xw, o[1]), (o[0] + xw, ytop + 4.0), "axis")
     view.dimension((o[0], ytop), (o[0] + xw, ytop), offset_mm=4.0, text="φр.х.")
     view.dimension((o[0] + xw, ytop), (o[0] + d.axis_mm, ytop), offset_mm=4.0, text="φх.х.")
-    _title(view, o, ranges[0], f"Диаграмма перемещения, μs = {format_significant(d.mu_s, 4)} {nm.mu_s}")
+    _title(view, o, ranges[0], f"{nm.titles[0]}, {nm.symbols[0]} = {format_significant(d.mu_s, 4)} {nm.mu_s}")
     # ---- v(φ)
     o = origins[1]
-    _axes(view, o, d, ranges[1], nm.v, numbered=0, positions=positions)
+    _axes(view, o, d, ranges[1], nm.v, numbered=False, positions=positions)
     _pole(view, o, d.H1, d.v_chord_mm, "P", "1")
     view.curve(o[0] + dense_x, o[1] + np.asarray(d.v) / d.mu_v, "thin")
     steps = _v_steps(d)
@@ -124,10 +129,10 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -
     mids = [((a + b) / 2, y) for a, b, y in steps]
     ends = [(0.0, (mids[0][1] + mids[-1][1]) / 2)] + mids + [(d.axis_mm, (mids[0][1] + mids[-1][1]) / 2)]
     view.polyline([(o[0] + x, o[1] + y) for x, y in ends], "contour")
-    _title(view, o, ranges[1], f"Диаграмма скорости, μv = {format_significant(d.mu_v, 4)} {nm.mu_v}")
+    _title(view, o, ranges[1], f"{nm.titles[1]}, {nm.symbols[1]} = {format_significant(d.mu_v, 4)} {nm.mu_v}")
     # ---- a(φ)
     o = origins[2]
-    _axes(view, o, d, ranges[2], nm.a, numbered=0, positions=positions)
+    _axes(view, o, d, ranges[2], nm.a, numbered=False, positions=positions)
     _pole(view, o, d.H2, d.a_chord_mm, "P", "2")
     view.curve(o[0] + dense_x, o[1] + np.asarray(d.a) / d.mu_a, "thin")
     a_steps = _a_steps(d)
@@ -136,7 +141,7 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -
                  for a, b, y in a_steps if b - a > d.axis_mm / d.n / 2)
     pts = [(0.0, d.a_chord_mm[-1])] + pts + [(d.axis_mm, d.a_chord_mm[-1])]
     view.polyline([(o[0] + x, o[1] + y) for x, y in pts], "contour")
-    _title(view, o, ranges[2], f"Диаграмма ускорения, μa = {format_significant(d.mu_a, 4)} {nm.mu_a}")
+    _title(view, o, ranges[2], f"{nm.titles[2]}, {nm.symbols[2]} = {format_significant(d.mu_a, 4)} {nm.mu_a}")
 
 
 def _title(view: View, o: tuple[float, float], rng: tuple[float, float], text: str) -> None:
@@ -144,16 +149,15 @@ def _title(view: View, o: tuple[float, float], rng: tuple[float, float], text: s
 
 
 def _axes(view: View, o: tuple[float, float], d: Diagrams, rng: tuple[float, float], y_label: str,
-          numbered: int, positions: int) -> None:
-    xs = _x_nodes(d)
-    ticks = []
-    for j, x in enumerate(xs):
-        text = ""
-        if numbered and j % numbered == 0:
-            text = str((j // numbered) % positions)
-        ticks.append((float(x), text))
+          numbered: bool, positions: int) -> None:
+    ticks = [(float(x), "") for x in _x_nodes(d)]
     view.axes(o, d.axis_mm + RIGHT_MM - 6.0, rng[0] + 10.0, rng[1], x_label="φ", y_label=y_label,
               x_ticks=ticks)
+    if numbered:
+        # the mechanism's positions along the φ axis (the last one is position 0 again)
+        for j in range(positions + 1):
+            x = o[0] + d.axis_mm * j / positions
+            view.text((x, o[1] - 2.5), str(j % positions), 3.5, "top-center")
 
 
 def _pole(view: View, o: tuple[float, float], H: float, ordinates, name: str, index: str) -> None:

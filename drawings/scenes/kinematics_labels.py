@@ -147,7 +147,14 @@ def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: 
     """Draw ``label`` at the first candidate centre (sheet mm) whose box overlaps no text and
     crosses no line (and lies ``inside``), else at the one with the fewest conflicts; an
     ``optional`` label that would overlap a text (or leave ``inside``) is not drawn."""
-    best: tuple[tuple[int, int, int, int], Vec] | None = None
+    return place_passes(canvas, [(candidates, 0)], label, height, inside, optional)
+
+
+def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], label: Label,
+                 height: float, inside: Polygon | None = None, optional: bool = False) -> Polygon | None:
+    """Like :func:`place_rich` over several passes of (candidates, lines it may cross): the first
+    candidate of the first pass that overlaps no text, stays ``inside`` and crosses at most that
+    many lines wins; otherwise the candidate with the fewest conflicts over all passes."""
     boxes = [b for _, b in canvas.annotations.boxes]
     tree = shapely.STRtree(boxes) if boxes else None
 
@@ -156,14 +163,20 @@ def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: 
             return 0
         return sum(1 for j in tree.query(poly) if poly.intersection(boxes[j]).area > 1e-6)
 
-    for rank, c in enumerate(candidates):
-        poly = rich_box(label, c, height)
-        out = 0 if inside is None or inside.contains(poly) else 1
-        score = (out, hits(poly), canvas.annotations.crossings(poly), rank)
-        if best is None or score < best[0]:
-            best = (score, c)
-        if score[:3] == (0, 0, 0):
-            break
+    best: tuple[tuple[int, int, int, int], Vec] | None = None
+    rank = 0
+    for candidates, tolerate in passes:
+        for c in candidates:
+            poly = rich_box(label, c, height)
+            out = 0 if inside is None or inside.contains(poly) else 1
+            h = hits(poly)
+            crossings = canvas.annotations.crossings(poly) if out == 0 and h == 0 else 99
+            if out == 0 and h == 0 and crossings <= tolerate:
+                return draw_rich(canvas, c, label, height)
+            score = (out, h, crossings, rank)
+            rank += 1
+            if best is None or score < best[0]:
+                best = (score, c)
     if best is None or (optional and best[0][:2] != (0, 0)):
         return None
     return draw_rich(canvas, best[1], label, height)
@@ -197,10 +210,20 @@ def along(a: Vec, b: Vec, rich: Label, height: float) -> list[Vec]:
     reach = abs(nx) * hw + abs(ny) * hh          # half-extent of the box across the segment
     out = []
     for gap in (1.0, 3.0, 6.0):
-        for t in (0.5, 0.35, 0.65, 0.2, 0.8):
+        for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9):
             m = (a[0] + ux * d * t, a[1] + uy * d * t)
             for side in (1, -1):
                 k = side * (reach + gap)
                 out.append((m[0] + nx * k, m[1] + ny * k))
+    return out
+
+
+def along_passes(a: Vec, b: Vec, rich: Label, height: float) -> list[tuple[list[Vec], int]]:
+    """Passes for the name of the vector a→b: beside it crossing no line, then crossing one line
+    (still clearly its name), then farther round its middle."""
+    near = along(a, b, rich, height)
     middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-    return out + around(middle, rich, height, math.degrees(math.atan2(ny, nx)), gaps=(4.0, 8.0, 12.0, 16.0))
+    d = math.dist(a, b) or 1.0
+    normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1]))) if d else 90.0
+    far = around(middle, rich, height, normal, gaps=(4.0, 8.0, 12.0, 16.0))
+    return [(near, 0), (near, 1), (far, 0)]

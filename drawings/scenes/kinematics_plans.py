@@ -124,7 +124,7 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
             if math.dist(a, b) < 1.0:
                 continue
             rich = rl.from_tex(c.name)
-            rl.place_rich(view, rl.along(a, b, rich, 3.5), rich, 3.5, inside=inside)
+            rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside)
     return drawn
 
 

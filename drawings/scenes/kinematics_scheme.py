@@ -8,10 +8,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import LineString, Polygon
+from shapely.geometry import Polygon
 
 from drawings.primitives import format_number
-from drawings.sheet import Sheet, View
+from drawings.sheet import View
 from drawings.scenes import kinematics_labels as rl
 from reportgen.kinematics import KinematicsResult
 from reportgen.kinematics.constraints import rot
@@ -86,8 +86,7 @@ def _centre(data: SchemeData) -> np.ndarray:
 
 
 def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str, mu_l: float) -> None:
-    centre = _centre(data)
-    _draw_guides(view, project, data, centre)
+    _draw_guides(view, project, data)
     _draw_trajectories(view, project, data)
     for i in range(len(data.kin.phi)):
         if i not in data.bold:
@@ -98,7 +97,7 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     for i in data.bold:
         _draw_position(view, project, data.kin, i, bold=True)
     _draw_crank_angles(view, project, data)
-    _draw_stroke(view, project, data, centre)
+    _draw_stroke(view, project, data)
     _draw_letters(view, project, data)
     _draw_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
@@ -143,7 +142,7 @@ def _draw_position(view: View, project: Project, kin: KinematicsResult, i: int, 
         if bold:
             view.slider(pts[s.point], ang, *BLOCK_MM, guide_mm=None, hinge_mm=HINGE_MM)
         else:
-            view.slider(pts[s.point], ang, BLOCK_MM[0] * 0.6, BLOCK_MM[1] * 0.6, guide_mm=None,
+            view.slider(pts[s.point], ang, BLOCK_MM[0] * 0.7, BLOCK_MM[1], guide_mm=None,
                         hinge_mm=0, layer=layer)
 
 
@@ -167,7 +166,7 @@ def _pivot_direction(project: Project, kin: KinematicsResult, i: int, name: str)
     return float(round(ang / 90.0) * 90.0)
 
 
-def _draw_guides(view: View, project: Project, data: SchemeData, centre: np.ndarray) -> None:
+def _draw_guides(view: View, project: Project, data: SchemeData) -> None:
     """Frame guides of the sliders (hatched lines across the travel) and the fixed pivots."""
     lk = project.linkage
     for s in lk.slides:
@@ -176,8 +175,8 @@ def _draw_guides(view: View, project: Project, data: SchemeData, centre: np.ndar
         d = np.asarray(s.line_dir, float)
         n = np.array([-d[1], d[0]])
         lp = np.asarray(s.line_point, float)
-        if np.dot(centre - lp, n) > 0:
-            n = -n
+        if np.dot(_towards_links(project, data, s.link, s.point), n) > 0:
+            n = -n          # the guide and its hatching on the side away from the coupler
         travel = np.asarray(data.dense.points[s.point].pos) @ d
         half = (BLOCK_MM[0] / 2 + 12.0) / view.transform.scale
         t0, t1 = float(travel.min()) - half, float(travel.max()) + half
@@ -193,6 +192,20 @@ def _draw_guides(view: View, project: Project, data: SchemeData, centre: np.ndar
         if not any(0 in j.bodies and j.name == g for j in lk.joints):
             continue
         view.fixed_pivot(_pts(data.kin, pos)[g], _pivot_direction(project, data.kin, pos, g))
+
+
+def _towards_links(project: Project, data: SchemeData, link: int, point: str) -> np.ndarray:
+    """Mean direction from a slider's point to the other points of the links joined to it."""
+    lk = project.linkage
+    p = np.asarray(data.kin.points[point].pos)
+    acc = np.zeros(2)
+    for k in lk.moving:
+        if k == link or point not in lk.bodies[k].points:
+            continue
+        for other in lk.bodies[k].points:
+            if other != point:
+                acc += (np.asarray(data.kin.points[other].pos) - p).sum(axis=0)
+    return acc
 
 
 def _draw_trajectories(view: View, project: Project, data: SchemeData) -> None:
@@ -248,7 +261,7 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
         rl.place_rich(view, rl.around(mid, rich, 3.5, am), rich, 3.5, inside=_inside(view))
 
 
-def _draw_stroke(view: View, project: Project, data: SchemeData, centre: np.ndarray) -> None:
+def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
     """The stroke H of a slider, dimensioned between its extreme positions (beyond the guide)."""
     st = project.strokes
     if st is None or data.extremes is None:
@@ -263,11 +276,12 @@ def _draw_stroke(view: View, project: Project, data: SchemeData, centre: np.ndar
     p0 = np.asarray(data.extremes.points[out.point].pos[0])
     p1 = np.asarray(data.extremes.points[out.point].pos[1])
     d = p1 - p0
+    if d[0] < -1e-12 or (abs(d[0]) <= 1e-12 and d[1] < 0):
+        p0, p1, d = p1, p0, -d          # read from the left (text not upside down)
     n = np.array([-d[1], d[0]]) / (np.hypot(*d) or 1.0)
-    # the dimension line goes to the left of p0→p1: put it on the far side of the guide
-    if np.dot(centre - p0, n) > 0:
-        p0, p1 = p1, p0
-    view.dimension(tuple(p0), tuple(p1), offset_mm=BLOCK_MM[1] / 2 + 14.0, unit_factor=1000.0,
+    # beyond the guide, away from the coupler: the left of p0→p1 (offset > 0) or its right
+    side = -1.0 if np.dot(_towards_links(project, data, out.link, out.point), n) > 0 else 1.0
+    view.dimension(tuple(p0), tuple(p1), offset_mm=side * (BLOCK_MM[1] / 2 + 14.0), unit_factor=1000.0,
                    text=f"H = {format_number(st.stroke * 1000.0, 1)}")
 
 

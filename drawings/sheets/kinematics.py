@@ -4,8 +4,6 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from drawings import style
@@ -27,8 +25,8 @@ TITLE = "Кинематический анализ рычажного механ
 SCHEME_MAX_MM = (470.0, 400.0)
 #: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
-#: Intervals of the φ axis of the diagrams: a multiple of the positions, at least this many.
-MIN_INTERVALS = 24
+#: Intervals of the φ axis of the diagrams (as the note's section draws them).
+INTERVALS = 24
 #: The small velocity plans: the crank's vector is at most this long, mm.
 SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
 
@@ -49,15 +47,11 @@ def analysed_position(project: Project) -> int:
     return min(max(i, 0), n - 1)
 
 
-def intervals(positions: int) -> int:
-    return positions * math.ceil(MIN_INTERVALS / positions)
-
-
 def diagrams_of(project: Project) -> Diagrams | None:
     if project.strokes is None:
         return None
     return build_diagrams(project.model, project.strokes, float(project.phi[0]),
-                          n=intervals(len(project.phi)))
+                          n=INTERVALS)
 
 
 def image_keys(project: Project) -> set[str]:
@@ -144,9 +138,9 @@ def scale_rows(mu_l: float, scale_text: str, vplan: Plan, aplan: Plan, d: Diagra
         nm = kd.names(d)
         rows += [("μφ", "ось φ, диаграммы", f"{format_significant(d.mu_phi, 4)} рад/мм"),
                  ("μt", "ось t, диаграммы", f"{format_significant(d.mu_t, 4)} с/мм"),
-                 ("μs", "диаграмма перемещения", f"{format_significant(d.mu_s, 4)} {nm.mu_s}"),
-                 ("μv", "диаграмма скорости", f"{format_significant(d.mu_v, 4)} {nm.mu_v}"),
-                 ("μa", "диаграмма ускорения", f"{format_significant(d.mu_a, 4)} {nm.mu_a}"),
+                 *[(sym, title.replace("Диаграмма", "диаграмма"), f"{format_significant(mu, 4)} {unit}")
+                   for sym, title, mu, unit in zip(nm.symbols, nm.titles, (d.mu_s, d.mu_v, d.mu_a),
+                                                   (nm.mu_s, nm.mu_v, nm.mu_a))],
                  ("H1", "полюсное расстояние", f"{format_number(d.H1, 1)} мм"),
                  ("H2", "полюсное расстояние", f"{format_number(d.H2, 1)} мм")]
     return rows
