@@ -43,7 +43,8 @@ def blocking_contour_figure(pair):
         for i, ln in enumerate(lines):
             ax.plot(ln[:, 0], ln[:, 1], label=label if i == 0 else None, **_STYLES[name])
     ax.plot([choice.x1], [choice.x2], "o", color="k", ms=5, zorder=5)
-    ax.annotate(f"$x_1 = {comma(choice.x1)}$\n$x_2 = {comma(choice.x2)}$", (choice.x1, choice.x2),
+    x1_text, x2_text = (comma(v).replace(",", "{,}") for v in (choice.x1, choice.x2))
+    ax.annotate(f"$x_1 = {x1_text}$\n$x_2 = {x2_text}$", (choice.x1, choice.x2),
                 xytext=(8, 8), textcoords="offset points", fontsize=9,
                 bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.6", lw=0.5))
     ax.set_xlim(float(bc.x1[0]), float(bc.x1[-1]))
