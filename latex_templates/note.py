@@ -171,6 +171,17 @@ class _Namespace:
         return self.__getattr__(name)
 
 
+def _release(fig: Any) -> None:
+    """Let pyplot forget a figure once it is saved (its memory is freed; saving again still works)."""
+    import sys
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is not None:
+        try:
+            plt.close(fig)
+        except (TypeError, ValueError):
+            pass
+
+
 def _place_figure(obj: Any, fig_dir: Path, stem: str, section_key: str, name: str) -> FigureRef:
     """Save a matplotlib figure as PDF (no timestamp), or copy a file; return its reference."""
     fig_dir.mkdir(parents=True, exist_ok=True)
@@ -179,6 +190,7 @@ def _place_figure(obj: Any, fig_dir: Path, stem: str, section_key: str, name: st
         target = fig_dir / f"{safe}.pdf"
         obj.savefig(target, format="pdf", bbox_inches="tight",
                     metadata={"CreationDate": None, "ModDate": None, "Producer": None})
+        _release(obj)
     else:
         src = Path(obj)
         if not src.is_file():
