@@ -13,13 +13,9 @@ from __future__ import annotations
 
 import importlib
 
-#: (file stem, module) in the order of the sheets.
-SHEETS: tuple[tuple[str, str], ...] = (
-    ("sheet1-kinematics", "kinematics"),
-    ("sheet2-kinetostatics", "kinetostatics"),
-    ("sheet3-dynamics", "dynamics"),
-    ("sheet4-gears", "gears"),
-)
+#: The sheet modules in the order of the sheets; files are named ``sheet<N>-<name>`` with N the
+#: sheet's number among those the task has.
+SHEETS: tuple[str, ...] = ("kinematics", "kinetostatics", "dynamics", "gears")
 
 
 def sheet_module(name: str):
@@ -33,8 +29,8 @@ def sheet_module(name: str):
 
 def available_sheets(project) -> list[tuple[str, object]]:
     out = []
-    for stem, name in SHEETS:
+    for name in SHEETS:
         mod = sheet_module(name)
         if mod is not None and mod.available(project):
-            out.append((stem, mod))
+            out.append((f"sheet{len(out) + 1}-{name}", mod))
     return out

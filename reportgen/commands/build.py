@@ -152,5 +152,6 @@ def run(args: argparse.Namespace) -> int:
     t0 = time.perf_counter()
     build(args.task, out, quiet=args.quiet, pdf=not args.no_pdf, sheets=not args.no_sheets, latexmk=args.latexmk)
     if not args.quiet:
-        print(f"done in {time.perf_counter() - t0:.1f} s: {out}/report.pdf, {out}/sheets/, {out}/results.json")
+        made = (["report.pdf"] if not args.no_pdf else ["report.tex"]) + ([] if args.no_sheets else ["sheets/"])
+        print(f"done in {time.perf_counter() - t0:.1f} s: " + ", ".join(f"{out}/{m}" for m in made + ["results.json"]))
     return 0
