@@ -120,6 +120,15 @@ class Project:
         check = drive_check(drive, design.ratio) if drive is not None else None
         return PlanetaryStage(target, drive, design, triangle, check)
 
+    @cached_property
+    def dynamics(self):
+        """Reduced moments and inertia, work, ΔE, Wittenbauer, the flywheel, the integrated motion
+        (None if the task has no [dynamics] or no [mechanism])."""
+        if self.task.dynamics is None or self.task.mechanism is None:
+            return None
+        from .dynamics import dynamics_of
+        return dynamics_of(self)
+
     def loads_at(self, kin: KinematicsResult, inertia: bool = True):
         """External loads (+ inertia) at the positions of ``kin``."""
         from .loads import external_loads, inertia_loads
