@@ -14,7 +14,7 @@ from drawings.scenes import kinematics_labels as rl
 from reportgen.diagrams import Diagrams
 
 #: Space above a diagram's largest ordinate (title, dimensions) and between diagrams, mm.
-TOP_MM = 26.0
+TOP_MM = 32.0
 GAP_MM = 8.0
 RIGHT_MM = 28.0
 
@@ -86,14 +86,17 @@ def size(d: Diagrams) -> tuple[float, float]:
     return w, h
 
 
-def add_diagrams_view(sheet: Sheet, d: Diagrams, positions: int, working_deg: float, preferred: str) -> View:
+def add_diagrams_view(sheet: Sheet, d: Diagrams, positions: int, start_deg: float, working_deg: float,
+                      preferred: str) -> View:
     w, h = size(d)
     view = sheet.add_view("diagrams", w, h, preferred=preferred)
-    draw_diagrams(view, d, positions, working_deg)
+    draw_diagrams(view, d, positions, start_deg, working_deg)
     return view
 
 
-def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -> None:
+def draw_diagrams(view: View, d: Diagrams, positions: int, start_deg: float, working_deg: float) -> None:
+    """The three diagrams; the working stroke starts ``start_deg`` after position 0 and lasts
+    ``working_deg`` of the crank."""
     nm = names(d)
     left = max(d.H1, d.H2) + 22.0
     ranges = _ranges(d)
@@ -113,11 +116,8 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -
     view.polyline([(o[0] + x, o[1] + y) for x, y in zip(xs, d.s_nodes_mm)], "contour")
     for x, y in zip(xs, d.s_nodes_mm):
         view.circle_mm((o[0] + x, o[1] + y), 0.7, "contour")
-    xw = working_deg / 360.0 * d.axis_mm
-    ytop = o[1] + ranges[0][0] + 3.0
-    view.line((o[0] + xw, o[1]), (o[0] + xw, ytop + 4.0), "axis")
-    view.dimension((o[0], ytop), (o[0] + xw, ytop), offset_mm=4.0, text="φр.х.")
-    view.dimension((o[0] + xw, ytop), (o[0] + d.axis_mm, ytop), offset_mm=4.0, text="φх.х.")
+    ytop = o[1] + ranges[0][0] + 12.0                # above the arrow of the y axis
+    _strokes(view, o, d.axis_mm, ytop, start_deg, working_deg)
     _title(view, o, ranges[0], f"{nm.titles[0]}, {nm.symbols[0]} = {format_significant(d.mu_s, 4)} {nm.mu_s}")
     # ---- v(φ)
     o = origins[1]
@@ -144,8 +144,29 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, working_deg: float) -
     _title(view, o, ranges[2], f"{nm.titles[2]}, {nm.symbols[2]} = {format_significant(d.mu_a, 4)} {nm.mu_a}")
 
 
+def _spans(a: float, b: float, length: float) -> list[tuple[float, float]]:
+    """The interval a → b (mm) on a periodic axis of ``length``, split where it wraps round."""
+    a, b = a % length, b % length
+    if b > a + 1e-9:
+        return [(a, b)]
+    return [(x, y) for x, y in ((a, length), (0.0, b)) if y - x > 1e-9]
+
+
+def _strokes(view: View, o: tuple[float, float], length: float, y: float, start_deg: float,
+             working_deg: float) -> None:
+    """Vertical lines at the extreme positions and the spans φр.х., φх.х. above the s diagram."""
+    xs = start_deg / 360.0 * length
+    xe = (start_deg + working_deg) / 360.0 * length
+    for x in {round(xs % length, 9), round(xe % length, 9)}:
+        view.line((o[0] + x, o[1]), (o[0] + x, y + 4.0), "axis")
+    for (a, b), text in [(span, "φр.х.") for span in _spans(xs, xe, length)] + \
+                        [(span, "φх.х.") for span in _spans(xe, xs + length, length)]:
+        view.dimension((o[0] + a, y), (o[0] + b, y), offset_mm=4.0,
+                       text=text if b - a > 14.0 else "")
+
+
 def _title(view: View, o: tuple[float, float], rng: tuple[float, float], text: str) -> None:
-    view.text((o[0] + 30.0, o[1] + rng[0] + TOP_MM - 8.0), text, 5.0, "bottom-left")
+    view.text((o[0] + 30.0, o[1] + rng[0] + TOP_MM - 7.0), text, 5.0, "bottom-left")
 
 
 def _axes(view: View, o: tuple[float, float], d: Diagrams, rng: tuple[float, float], y_label: str,
@@ -155,9 +176,10 @@ def _axes(view: View, o: tuple[float, float], d: Diagrams, rng: tuple[float, flo
               x_ticks=ticks)
     if numbered:
         # the mechanism's positions along the φ axis (the last one is position 0 again)
+        y = o[1] - max(rng[1] - 4.0, 0.0) - 2.5        # under the curve where it dips below the axis
         for j in range(positions + 1):
             x = o[0] + d.axis_mm * j / positions
-            view.text((x, o[1] - 2.5), str(j % positions), 3.5, "top-center")
+            view.text((x, y), str(j % positions), 3.5, "top-center")
 
 
 def _pole(view: View, o: tuple[float, float], H: float, ordinates, name: str, index: str) -> None:

@@ -4,6 +4,8 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from drawings import style
@@ -95,7 +97,9 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     # the diagrams
     d = diagrams_of(project)
     if d is not None:
-        kd.add_diagrams_view(sheet, d, len(project.phi), project.strokes.working_deg, "top-right")
+        st = project.strokes
+        start = math.degrees((d.sign * (st.phi_start - d.phi0)) % (2 * math.pi))
+        kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
     keys = image_keys(project)
     vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
