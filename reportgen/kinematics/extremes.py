@@ -75,7 +75,9 @@ def output_coordinate(model: KinematicModel, out: Output, q: np.ndarray, qd: np.
         Rp = rot(q[:, out.link, 2], s.point_local)
         v = qd[:, out.link, :2] + qd[:, out.link, 2][:, None] * np.stack((-Rp[:, 1], Rp[:, 0]), -1)
         return x, v @ u
-    x = np.unwrap(q[:, out.link, 2])
+    # the rocker's angle measured from its sketch angle, in (−π, π]: continuous over its swing
+    ref = model.linkage.bodies[out.link].sketch_pose[2]
+    x = np.remainder(q[:, out.link, 2] - ref + math.pi, 2 * math.pi) - math.pi
     return x if qd is None else (x, qd[:, out.link, 2])
 
 
