@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
-	texlive-fonts-recommended latexmk fonts-liberation poppler-utils librecad xvfb xauth
+	texlive-fonts-recommended latexmk fonts-liberation fonts-texgyre-math poppler-utils librecad xvfb xauth
 DEMO_OUT ?= demo
 
 .PHONY: demo test system venv bench clean

@@ -12,6 +12,7 @@ STYLE = {
     "font.family": "serif",
     "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],
     "font.size": 10,
+    "mathtext.fontset": "stix",
     "axes.grid": True,
     "grid.linewidth": 0.3,
     "grid.alpha": 0.5,

@@ -6,6 +6,7 @@ import json
 import re
 import shutil
 import subprocess
+import unicodedata
 import sys
 from pathlib import Path
 
@@ -24,7 +25,8 @@ def run(*args: str) -> subprocess.CompletedProcess:
 
 def pdftext(pdf: Path) -> str:
     txt = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
-    return txt.replace("\u037e", ";").replace("\u2212", "-")
+    # NFKC: math italic letters (unicode-math) to plain ones, U+037E to ';'
+    return unicodedata.normalize("NFKC", txt).replace("\u2212", "-")
 
 
 @pytest.fixture(scope="module")

@@ -21,11 +21,11 @@ pytestmark = pytest.mark.slow
 
 
 def pdf_text(pdf) -> str:
-    """The PDF's text, NFC-normalised: xdvipdfmx maps Liberation's ';' glyph to U+037E (Greek
+    """The PDF's text, NFKC-normalised: xdvipdfmx maps Liberation's ';' glyph to U+037E (Greek
     question mark, canonically equal to ';')."""
     out = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], check=True,
                          capture_output=True, text=True).stdout
-    return unicodedata.normalize("NFC", out)
+    return unicodedata.normalize("NFKC", out)
 
 
 @pytest.fixture(scope="module")
