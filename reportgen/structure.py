@@ -244,6 +244,12 @@ def analyse_structure(linkage: Linkage) -> Structure:
             elif W >= 2:
                 cause = (f"W = {W}: the chain needs {W} drivers, or a pair is missing (a point listed by one "
                          f"link only, or a slide not given)")
+                jointed = {j.name for j in linkage.joints} | {(s.link, s.point) for s in linkage.slides}
+                lone = [f"{name} (link {k})" for k in left for name in linkage.bodies[k].points
+                        if name not in jointed and (k, name) not in jointed]
+                if lone:
+                    cause += (f"; points listed by one link only: {', '.join(lone)} (a revolute pair needs its "
+                              f"point in the points of both links it joins)")
             else:
                 cause = "a pair is missing or the links are attached to nothing already known"
             if W_num != W:

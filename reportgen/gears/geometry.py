@@ -204,8 +204,9 @@ class GearGeometry:
 
 def _validate(z1, z2, m, x1, x2, alpha_deg, ha, c) -> None:
     for key, z in (("z1", z1), ("z2", z2)):
-        if isinstance(z, bool) or not isinstance(z, (int, np.integer)) or z < 4:
-            raise TaskError(f"gears.{key}", f"tooth number {z!r} is not usable", "an integer ≥ 4")
+        if isinstance(z, bool) or not isinstance(z, (int, np.integer)) or not 5 <= z <= 1000:
+            raise TaskError(f"gears.{key}", f"tooth number {z!r} is not usable",
+                            "an integer 5..1000, as in the task file")
     checks = (
         ("module", m, m > 0 and math.isfinite(m), "a module > 0 mm"),
         ("x1", x1, math.isfinite(x1) and abs(x1) <= 5, "a number in −5…5"),
