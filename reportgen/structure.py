@@ -243,7 +243,7 @@ def analyse_structure(linkage: Linkage) -> Structure:
                          f"form a rigid or over-constrained structure)")
             elif W >= 2:
                 cause = (f"W = {W}: the chain needs {W} drivers, or a pair is missing (a point listed by one "
-                         f"link only, or a slide not given)")
+                         f"link only, or a slide not given); reportgen analyses mechanisms with one driver (W = 1)")
                 jointed = {j.name for j in linkage.joints} | {(s.link, s.point) for s in linkage.slides}
                 lone = [f"{name} (link {k})" for k in left for name in linkage.bodies[k].points
                         if name not in jointed and (k, name) not in jointed]

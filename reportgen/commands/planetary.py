@@ -6,7 +6,7 @@ import argparse
 import json
 import math
 
-from ..errors import OptionError, TaskError
+from ..errors import OptionError, PlanetarySynthesisError, TaskError
 from ..planetary.drive import drive_check, drive_ratio
 from ..planetary.results import planetary_block
 from ..planetary.schemes import SCHEMES, expand
@@ -148,6 +148,8 @@ def run(args: argparse.Namespace) -> int:
         if exc.path in _OPTION:
             raise OptionError(_OPTION[exc.path], exc.problem, exc.expected) from exc
         raise
+    except PlanetarySynthesisError as exc:   # its message names the task key; here the option was typed
+        raise OptionError("--ratio", str(exc).removeprefix("planetary.ratio: ")) from exc
     if args.json:
         print(json.dumps(planetary_block(design, triangle, drive), ensure_ascii=False, indent=2))
     else:

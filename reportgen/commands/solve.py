@@ -75,6 +75,9 @@ def summary(project: Project, force_at_deg: float | None = None) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    for v in args.at or ():
+        if not math.isfinite(v):
+            raise OptionError("--at", f"got {v}", "finite crank angles in degrees")
     task = load_task(args.task)
     project = Project(task, at_deg=args.at)
     results = build_results(project, force_at_deg=args.force_at)
