@@ -1,0 +1,578 @@
+"""Part «Силовой расчёт рычажного механизма» (section 2): the analysed position; masses, weights,
+inertia forces and moments with their formulas; Fи′ shifted by h; the production resistance from its
+law; each Assur group from the last attached (its diagram, R^τ from ΣM about the inner joint with the
+arms in mm, the vector equation, the force polygon at μF, the reactions read off it and compared
+with the exact ones); the crank (F_ур, M_ур, R01); Zhukovsky's lever; the comparison of the methods;
+the near-dead-centre warning; M_ур over the cycle by both methods.
+
+Every number comes from :func:`reportgen.kinetostatics.results.kinetostatics_of` (the replica in
+``graphical``) through calculation records or filters. Records that repeat a replica's computation
+(R^τ, F_ур) are checked against the replica's value, so a template can never drift from the solver."""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+from markupsafe import Markup
+
+from reportgen.calc import CalcRecord, Var, record
+from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
+from reportgen.kinetostatics.reactions import pair_name, perp
+
+from . import PartContent
+
+NEEDS = ("structure", "kinematics", "kinetostatics")
+
+#: Terms of one summed moment equation per printed line; longer sums are split into partial sums.
+TERMS_PER_RECORD = 3
+#: Points of the M_ур(φ1) curve over one turn.
+CYCLE_POINTS = 361
+
+
+def available(project) -> bool:
+    return project.task.mechanism is not None
+
+
+def sym(name: str) -> str:
+    from ..figures.kinetostatics import symbol
+    return symbol(name)
+
+
+class _Counter:
+    """Numbers the arms h1, h2, … through the section, as a student does."""
+
+    def __init__(self) -> None:
+        self.n = 0
+
+    def next(self) -> int:
+        self.n += 1
+        return self.n
+
+
+def _canon(name: str) -> str | None:
+    """``R42`` → ``R24`` (the pair's name, lower id first); None for R^n, R^τ and loads."""
+    m = re.fullmatch(r"R(\d+),(\d+)|R(\d)(\d)", name)
+    if not m:
+        return None
+    i, j = (int(m.group(1)), int(m.group(2))) if m.group(1) else (int(m.group(3)), int(m.group(4)))
+    return pair_name(min(i, j), max(i, j))
+
+
+def _check(rec: CalcRecord, expected: float, what: str) -> None:
+    if not math.isclose(rec.value, expected, rel_tol=1e-9, abs_tol=1e-9 * max(1.0, abs(expected))):
+        raise RuntimeError(f"kinetostatics note: {what} printed as {rec.value!r}, the replica has {expected!r}")
+
+
+def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: list[tuple[str, dict]] = ()
+                 ) -> tuple[list[CalcRecord], list[tuple[str, dict]]]:
+    """Σ sign·F·h over ``terms`` (sign, force Var, arm Var) + ``extra`` (expression over X and its
+    operands: {"X": Var, other names: Var}); split into partial sums of :data:`TERMS_PER_RECORD` terms
+    when longer. Returns the partial records and the (expression, operands) list of the final formula."""
+    items: list[tuple[str, dict]] = []
+    for n, (s, F, h) in enumerate(terms):
+        fn, hn = f"F{n}", f"h{n}"
+        items.append((("- " if s < 0 else "+ ") + f"{fn} * {hn}", {fn: F, hn: h}))
+    for n, (expr, ops) in enumerate(extra):
+        items.append((expr.replace("X", f"X{n}"), {(f"X{n}" if k == "X" else k): v for k, v in ops.items()}))
+    if len(items) <= TERMS_PER_RECORD:
+        return [], items
+    parts, out = [], []
+    for c in range(0, len(items), TERMS_PER_RECORD):
+        chunk = items[c:c + TERMS_PER_RECORD]
+        expr = " ".join(e for e, _ in chunk).lstrip("+ ").strip()
+        named = {k: v for _, d in chunk for k, v in d.items()}
+        rec = record(f"\\Sigma^{{({prefix})}}_{{{c // TERMS_PER_RECORD + 1}}}", expr, "Н·мм", **named,
+                     meaning="частичная сумма моментов")
+        parts.append(rec)
+        out.append((f"+ S{c // TERMS_PER_RECORD}", {f"S{c // TERMS_PER_RECORD}": rec}))
+    return parts, out
+
+
+def _final(symbol: str, items, denominator: tuple[str, Var], unit: str, negate: bool, meaning) -> CalcRecord:
+    expr = " ".join(e for e, _ in items).strip()
+    if expr.startswith("+ "):
+        expr = expr[2:]
+    if not expr:
+        expr = "0"
+    named = {k: v for _, d in items for k, v in d.items()}
+    dn, dv = denominator
+    full = f"-({expr}) / {dn}" if negate else f"({expr}) / {dn}"
+    if expr == "0":
+        full = f"0 * {dn}"
+    return record(symbol, full, unit, **named, **{dn: dv}, meaning=meaning)
+
+
+def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counter, arms_shown: list
+               ) -> tuple[list[tuple[float, Var, Var]], list[tuple[str, Var]], list[str]]:
+    """The moment terms of a replica as (sign, |F| Var, h Var); zero-arm forces listed apart."""
+    out, extra, through = [], [], []
+    for t in terms:
+        if t.name == "M":
+            extra.append(t)
+            continue
+        if t.arm_mm_measured == 0.0 or t.magnitude == 0.0:
+            if t.magnitude != 0.0:
+                through.append(t.name)
+            continue
+        c = _canon(t.name)
+        mag = read_mags[c] if c is not None and c in read_mags else t.magnitude
+        n = counter.next()
+        s = sym(t.name)
+        F = Var("F", s, mag, "Н", _meaning(t.name, c in read_mags))
+        h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
+                Markup(f"плечо силы ${s}$ относительно точки ${centre}$, измеренное на схеме"))
+        arms_shown.append({"n": n, "name": t.name, "mm": abs(t.arm_mm_measured)})
+        out.append((math.copysign(1.0, t.arm_mm_measured), F, h))
+    return out, extra, through
+
+
+def _meaning(name: str, read: bool) -> Markup:
+    """The «где» phrase of a force by its solver name."""
+    m = re.fullmatch(r"(G|Fи|F|Fпс|R)(\d*)(′?)", name.split(",")[0]) if ":" not in name else None
+    s = sym(name)
+    if name.startswith("Fпс"):
+        return Markup("сила производственного сопротивления")
+    if m and m.group(1) == "G":
+        return Markup(f"сила тяжести звена {m.group(2)}")
+    if m and m.group(1) == "Fи":
+        return Markup(f"сила инерции звена {m.group(2)}" + (", перенесённая на~плечо $h_\\text{{и}}$" if m.group(3) else ""))
+    if name.startswith("R"):
+        return Markup(f"реакция ${s}$" + (", найденная по~плану сил предыдущего шага" if read else ""))
+    if ":" in name:
+        return Markup(f"одна из~сил пары, заменяющей момент ${sym(name.split(':')[0])}$")
+    return Markup(f"сила ${s}$")
+
+
+def _couples(extra_terms, mu_l: Var, link: int) -> list[tuple[str, dict]]:
+    """Couples enter a sum of moments in N·mm as M/μl."""
+    return [("+ X / mu_l" if t.moment >= 0 else "- X / mu_l",
+             {"X": Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", f"сумма моментов пар сил на звене {link}"),
+              "mu_l": mu_l}) for t in extra_terms]
+
+
+def _polygon_rows(polygon) -> list[list]:
+    rows = []
+    for v in list(polygon.vectors) + list(polygon.extra):
+        dev = v.deviation_percent if math.isfinite(v.deviation_percent) and v.exact_value > 0 else None
+        rows.append([Markup(f"$\\bar {sym(v.name)}$"), _read_mm(polygon, v), v.read_value, v.exact_value,
+                     dev if dev is not None else Markup("---"), "найдена" if not v.known else "задана"])
+    return rows
+
+
+def _read_mm(polygon, v) -> float:
+    """The length of a vector as the replica read it off the polygon, mm (read value / μF)."""
+    return round(v.read_value / polygon.scale, 6)
+
+
+def _equation(eq: str) -> Markup:
+    lhs = eq.replace(" = 0", "").split(" + ")
+    parts = [f"\\bar {sym(x)}" for x in lhs]
+    lines = [" + ".join(parts[i:i + 9]) for i in range(0, len(parts), 9)]
+    if len(lines) == 1:
+        return Markup(f"\\[\n{lines[0]} = 0.\n\\]")
+    body = " \\\\\n+ ".join(lines)
+    return Markup(f"\\begin{{multline*}}\n{body} = 0.\n\\end{{multline*}}")
+
+
+def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
+    """Each reaction found on the polygon: R = (length read)·μF."""
+    recs = []
+    for v in list(polygon.vectors) + list(polygon.extra):
+        if v.known or v.name.startswith(("Rτ",)):
+            continue
+        s = sym(v.name)
+        ln = Var("len", f"l_{{{s}}}", _read_mm(polygon, v), "мм",
+                 Markup(f"длина вектора ${s}$ на плане сил"))
+        rec = record(s, "len * mu_F", "Н", ln, mu_F=mu_f)
+        _check(rec, v.read_value, f"the reading of {v.name}")
+        recs.append(rec)
+    return recs
+
+
+# -- the part --------------------------------------------------------------------------------------
+
+def content(project) -> PartContent:
+    from reportgen.kinetostatics.results import kinetostatics_of
+    from ..figures import kinetostatics as kf
+
+    ks = kinetostatics_of(project)
+    lk, st = project.linkage, project.structure
+    r = ks.reactions
+    kin = r.kin
+    g = ks.graphical
+    q = np.asarray(kin.q)[0]
+    counter = _Counter()
+    figures: dict = {}
+    mu_l = Var("mu_l", r"\mu_l", g.length_scale, "м/мм", "масштабный коэффициент длин схемы")
+
+    loads_ctx = _loads_section(project, ks, mu_l)
+    resistance = _resistance(project, ks)
+    read_mags: dict[str, float] = {}
+    groups_ctx = []
+    by_key = {gr.key: gr for gr in st.groups}
+    for gg in g.groups:
+        grp = by_key[gg.key]
+        tag = gg.key.replace("-", "_")
+        figures[f"kst_group_{tag}"] = kf.free_body_figure(lk, q, grp.links, *_free_body(ks, grp, gg))
+        figures[f"kst_poly_{tag}"] = kf.polygon_figure(gg.polygon)
+        mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
+        splits = []
+        for sp in gg.splits:
+            arms: list = []
+            terms, extra, through = _arm_terms(sp.terms, read_mags, sp.centre, counter, arms)
+            P = _pair_letter(r, sp, gg.key)
+            l = Var("l", f"{P}{sp.centre}", sp.length_mm_measured, "мм",
+                    f"длина звена {P}{sp.centre} на схеме")
+            parts, items = _sum_records(terms, f"{sp.link}", _couples(extra, mu_l, sp.link))
+            rec = _final(f"R^{{\\tau}}_{{{sp.name[1:]}}}", items, ("l", l), "Н", False,
+                         Markup(f"касательная составляющая реакции ${sym(sp.name)}$"))
+            _check(rec, sp.tau_measured, f"R^τ {sp.name}")
+            splits.append({"name": sp.name, "link": sp.link, "centre": sp.centre, "pair": P, "parts": parts,
+                           "rec": rec, "terms": terms, "through": [Markup(f"${sym(x)}$") for x in through],
+                           "negative": rec.value < 0, "exact": sp.tau, "dev": sp.deviation_percent,
+                           "moment_eq": _moment_equation(sp, P, terms, extra)})
+        reads = _read_records(gg.polygon, mu_f)
+        for v in list(gg.polygon.vectors) + list(gg.polygon.extra):
+            c = _canon(v.name)
+            if c is not None and not v.known:
+                read_mags[c] = v.read_value
+        groups_ctx.append({"key": gg.key, "tag": tag, "label": grp.label, "kind": gg.kind, "links": grp.links,
+                           "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
+                           "rows": _polygon_rows(gg.polygon), "reads": reads,
+                           "unknown": [Markup(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
+                           "mu_tr": ks.transmission_deg.get(gg.key)})
+    crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
+    lever_ctx = _lever(project, ks, counter, figures)
+    comparison = _comparison(ks, crank_ctx, lever_ctx)
+    cycle = _cycle(project, ks, figures)
+    warnings = [{"group": gk, "label": by_key[gk].label, "mu": mu} for gk, mu in ks.transmission_deg.items()
+                if mu < WARN_TRANSMISSION_DEG]
+    ctx = {"pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
+           "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
+           "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
+           "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky, "disc": ks.discrepancy_percent,
+           "first_group": groups_ctx[0]["label"] if groups_ctx else "",
+           "trans": [{"label": by_key[k].label, "mu": v} for k, v in ks.transmission_deg.items()],
+           "width": {name: _width(fig) for name, fig in figures.items()}}
+    return PartContent("sections/kinetostatics.tex.j2", ctx, figures, _conclusions(project, ks, comparison))
+
+
+def _width(fig) -> str:
+    """A figure's natural width for \\includegraphics (never wider than the text)."""
+    return f"{min(fig.get_figwidth() * 2.54, 16.0):.1f}cm"
+
+
+def _pair_letter(r, sp, key: str) -> str:
+    """The letter of the outer pair of a split (its joint)."""
+    return next(p.joint for p in r.pairs if p.group == key and p.external and sp.link in (p.lo, p.hi))
+
+
+def _moment_equation(sp, P: str, terms, extra) -> Markup:
+    """ΣM_Q(link) = −R^τ·l + Σ ±F·h = 0 in symbols."""
+    body = [f"-R^{{\\tau}}_{{{sp.name[1:]}}} \\cdot {P}{sp.centre}"]
+    for s, F, h in terms:
+        body.append(("+ " if s > 0 else "- ") + f"{F.latex} \\cdot {h.latex}")
+    for t in extra:
+        body.append(("+ " if t.moment >= 0 else "- ") + f"M_{{{sp.link}}}")
+    return Markup(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}} = " + " ".join(body) + " = 0")
+
+
+def _loads_section(project, ks, mu_l: Var) -> dict:
+    """Per link: G = m·g, Fи = m·a_S, Mи = J_S·ε, and the replacement h = Mи/Fи."""
+    lk = project.linkage
+    kin = ks.reactions.kin
+    gvar = Var("g", "g", lk.g, "м/с²", "ускорение свободного падения")
+    repl = {x.link: x for x in ks.graphical.inertia}
+    links, rows = [], []
+    for k in lk.moving:
+        b = lk.bodies[k]
+        if b.mass <= 0 and b.inertia <= 0:
+            continue
+        m = Var("m", f"m_{{{k}}}", b.mass, "кг", f"масса звена {k}")
+        ent: dict = {"k": k, "G": None, "F": None, "M": None, "h": None, "h_mm": None, "repl": None}
+        a_s = float(np.hypot(*np.asarray(kin.coms[k].acc)[0]))
+        eps = abs(float(np.asarray(kin.links[k].epsilon)[0]))
+        if b.mass > 0:
+            if lk.g:
+                ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=f"сила тяжести звена {k}")
+            aS = Var("a", f"a_{{S{k}}}", a_s, "м/с²", f"ускорение центра масс звена {k}")
+            ent["F"] = record(f"F_{{\\text{{и}}{k}}}", "m * a", "Н", m, aS, meaning=f"сила инерции звена {k}")
+        if b.inertia > 0 and eps > 0:
+            J = Var("J", f"J_{{S{k}}}", b.inertia, "кг·м²", f"момент инерции звена {k} относительно центра масс")
+            e = Var("eps", f"\\varepsilon_{{{k}}}", eps, "рад/с²", f"угловое ускорение звена {k}")
+            ent["M"] = record(f"M_{{\\text{{и}}{k}}}", "J * eps", "Н·м", J, e, meaning=f"момент сил инерции звена {k}")
+        if k in repl and ent["F"] is not None and ent["M"] is not None:
+            x = repl[k]
+            h = record(f"h_{{\\text{{и}}{k}}}", "M / F", "м", M=ent["M"], F=ent["F"],
+                       meaning=f"плечо переноса силы инерции звена {k}")
+            ent["h"] = h
+            ent["h_mm"] = record(f"h_{{\\text{{и}}{k}}}^{{\\text{{сх}}}}", "h / mu_l", "мм", mu_l, h=h,
+                                 meaning=f"плечо переноса на схеме")
+            ent["repl"] = {"measured": x.h_mm_measured, "swing": x.swing_point is not None,
+                           "sense": "против" if x.moment > 0 else "по"}
+        links.append(ent)
+        rows.append([k, b.mass, b.inertia, ent["G"].value if ent["G"] else 0.0, a_s,
+                     ent["F"].value if ent["F"] else 0.0, eps, ent["M"].value if ent["M"] else 0.0,
+                     ent["h"].value if ent["h"] else Markup("---")])
+    not_replaced = [k for k in lk.moving
+                    if lk.bodies[k].inertia > 0 and k not in repl and
+                    abs(float(np.asarray(kin.links[k].epsilon)[0])) > 0 and lk.bodies[k].mass > 0]
+    return {"links": links, "rows": rows, "g": gvar, "not_replaced": not_replaced}
+
+
+def _resistance(project, ks) -> list[dict]:
+    """The production resistance at the analysed position from its law: s/H, the law's factor and
+    F = F_max·k; checked against the solver's load."""
+    from reportgen.loads import StrokeWindow, law_value, link_coordinate
+
+    mech, lk, strokes = project.task.mechanism, project.linkage, project.strokes
+    out = []
+    solver = {f.link: float(np.hypot(*np.asarray(f.vector)[0])) for f in ks.reactions.loads.forces
+              if f.kind == "resistance"}
+    solver.update({m.link: abs(float(np.asarray(m.value)[0])) for m in ks.reactions.loads.moments
+                   if m.kind == "resistance"})
+    for ld in mech.loads:
+        if ld.kind != "resistance" or strokes is None:
+            continue
+        q = np.asarray(ks.reactions.kin.q)
+        x, kind = link_coordinate(lk, ld.link, q)
+        ends, _ = project.model.positions(np.array([strokes.phi_start, strokes.phi_end]))
+        xe, _ = link_coordinate(lk, ld.link, ends)
+        x = float(x[0])
+        if kind == "rocker":
+            x = float(xe[0]) + (x - float(xe[0]) + math.pi) % (2 * math.pi) - math.pi
+        win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if lk.omega >= 0 else -1.0)
+        working = bool(win.on_working(np.array([ks.phi]))[0])
+        travel = float(xe[1] - xe[0])
+        on = (working and ld.stroke in ("working", "both")) or (not working and ld.stroke in ("idle", "both"))
+        value = solver.get(ld.link, 0.0)
+        is_force = ld.force is not None
+        ent = {"link": ld.link, "working": working, "on": on, "force": is_force, "value": value,
+               "law": ld.law, "rec": None, "frac": None, "kfac": None}
+        if on and travel != 0:
+            s_val = abs(x - float(xe[0])) if working else abs(float(xe[1]) - x)
+            unit = "м" if kind == "slider" else "рад"
+            s = Var("s", "s", s_val, unit, "перемещение выходного звена от начала хода")
+            H = Var("H", "H", abs(travel), unit, "полный ход выходного звена")
+            frac = record("s/H", "s / H", "", s, H, meaning="доля пройденного хода")
+            kf = float(law_value(ld.law, np.array([frac.value]))[0])
+            kv = Var("k", "k", kf, "", Markup("доля наибольшего сопротивления по~закону нагружения"))
+            if is_force:
+                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", ld.force, "Н", "наибольшая сила сопротивления")
+                rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning="сила производственного сопротивления")
+            else:
+                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", ld.moment, "Н·м", "наибольший момент сопротивления")
+                rec = record("M_{\\text{пс}}", "Mmax * k", "Н·м", mmax, kv, meaning="момент производственного сопротивления")
+            _check(rec, value, "the production resistance")
+            ent.update(rec=rec, frac=frac, kfac=kf)
+        out.append(ent)
+    return out
+
+
+def _free_body(ks, grp, gg) -> tuple[list, list, list]:
+    """Pairs, arrows and couples of a group's diagram (see :func:`free_body_figure`)."""
+    r = ks.reactions
+    repl = {x.link: x for x in ks.graphical.inertia}
+    pairs, arrows, couples = [], [], []
+    for p in r.pairs:
+        if p.group != gg.key:
+            continue
+        if p.kind == "R":
+            pairs.append({"point": p.point[0], "kind": "R", "name": p.joint})
+        else:
+            pairs.append({"point": p.sliding_point[0], "kind": "P", "name": p.joint,
+                          "guide": -perp(np.asarray(p.normal[0]))})
+    _loads_on(ks, grp.links, repl, arrows, couples)
+    own = {p.name for p in r.pairs if p.group == gg.key}
+    for k in grp.links:
+        for p in r.pairs_of(k):
+            j = p.other(k)
+            if p.name in own or j in grp.links:
+                continue
+            arrows.append({"point": p.point[0], "vector": p.on(k)[0], "name": pair_name(j, k), "role": "known"})
+    splits = {sp.link: sp for sp in gg.splits}
+    for p in r.pairs:
+        if p.group != gg.key or not p.external:
+            continue
+        k = p.hi if p.hi in grp.links else p.lo
+        j = p.other(k)
+        name = pair_name(j, k)
+        sp = splits.get(k)
+        if sp is not None and p.kind == "R":
+            arrows.append({"point": p.point[0], "vector": sp.normal * np.asarray(sp.along), "name": "Rn" + name[1:],
+                           "role": "found"})
+            arrows.append({"point": p.point[0], "vector": sp.tau * np.asarray(sp.tangent), "name": "Rτ" + name[1:],
+                           "role": "found"})
+        else:
+            arrows.append({"point": p.point[0], "vector": p.on(k)[0], "name": name, "role": "found"})
+    return pairs, [a for a in arrows if float(np.hypot(*a["vector"])) > 0], couples
+
+
+def _loads_on(ks, links, repl, arrows, couples) -> None:
+    for f in ks.reactions.loads.forces:
+        if f.link not in links:
+            continue
+        v = np.asarray(f.vector)[0]
+        if f.kind == "inertia" and f.link in repl:
+            arrows.append({"point": repl[f.link].point, "vector": v, "name": f.name + "′", "role": "load"})
+        else:
+            arrows.append({"point": np.asarray(f.point)[0], "vector": v, "name": f.name, "role": "load"})
+    for m in ks.reactions.loads.moments:
+        val = float(np.asarray(m.value)[0])
+        if m.link not in links or val == 0.0 or (m.kind == "inertia" and m.link in repl):
+            continue
+        com = np.asarray(ks.reactions.kin.coms[m.link].pos)[0]
+        couples.append({"point": com, "value": val, "name": m.name})
+
+
+def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
+    from ..figures import kinetostatics as kf
+    lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
+    d = r.crank
+    fp = next(p for p in r.pairs if p.group == str(d))
+    arrows, couples = [], []
+    _loads_on(ks, (d,), {}, arrows, couples)
+    for p in r.pairs_of(d):
+        if p.name != fp.name:
+            arrows.append({"point": p.point[0], "vector": p.on(d)[0], "name": pair_name(p.other(d), d), "role": "known"})
+    arrows.append({"point": r.balancing_point[0], "vector": r.balancing_force[0], "name": "Fур", "role": "found"})
+    arrows.append({"point": fp.point[0], "vector": fp.on(d)[0], "name": pair_name(0, d), "role": "found"})
+    pairs = [{"point": fp.point[0], "kind": "R", "name": fp.joint},
+             {"point": r.balancing_point[0], "kind": "R", "name": r.crank_pin}]
+    arrows = [a for a in arrows if float(np.hypot(*a["vector"])) > 0]
+    figures["kst_crank"] = kf.free_body_figure(lk, np.asarray(r.kin.q)[0], (d,), pairs, arrows, couples, w_cm=10.0)
+    figures["kst_poly_crank"] = kf.polygon_figure(c.polygon, w_cm=11.0)
+    arms: list = []
+    terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
+    OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
+             f"длина кривошипа {r.crank_axis}{r.crank_pin} на схеме")
+    parts, items = _sum_records(terms, "1", _couples(extra, mu_l, d))
+    F = _final("F_{\\text{ур}}", items, ("l", OA), "Н", True, "уравновешивающая сила, приложенная в точке "
+               + r.crank_pin + " перпендикулярно кривошипу")
+    _check(F, c.balancing_force_measured, "F_ур (groups)")
+    l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
+               "м", f"длина кривошипа {r.crank_axis}{r.crank_pin}")
+    M = record("M_{\\text{ур}}", "F * l_OA", "Н·м", l_oa, F=F, meaning="уравновешивающий момент")
+    _check(M, c.balancing_moment_measured, "M_ур (groups)")
+    mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
+    eq = [f"-F_{{\\text{{ур}}}} \\cdot {OA.latex}"] + [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}"
+                                                      for s, Fv, h in terms]
+    return {"F": F, "M": M, "parts": parts, "through": [Markup(f"${sym(x)}$") for x in through],
+            "moment_eq": Markup(f"\\sum M_{{{r.crank_axis}}} = " + " ".join(eq) + " = 0"),
+            "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
+            "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
+            "pin": r.crank_pin, "link": d,
+            "pin_forces": [Markup(f"${sym(a['name'])}$") for a in arrows if a["role"] == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
+            "R_couple": float(np.hypot(*r.frame_reaction_with_moment[0]))}
+
+
+def _lever(project, ks, counter, figures) -> dict:
+    """Zhukovsky's lever: the record F_ур = ∓ΣF·h/pa with the measured arms, and its figure."""
+    from reportgen.kinetostatics.zhukovsky import turn_cw
+    from ..figures import kinetostatics as kf
+    lk, r, lev, L = project.linkage, ks.reactions, ks.lever, ks.graphical.lever
+    kin = r.kin
+    mu_v = L.scale
+    points: dict[str, np.ndarray] = {}
+    for name, mo in kin.points.items():
+        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
+        if float(np.hypot(*img)) > 1e-9:
+            points[name.lower()] = img
+    for k in lk.moving:
+        if lk.bodies[k].mass > 0 and f"S{k}" not in [n.upper() for n in points]:
+            img = turn_cw(np.asarray(kin.coms[k].vel))[0] / mu_v
+            if float(np.hypot(*img)) > 1e-9 and not any(np.allclose(img, p) for p in points.values()):
+                points[f"s_{k}"] = img
+    segments = []
+    for k in lk.moving:
+        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
+        for n in names:
+            segments.append(("p", n))
+        for a, b in zip(names, names[1:]):
+            segments.append((a, b))
+    terms, loads = [], []
+    for t, f in zip(L.terms, lev.forces):
+        if t.magnitude == 0.0:
+            continue
+        ent = {"image": np.asarray(f.image)[0] / mu_v, "vector": np.asarray(f.vector)[0], "name": t.name,
+               "arm_mm": t.arm_mm_measured, "h": None}
+        if t.arm_mm_measured != 0.0:
+            n = counter.next()
+            s = sym(t.name)
+            Fv = Var("F", s, t.magnitude, "Н", _meaning(t.name, False))
+            h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
+                    Markup(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
+            sign = -math.copysign(1.0, t.arm_mm_measured) * (1.0 if lev.omega1 >= 0 else -1.0)
+            terms.append((sign, Fv, h))
+            ent["h"] = f"h_{{{n}}}"
+        loads.append(ent)
+    mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", "масштабный коэффициент повёрнутого плана скоростей")
+    extra = [("- X / mu_v" if (p >= 0) == (lev.omega1 >= 0) else "+ X / mu_v",
+              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Markup(f"мощность пары ${sym(name)}$")), "mu_v": mu})
+             for name, p in L.direct if p != 0.0]
+    parts, items = _sum_records(terms, "\\text{Ж}", extra)
+    pa = Var("pa", f"p{r.crank_pin.lower()}", L.pa_mm_measured, "мм",
+             f"отрезок плана, изображающий скорость точки {r.crank_pin}")
+    F = _final("F_{\\text{ур}}^{\\text{Ж}}", items, ("pa", pa), "Н", False,
+               "уравновешивающая сила по рычагу Жуковского")
+    _check(F, L.balancing_force_measured, "F_ур (lever)")
+    fp = next(p for p in r.pairs if p.group == str(r.crank))
+    l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
+               "м", f"длина кривошипа {r.crank_axis}{r.crank_pin}")
+    M = record("M_{\\text{ур}}^{\\text{Ж}}", "F * l_OA", "Н·м", l_oa, F=F,
+               meaning="уравновешивающий момент по рычагу Жуковского")
+    _check(M, L.balancing_moment_measured, "M_ур (lever)")
+    figures["kst_lever"] = kf.lever_figure(points, segments, loads)
+    eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
+    sign_pa = "-" if lev.omega1 >= 0 else "+"
+    return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(),
+            "moment_eq": Markup(f"\\sum M_{{p}} = {sign_pa}F_{{\\text{{ур}}}}^{{\\text{{Ж}}}} \\cdot {pa.latex} "
+                                + " ".join(eq) + " = 0"),
+            "n_zero": sum(1 for t in L.terms if t.arm_mm_measured == 0.0 and t.magnitude > 0),
+            "direct": bool(extra)}
+
+
+def _comparison(ks, crank, lever) -> dict:
+    Fg = Var("F_g", "F_{\\text{ур}}", crank["F"].value, "Н", "уравновешивающая сила по планам сил")
+    Fz = Var("F_z", "F_{\\text{ур}}^{\\text{Ж}}", lever["F"].value, "Н", "уравновешивающая сила по рычагу Жуковского")
+    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "\\%", Fg, Fz, meaning="расхождение методов")
+    _check(delta, ks.graphical.discrepancy_percent, "the graphical discrepancy")
+    return {"delta": delta}
+
+
+def _cycle(project, ks, figures) -> dict:
+    from reportgen.kinetostatics import balancing_cycle
+    from ..figures import kinetostatics as kf
+    at = balancing_cycle(project, project.phi)
+    sgn = 1.0 if project.model.omega >= 0 else -1.0
+    dense_phi = float(project.phi[0]) + sgn * np.linspace(0.0, 2 * math.pi, CYCLE_POINTS)
+    dense = balancing_cycle(project, dense_phi)
+    order = np.argsort(np.mod(np.degrees(dense.phi), 360.0))
+    deg = np.mod(np.degrees(dense.phi), 360.0)[order]
+    figures["kst_cycle"] = kf.cycle_figure(deg, np.asarray(dense.groups)[order], np.mod(np.degrees(at.phi), 360.0),
+                                           np.asarray(at.zhukovsky), ks.phi_deg, ks.balancing_moment)
+    rows = []
+    for j in range(len(at.phi)):
+        mg, mz = float(at.groups[j]), float(at.zhukovsky[j])
+        dev = 100.0 * (mg - mz) / mz if mz != 0 else 0.0
+        rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Markup(f"${_sci(dev)}$")])
+    return {"rows": rows, "max": float(np.max(dense.groups)), "min": float(np.min(dense.groups)),
+            "mean": float(np.mean(np.asarray(dense.groups)[:-1]))}
+
+
+def _sci(x: float) -> str:
+    from reportgen.calc import format_decimal
+    return format_decimal(x, 2)
+
+
+def _conclusions(project, ks, comparison) -> tuple[str, ...]:
+    from ..numbers import num
+    from ..render import Strings
+    strings = Strings(project.task.document.language or "ru")
+    out = [strings.get("findings_kinetostatics.balancing").format(
+        phi=Markup(num(ks.phi_deg)), M=Markup(num(ks.balancing_moment, 6)),
+        Mz=Markup(num(ks.balancing_moment_zhukovsky, 6)), delta=Markup(num(comparison["delta"].value, 2)))]
+    if any(mu < WARN_TRANSMISSION_DEG for mu in ks.transmission_deg.values()):
+        out.append(strings.get("findings_kinetostatics.dead_centre"))
+    return tuple(out)
