@@ -1,0 +1,404 @@
+"""Part «Динамический анализ механизма и расчёт маховика» (section 3): the reduced moment and the
+reduced moment of inertia with numbers for the analysed position and a table over the graph's
+positions, the graphs (M_red, works, ΔE, J_red turned, Wittenbauer with tangents, ω(φ)), M_drive from
+the balance of one cycle, the flywheel by three methods side by side (exact, the graphical replica,
+Мерцалов) with the δ each one really gives, the flywheel's sizes and sketch, and the check of the
+motion by integration.
+
+Every number comes from :class:`reportgen.dynamics.DynamicsResult` (``project.dynamics``), from the
+project's kinematics and loads, or from the solver's own functions (``steady_motion`` for the δ the
+other two flywheels give), through calculation records or filters.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from markupsafe import Markup
+
+from reportgen.calc import CalcRecord, Var, record
+
+from . import PartContent
+
+NEEDS = ("kinematics", "strokes", "dynamics")
+
+#: A force or couple whose power is below this share of the largest one is still shown (gravity of
+#: a light crank is small but is part of M_red); exactly zero ones (resistance off) are left out.
+ZERO_FORCE = 1e-12
+
+
+#: |cos α| below this: the force is perpendicular to its point's velocity and does no work.
+PERPENDICULAR = 1e-9
+
+
+def available(project) -> bool:
+    return project.task.mechanism is not None and project.task.dynamics is not None
+
+
+# ---------------------------------------------------------------------------------------------
+# the analysed position: M_red by the powers of the loads, J_red by the links' shares
+
+
+@dataclass(frozen=True)
+class PowerTerm:
+    """One load's power in the analysed position: the record P = F·V·cos α (or M·ω)."""
+    name: str
+    record: CalcRecord
+
+
+def _sub(name: str) -> str:
+    """``Fпс`` → ``F_\\text{пс}``, ``G4`` → ``G_{4}``, ``M3`` → ``M_{3}`` (LaTeX)."""
+    base, rest = name[0], name[1:]
+    if not rest:
+        return base
+    if rest.isdigit():
+        return f"{base}_{{{rest}}}"
+    return f"{base}_\\text{{{rest}}}"
+
+
+def _point_velocity(kin, k: int, point: np.ndarray, i: int) -> np.ndarray:
+    """Velocity of a point of link k at position i (the rigid-body formula of ``loads.power``)."""
+    q, qd = np.asarray(kin.q), np.asarray(kin.qd)
+    r = np.asarray(point)[i] - q[i, k, :2]
+    return qd[i, k, :2] + qd[i, k, 2] * np.array([-r[1], r[0]])
+
+
+def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
+    """P = F·V·cos α of every force and M·ω of every couple acting in position i (inertia excluded,
+    as in M_red); also the LaTeX symbols of the loads that act but do no work there (a force
+    perpendicular to its point's velocity)."""
+    from reportgen.loads import external_loads
+
+    kin = project.kinematics
+    loads = external_loads(project.task.mechanism, project.linkage, project.model, kin, project.strokes)
+    out: list[PowerTerm] = []
+    idle: list[str] = []
+    for j, f in enumerate(loads.forces):
+        vec = np.asarray(f.vector)[i]
+        F = float(np.hypot(*vec))
+        if F <= ZERO_FORCE:
+            continue
+        v = _point_velocity(kin, f.link, f.point, i)
+        V = float(np.hypot(*v))
+        alpha = math.degrees(math.atan2(abs(vec[0] * v[1] - vec[1] * v[0]), float(vec @ v))) if V > 0 else 90.0
+        if abs(float(vec @ v)) <= PERPENDICULAR * F * max(V, ZERO_FORCE):
+            idle.append(_sub(f.name))     # perpendicular to its velocity (a slider's weight): no power
+            continue
+        sym = _sub(f.name)
+        where = f.where
+        vsym = f"V_{{{where}}}"
+        kind = {"resistance": "сила производственного сопротивления", "gravity": f"сила тяжести звена {f.link}",
+                "force": f"сила, приложенная к звену {f.link}"}.get(f.kind, f"сила {f.name}")
+        Fv = Var(f"F{j}", sym, F, "Н", kind)
+        Vv = Var(f"V{j}", vsym, V, "м/с", f"скорость точки {where}" if not where.startswith("S")
+                 else f"скорость центра масс звена {f.link}")
+        av = Var(f"a{j}", rf"\alpha_{{{sym}}}", alpha, "°",
+                 Markup(f"угол между силой ${sym}$ и скоростью ${vsym}$"))
+        rec = record(f"P_{{{sym}}}", f"F{j} * V{j} * cos(radians(a{j}))", "Вт", Fv, Vv, av,
+                     meaning=Markup(f"мощность силы ${sym}$"))
+        out.append(PowerTerm(f.name, rec))
+    for j, mo in enumerate(loads.moments):
+        M = float(np.asarray(mo.value)[i])
+        if abs(M) <= ZERO_FORCE:
+            continue
+        w = float(np.asarray(kin.links[mo.link].omega)[i])
+        sym = _sub(mo.name)
+        Mv = Var(f"M{j}", sym, M, "Н·м", Markup(f"момент, приложенный к звену {mo.link} (плюс~--- против часовой стрелки)"))
+        wv = Var(f"w{j}", rf"\omega_{{{mo.link}}}", w, "рад/с", f"угловая скорость звена {mo.link}")
+        rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Markup(f"мощность момента ${sym}$"))
+        out.append(PowerTerm(mo.name, rec))
+    return out, idle
+
+
+def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, CalcRecord]:
+    """ΣP of the loads and M_red = ΣP / ω1 for the analysed position."""
+    named = {f"P{j}": t.record for j, t in enumerate(terms)}
+    expr = " + ".join(named) if named else "0 * omega1"
+    total = record(r"P_\Sigma", expr, "Вт", *(() if named else (omega1,)),
+                   meaning="суммарная мощность сил сопротивления и сил тяжести", **named)
+    M = record(r"M_\text{пр}", "P_sum / omega1", "Н·м", omega1, meaning="приведённый момент сил сопротивления",
+               P_sum=total)
+    return total, M
+
+
+def inertia_records(project, i: int, omega1: Var) -> tuple[list[CalcRecord], CalcRecord]:
+    """Each link's share (m·V_S² + J_S·ω²)/ω1² in position i, and J_red = J_0 + Σ shares."""
+    lk, kin = project.linkage, project.kinematics
+    shares: list[CalcRecord] = []
+    for k in lk.moving:
+        b = lk.bodies[k]
+        if b.mass <= 0 and b.inertia <= 0:
+            continue
+        V = float(np.hypot(*np.asarray(kin.coms[k].vel)[i]))
+        w = float(np.asarray(kin.links[k].omega)[i])
+        named: dict[str, Var] = {}
+        parts = []
+        if b.mass > 0:
+            named["m"] = Var(f"m{k}", f"m_{{{k}}}", b.mass, "кг", f"масса звена {k}")
+            named["V"] = Var(f"V{k}", f"V_{{S{k}}}", V, "м/с", f"скорость центра масс звена {k}")
+            parts.append(f"m{k} * V{k}**2")
+        rotates = b.inertia > 0 and not _translates(lk, k)
+        if rotates:
+            named["J"] = Var(f"J{k}", f"J_{{S{k}}}", b.inertia, "кг·м²",
+                             f"момент инерции звена {k} относительно его центра масс")
+            if k == lk.drive_link:
+                parts.append(f"J{k} * omega1**2")
+            else:
+                named["w"] = Var(f"w{k}", rf"\omega_{{{k}}}", abs(w), "рад/с", f"угловая скорость звена {k}")
+                parts.append(f"J{k} * w{k}**2")
+        if not parts:
+            continue
+        expr = "(" + " + ".join(parts) + ") / omega1**2"
+        shares.append(record(rf"J_{{\text{{пр}}{k}}}", expr, "кг·м²", omega1, *named.values(),
+                             meaning=f"доля звена {k} в приведённом моменте инерции"))
+    dyn = project.task.dynamics
+    J0 = Var("J0", r"J_0", dyn.crank_inertia, "кг·м²",
+             "момент инерции ротора двигателя и колёс передачи, приведённый к кривошипу")
+    named_sh = {f"S{j}": s for j, s in enumerate(shares)}
+    expr = " + ".join(["J0", *named_sh])
+    total = record(r"J_\text{пр}", expr, "кг·м²", J0, meaning="приведённый момент инерции механизма", **named_sh)
+    return shares, total
+
+
+def _translates(lk, k: int) -> bool:
+    return any(s.link == k and s.guide == 0 for s in lk.slides)
+
+
+# ---------------------------------------------------------------------------------------------
+# the graphical construction: table, scales, tangents
+
+
+def position_labels(res, positions: int) -> list[str]:
+    """Names of the graph's positions: equal steps numbered 0…N (N is position 0 again), the
+    switching angles «к.р.х.» / «н.р.х.», other corners of the resistance law «и1», «и2»…"""
+    step = 2 * math.pi / positions
+    sense, phi0 = _sense(res), float(res.phi[0])
+    theta_sw = [float(np.mod(sense * (p - phi0), 2 * math.pi)) for p in res.switching]
+    names = dict(zip(theta_sw, ("н.р.х.", "к.р.х.")))
+    out: list[str] = []
+    corner = 0
+    for t in map(float, res.graphical.theta):
+        j = t / step
+        if abs(j - round(j)) < 1e-9:
+            out.append(str(int(round(j))))
+            continue
+        name = next((v for k, v in names.items() if abs(k - t) < 1e-9), None)
+        if name is None:
+            corner += 1
+            name = f"и{corner}"
+        out.append(name)
+    return out
+
+
+def graph_rows(res, labels: list[str]) -> list[list]:
+    g = res.graphical
+    rows = []
+    for j in range(g.theta.size - 1):
+        phi = math.degrees(float(np.mod(res.phi[0] + _sense(res) * g.theta[j], 2 * math.pi)))
+        rows.append([labels[j], phi, float(g.M_mm[j] * g.mu_M), float(g.M_mm[j]), float(g.a_mm[j]),
+                     float(g.e_mm[j]), float(g.j_mm[j] * g.mu_J), float(g.j_mm[j])])
+    return rows
+
+
+def _sense(res) -> float:
+    """+1 if φ1 grows with θ (the crank turns counter-clockwise)."""
+    if res.phi.size < 2:
+        return 1.0
+    return 1.0 if res.phi[1] - res.phi[0] > 0 else -1.0
+
+
+def scale_records(res) -> dict[str, CalcRecord | Var]:
+    g = res.graphical
+    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Markup("длина оси $\\varphi$, изображающая один оборот кривошипа"))
+    mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
+    mu_M = Var("mu_M", r"\mu_M", g.mu_M, "Н·м/мм", "масштабный коэффициент графика приведённого момента")
+    H = Var("H", "H", g.H, "мм", "полюсное расстояние при графическом интегрировании")
+    mu_A = record(r"\mu_A", "mu_M * mu_phi * H", "Дж/мм", mu_M, H, mu_phi=mu_phi,
+                  meaning="масштабный коэффициент графика работ")
+    k = Var("k", "k", float(g.enlargement), "", "коэффициент увеличения ординат графика")
+    mu_E = record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A,
+                  meaning="масштабный коэффициент графика изменения кинетической энергии")
+    mu_J = Var("mu_J", r"\mu_J", g.mu_J, "кг·м²/мм", "масштабный коэффициент графика приведённого момента инерции")
+    return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
+
+
+def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord]:
+    g = res.graphical
+    common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
+    psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
+                     omega, delta, meaning=Markup("угол наклона верхней касательной к оси $J$"), **common)
+    psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
+                     omega, delta, meaning=Markup("угол наклона нижней касательной к оси $J$"), **common)
+    KL = Var("KL", "KL", g.KL_mm, "мм", Markup("отрезок, отсекаемый касательными на оси $\\Delta E$"))
+    J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
+                  mu_E=sc["mu_E"], meaning="момент инерции маховика по диаграмме Виттенбауэра")
+    return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
+
+
+def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord]:
+    ex = res.exact
+    w_max = record(r"\omega_{\max}", "omega1 * (1 + delta / 2)", "рад/с", omega, delta,
+                   meaning="наибольшая допускаемая угловая скорость кривошипа")
+    w_min = record(r"\omega_{\min}", "omega1 * (1 - delta / 2)", "рад/с", omega, delta,
+                   meaning="наименьшая допускаемая угловая скорость кривошипа")
+    K = Var("K", "K", ex.K, "Дж", Markup(r"наибольшее значение $\Delta E - J_\text{пр}\omega_{\max}^2/2$ "
+                                         r"(точка $K$ пересечения верхней касательной с осью $\Delta E$)"))
+    L = Var("Lk", "L", ex.L, "Дж", Markup(r"наименьшее значение $\Delta E - J_\text{пр}\omega_{\min}^2/2$ (точка $L$)"))
+    J_ex = record(r"J_\text{м}", "(K - Lk) / (omega1**2 * delta)", "кг·м²", K, L, omega, delta,
+                  meaning="момент инерции маховика (точно)")
+    return {"w_max": w_max, "w_min": w_min, "K": K, "L": L, "J_ex": J_ex}
+
+
+def merzalov_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
+    mz = res.merzalov
+    T_max = Var("T_max", r"T_{\max}", mz.T_max, "Дж", Markup("наибольшее значение $T_\\text{I}$"))
+    T_min = Var("T_min", r"T_{\min}", mz.T_min, "Дж", Markup("наименьшее значение $T_\\text{I}$"))
+    J_I = record(r"J_\text{I}", "(T_max - T_min) / (omega1**2 * delta)", "кг·м²", T_max, T_min, omega, delta,
+                 meaning="момент инерции звеньев первой группы (с маховиком)")
+    J_c = Var("J_c", r"J_\text{пост}", mz.J_const, "кг·м²",
+              "постоянная часть приведённого момента инерции (ротор, передача и кривошип)")
+    J_mz = record(r"J_\text{м}^\text{М}", "J_I - J_c", "кг·м²", J_c, J_I=J_I,
+                  meaning="момент инерции маховика по методу Мерцалова")
+    return {"T_max": T_max, "T_min": T_min, "J_I": J_I, "J_c": J_c, "J_mz": J_mz}
+
+
+def flywheel_records(res, J_ex: CalcRecord) -> dict[str, CalcRecord | Var]:
+    fw = res.flywheel
+    J = J_ex.as_var("J_m", "момент инерции маховика")
+    rho = Var("rho", r"\rho", fw.density, "кг/м³", "плотность материала маховика")
+    psi = Var("psi", r"\psi", fw.width_ratio, "",
+              "отношение ширины диска к его радиусу" if fw.shape == "disk" else "отношение ширины обода к его толщине")
+    out: dict[str, CalcRecord | Var] = {"rho": rho, "psi": psi}
+    if fw.shape == "disk":
+        R = record("R", "(2 * J_m / (pi * rho * psi))**0.2", "м", J, rho, psi, meaning="радиус диска")
+        b = record("b", "psi * R", "м", psi, R=R, meaning="ширина диска")
+        m = record("m", "rho * pi * R**2 * b", "кг", rho, R=R, b=b, meaning="масса маховика")
+        out.update(R=R, b=b, m=m)
+    else:
+        k = Var("k_h", "k", fw.thickness / fw.radius, "", "отношение толщины обода к его наружному радиусу")
+        R = record("R", "(2 * J_m / (pi * rho * psi * k_h * (1 - (1 - k_h)**4)))**0.2", "м", J, rho, psi, k,
+                   meaning="наружный радиус обода")
+        h = record("h", "k_h * R", "м", k, R=R, meaning="толщина обода")
+        b = record("b", "psi * h", "м", psi, h=h, meaning="ширина обода")
+        r = record("r", "R - h", "м", R=R, h=h, meaning="внутренний радиус обода")
+        m = record("m", "rho * pi * (R**2 - r**2) * b", "кг", rho, R=R, r=r, b=b, meaning="масса обода")
+        out.update(k=k, R=R, h=h, b=b, r=r, m=m)
+    return out
+
+
+def drive_records(res) -> dict[str, CalcRecord | Var]:
+    A = Var("A_c", r"A_\text{с}", res.work_cycle, "Дж", "работа сил сопротивления за цикл")
+    M_d = record(r"M_\text{дв}", "-A_c / (2 * pi)", "Н·м", A, meaning="постоянный движущий момент")
+    return {"A_c": A, "M_d": M_d}
+
+
+# ---------------------------------------------------------------------------------------------
+# the three flywheels and the δ each really gives
+
+
+@dataclass(frozen=True)
+class MethodRow:
+    key: str
+    J: float
+    relative: float            # (J − J_exact)/J_exact
+    delta: float               # δ achieved with this flywheel
+    omega_max: float
+    omega_min: float
+
+
+def method_rows(project, res) -> tuple[list[MethodRow], dict[str, np.ndarray]]:
+    """J_fly by each method, its difference from the exact one, and the δ it gives (the steady
+    motion with that flywheel, by the solver's ``steady_motion``); also ω(θ) of each."""
+    from reportgen.dynamics import EnergyProfile, ProjectCycle, steady_motion
+
+    cycle = ProjectCycle(project, res.crank_inertia)
+    profile = EnergyProfile(cycle, np.asarray(res.theta))
+    rows, omegas = [], {}
+    for c in res.comparison:
+        if c.method == "exact":
+            mo = res.motion
+        else:
+            mo = steady_motion(cycle, profile, max(c.J_fly, 0.0), np.asarray(res.theta), res.delta_target)
+        rows.append(MethodRow(c.method, c.J_fly, c.relative, mo.delta, mo.omega_max, mo.omega_min))
+        omegas[c.method] = np.asarray(mo.omega)
+    return rows, omegas
+
+
+def motion_records(res, omega: Var) -> dict[str, CalcRecord | Var]:
+    mo = res.motion
+    w_hi = Var("w_hi", r"\omega_{\max}'", mo.omega_max, "рад/с", "наибольшая угловая скорость установившегося движения")
+    w_lo = Var("w_lo", r"\omega_{\min}'", mo.omega_min, "рад/с", "наименьшая угловая скорость установившегося движения")
+    w_m = record(r"\omega_m'", "(w_hi + w_lo) / 2", "рад/с", w_hi, w_lo, meaning="средняя угловая скорость")
+    d = record(r"\delta'", "(w_hi - w_lo) / w_m", "", w_hi, w_lo, w_m=w_m,
+               meaning="коэффициент неравномерности, полученный интегрированием")
+    return {"w_hi": w_hi, "w_lo": w_lo, "w_m": w_m, "delta": d}
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def content(project) -> PartContent:
+    from ..figures import dynamics as fig
+    from ..numbers import num
+    from ..render import Strings
+    from .kinematics import detail_position
+
+    res = project.dynamics
+    kin = project.kinematics
+    i = detail_position(project)
+    w1 = abs(float(project.linkage.omega))
+    omega = Var("omega1", r"\omega_1", w1, "рад/с", "угловая скорость кривошипа (средняя)")
+    delta = Var("delta", r"\delta", res.delta_target, "", "заданный коэффициент неравномерности движения")
+    terms, idle = power_terms(project, i)
+    P_sum, M_rec = moment_records(terms, omega)
+    shares, J_rec = inertia_records(project, i, omega)
+    positions = int(round(2 * math.pi / float(_first_step(res.graphical.theta))))
+    labels = position_labels(res, positions)
+    sc = scale_records(res)
+    tg = tangent_records(res, sc, omega, delta)
+    ex = exact_records(res, omega, delta)
+    mz = merzalov_records(res, omega, delta)
+    fw = flywheel_records(res, ex["J_ex"]) if res.exact.J_fly > 0 else None
+    drv = drive_records(res)
+    rows, omegas = method_rows(project, res)
+    mot = motion_records(res, omega)
+    figures = {
+        "dyn_work": fig.work_figure(res, labels),
+        "dyn_wittenbauer": fig.wittenbauer_figure(res),
+        "dyn_omega": fig.omega_figure(res, omegas),
+        "dyn_flywheel": fig.flywheel_figure(res.flywheel),
+    }
+    resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
+    ctx = {
+        "i": i, "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
+        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Markup(f"${x}$") for x in idle], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
+        "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
+        "n_breaks": len(labels) - positions - 1, "corners": any(x.startswith("и") for x in labels),
+        "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
+        "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
+        "J_var": float(res.J_red.max() - res.J_red.min()), "J_mean": float(res.J_red.mean()),
+        "omega": omega, "delta": delta, "shape": res.flywheel.shape,
+        "index_K": labels[res.graphical.index_K], "index_L": labels[res.graphical.index_L],
+        "theta_K": math.degrees(res.exact.theta_K), "theta_L": math.degrees(res.exact.theta_L),
+        "J_zero": res.exact.J_fly <= 0,
+    }
+    strings = Strings(project.task.document.language or "ru")
+    concl = [strings.get("findings_dynamics.flywheel").format(
+        J=Markup(num(res.J_flywheel)), shape=strings.get(f"findings_dynamics.{res.flywheel.shape}"), delta=Markup(num(res.delta_target)),
+        R=Markup(num(res.flywheel.radius)), b=Markup(num(res.flywheel.width)), m=Markup(num(res.flywheel.mass)),
+        achieved=Markup(num(mot["delta"].value))),
+        strings.get("findings_dynamics.methods").format(
+            merzalov=Markup(num(abs(100 * rows[1].relative), 2)), merzalov_sense=_sense_word(strings, rows[1]),
+            graphical=Markup(num(abs(100 * rows[2].relative), 2)), graphical_sense=_sense_word(strings, rows[2]))]
+    return PartContent("sections/dynamics.tex.j2", ctx, figures, tuple(concl))
+
+
+def _sense_word(strings, row: MethodRow) -> Markup:
+    return strings.get("findings_dynamics.more" if row.relative > 0 else "findings_dynamics.less")
+
+
+def _first_step(theta: np.ndarray) -> float:
+    """The equal step of the graph's positions (the break angles fall between them)."""
+    d = np.diff(np.asarray(theta))
+    return float(d.max()) if d.size else 2 * math.pi
