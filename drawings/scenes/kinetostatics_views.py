@@ -1,0 +1,277 @@
+"""Views of sheet 2 (kinetostatics): a group or the crank cut out at μl with its forces at a stated
+force scale, a force polygon at its μF (the replica's, so the sheet and the note read the same
+lengths), and Zhukovsky's lever (the turned velocity plan with the loads and their arms).
+
+All numbers come from :class:`reportgen.kinetostatics.Kinetostatics`; nothing here solves."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from drawings.primitives import format_significant
+from drawings.sheet import Sheet, View
+from reportgen.kinetostatics.graphical import round_scale
+from reportgen.kinetostatics.reactions import pair_name, perp
+
+#: The longest force arrow on a group's view, mm; arrows are never shorter than MIN_ARROW_MM.
+ARROW_MM = 45.0
+MIN_ARROW_MM = 7.0
+#: Room around a view's drawing for labels, and the title / caption strips, mm.
+PAD_MM = 14.0
+TITLE_MM = 10.0
+CAPTION_MM = 16.0
+HINGE_MM = 1.5
+LABEL_MM = 3.5
+POLY_LABEL_MM = 2.5
+#: The groups are drawn at the round μl that puts the whole mechanism within this many mm.
+SHEET_SCHEME_MM = 400.0
+
+
+def plain(name: str) -> str:
+    """A solver's name as sheet text (the ГОСТ font has τ and Cyrillic): ``Fи4′`` → ``Fи4'``."""
+    if ":" in name:
+        base, point = name.split(":", 1)
+        return f"F{base}({point})"
+    return name.replace("′", "'")
+
+
+@dataclass
+class Arrow:
+    point: np.ndarray          # m
+    vector: np.ndarray         # N
+    name: str
+    dashed: bool = False
+
+
+def arrow_scale(arrows: list[Arrow]) -> float:
+    """μF of a group's view: a round scale that draws the largest force within ARROW_MM."""
+    return round_scale(max([float(np.hypot(*a.vector)) for a in arrows] + [1e-9]), ARROW_MM)
+
+
+def arrow_end(a: Arrow, mu_f: float, mu_l: float) -> np.ndarray:
+    """The model point of an arrow's tip: its length at μF, at least MIN_ARROW_MM."""
+    mag = float(np.hypot(*a.vector))
+    mm = max(mag / mu_f, MIN_ARROW_MM)
+    return np.asarray(a.point, float) + a.vector / (mag + 1e-300) * mm * mu_l
+
+
+def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
+                   hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
+                   arrows: list[Arrow], mu_l: float, preferred: str) -> View:
+    """A cut-out group (or the crank) at μl with its forces at a round μF."""
+    mu_f = arrow_scale(arrows)
+    pts = [p for s in segments for p in s] + hinges + [np.asarray(a.point) for a in arrows] + \
+        [arrow_end(a, mu_f, mu_l) for a in arrows]
+    arr = np.array(pts)
+    lo, hi = arr.min(0), arr.max(0)
+    scale = 1.0 / mu_l / 1000.0 * 1000.0     # sheet mm per metre
+    w = max((hi[0] - lo[0]) * scale + 2 * PAD_MM, 110.0)
+    h = (hi[1] - lo[1]) * scale + 2 * PAD_MM + TITLE_MM + CAPTION_MM
+    view = sheet.add_view(name, w, h, preferred=preferred, scale=scale)
+    cx = view.rect.x0 + (w - (hi[0] - lo[0]) * scale) / 2
+    from drawings.primitives import Transform
+    view.transform = Transform(scale, (float(lo[0]), float(lo[1])), (cx, view.rect.y0 + PAD_MM + CAPTION_MM))
+    for a, b in segments:
+        view.segment(a, b, "contour", trim_mm=(HINGE_MM, HINGE_MM))
+    for p in hinges:
+        view.hinge(p, HINGE_MM)
+    for p, ang in sliders:
+        view.slider(p, ang, 12.0, 6.0, guide_mm=None, hinge_mm=HINGE_MM)
+    for a in arrows:
+        view.arrow(a.point, arrow_end(a, mu_f, mu_l), plain(a.name), head_mm=4.0, label_height=LABEL_MM)
+    for letter, p in letters.items():
+        view.label(p, letter, 5.0, prefer_deg=135.0)
+    view.title(title)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), f"μl = {format_significant(mu_l, 4)} м/мм", 3.5,
+                 "bottom-center")
+    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), f"μF = {format_significant(mu_f, 4)} Н/мм", 3.5,
+                 "bottom-center")
+    return view
+
+
+def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:
+    """A force polygon drawn head to tail at its scale (mm), the diagonals read off it dashed."""
+    from drawings.primitives import Transform
+    verts = [np.asarray(v.start_mm, float) for v in polygon.vectors] + [np.asarray(polygon.vectors[-1].end_mm, float)]
+    diags = [_diagonal(verts, np.asarray(v.end_mm, float)) for v in polygon.extra]
+    arr = np.array(verts)
+    lo, hi = arr.min(0), arr.max(0)
+    pad = 18.0
+    w = max(hi[0] - lo[0] + 2 * pad, 90.0)
+    h = hi[1] - lo[1] + 2 * pad + TITLE_MM + 8.0
+    view = sheet.add_view(name, w, h, preferred=preferred)
+    cx = view.rect.x0 + (w - (hi[0] - lo[0])) / 2
+    view.transform = Transform(1.0, (float(lo[0]), float(lo[1])), (cx, view.rect.y0 + pad + 8.0))
+    for v in polygon.vectors:
+        a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
+        if float(np.hypot(*(e - a))) < 1e-6:
+            continue
+        view.arrow(a, e, None, head_mm=min(4.0, float(np.hypot(*(e - a)))))
+    for v in polygon.vectors:
+        a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
+        if float(np.hypot(*(e - a))) < 1e-6:
+            continue
+        d = e - a
+        view.label((a + e) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=math.degrees(math.atan2(d[0], -d[1])))
+    for v, (a, b) in zip(polygon.extra, diags):
+        view.segment(a, b, "hidden")
+        view.label((a + b) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=-45.0)
+    view.title(title)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), f"μF = {format_significant(polygon.scale, 4)} Н/мм",
+                 3.5, "bottom-center")
+    return view
+
+
+def place_label(view: View, anchors: list[np.ndarray], text: str, height: float) -> None:
+    """A label near the first anchor (model points) where a box of 16 directions × 3 distances
+    overlaps no text and crosses no line; else :meth:`Canvas.label` at the first anchor."""
+    from drawings import style
+    from drawings.primitives import text_box
+    w = style.text_width(text, height)
+    for anchor in anchors:
+        p = view.transform(anchor)
+        for dist in (1.0, 3.0, 6.0):
+            for k in range(16):
+                ang = math.radians(45.0 + 22.5 * k)
+                c = (p[0] + math.cos(ang) * (w / 2 + dist), p[1] + math.sin(ang) * (height / 2 + dist))
+                box = text_box(c, text, height, "center")
+                if not view.rect.polygon().contains(box):
+                    continue
+                if view.annotations.hits_box(box) == 0 and view.annotations.crossings(box) == 0:
+                    view.text_mm(c, text, height, "center")
+                    return
+    view.label(anchors[0], text, height)
+
+
+def _diagonal(verts: list[np.ndarray], d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    best, err = (verts[0], verts[0] + d), math.inf
+    for i, a in enumerate(verts):
+        for b in verts:
+            e = float(np.hypot(*((b - a) - d)))
+            if e < err:
+                best, err = (a, b), e
+    return best
+
+
+def lever_view(sheet: Sheet, name: str, points: dict[str, np.ndarray], segments: list[tuple[str, str]],
+               loads: list[tuple[np.ndarray, np.ndarray, str, float]], mu_v: float, preferred: str) -> View:
+    """The turned plan (mm) with each load at its image point at a round μF, and the arm of each
+    force with a non-zero arm (thin, from the pole square to the force's line, numbered h1, h2, …)."""
+    from drawings.primitives import Transform
+    mu_f = round_scale(max([float(np.hypot(*v)) for _, v, _, _ in loads] + [1e-9]), 40.0)
+    ends = []
+    for img, v, _, _ in loads:
+        mag = float(np.hypot(*v))
+        ends.append(img + v / (mag + 1e-300) * max(mag / mu_f, MIN_ARROW_MM))
+    arr = np.array([np.zeros(2)] + list(points.values()) + ends)
+    lo, hi = arr.min(0), arr.max(0)
+    pad = 16.0
+    title = "Рычаг Жуковского (план скоростей, повёрнутый на 90°)"
+    from drawings import style
+    w = max(hi[0] - lo[0] + 2 * pad, style.text_width(title, 5.0) + 4.0)
+    h = hi[1] - lo[1] + 2 * pad + TITLE_MM + CAPTION_MM
+    view = sheet.add_view(name, w, h, preferred=preferred)
+    x0 = view.rect.x0 + (w - (hi[0] - lo[0])) / 2
+    view.transform = Transform(1.0, (float(lo[0]), float(lo[1])), (x0, view.rect.y0 + pad + CAPTION_MM))
+    for a, b in segments:
+        pa = np.zeros(2) if a == "p" else points[a]
+        view.line(pa, points[b], "vectors")
+    for (img, v, label, arm), end in zip(loads, ends):
+        if arm != 0.0:
+            u = v / (float(np.hypot(*v)) + 1e-300)
+            foot = img - float(img @ u) * u
+            if float(np.hypot(*foot)) > 3.0:
+                view.line((0.0, 0.0), foot, "construction")
+    view.label((0.0, 0.0), "p", 5.0, prefer_deg=-135.0)
+    for k, p in points.items():
+        view.label(p, k, 5.0, prefer_deg=45.0)
+    for (img, v, label, arm), end in zip(loads, ends):
+        view.arrow(img, end, None, head_mm=3.5)
+    for (img, v, label, arm), end in zip(loads, ends):
+        place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
+    view.title(title)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), f"μv = {format_significant(mu_v, 4)} (м/с)/мм", 3.5,
+                 "bottom-center")
+    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), f"μF = {format_significant(mu_f, 4)} Н/мм", 3.5,
+                 "bottom-center")
+    return view
+
+
+def group_geometry(ks, linkage, links: tuple[int, ...], key: str | None):
+    """Segments, hinges, sliders and letters of a group (``key``) or of the crank (``key`` None)."""
+    r = ks.reactions
+    pts = {name: np.asarray(m.pos)[0] for name, m in r.kin.points.items()}
+    segs, hinges, sliders, letters = [], [], [], {}
+    for k in links:
+        names = linkage.bodies[k].points
+        outline = [(names[0], names[1])] if len(names) == 2 else \
+            [(names[i], names[(i + 1) % len(names)]) for i in range(len(names))] if len(names) > 2 else []
+        for a, b in outline:
+            segs.append((pts[a], pts[b]))
+        for nm in names:
+            letters[nm] = pts[nm]
+    group = str(r.crank) if key is None else key
+    for p in r.pairs:
+        if p.group != group and not (key is None and p.name in {q.name for q in r.pairs_of(r.crank)}):
+            continue
+        if p.kind == "R":
+            hinges.append(np.asarray(p.point[0]))
+        else:
+            g = -perp(np.asarray(p.normal[0]))
+            sliders.append((np.asarray(p.sliding_point[0]), math.degrees(math.atan2(g[1], g[0]))))
+    return segs, hinges, sliders, letters
+
+
+def loads_on(ks, links: tuple[int, ...]) -> list[Arrow]:
+    """Loads of the links as drawn (Fи′ at its shifted point where Fи and Mи were replaced)."""
+    repl = {x.link: x for x in ks.graphical.inertia}
+    out = []
+    for f in ks.reactions.loads.forces:
+        if f.link not in links or float(np.hypot(*np.asarray(f.vector)[0])) == 0.0:
+            continue
+        if f.kind == "inertia" and f.link in repl:
+            out.append(Arrow(np.asarray(repl[f.link].point), np.asarray(f.vector)[0], f.name + "′"))
+        else:
+            out.append(Arrow(np.asarray(f.point)[0], np.asarray(f.vector)[0], f.name))
+    return out
+
+
+def group_arrows(ks, links: tuple[int, ...], key: str, splits) -> list[Arrow]:
+    """Loads, reactions known from earlier groups, and the group's own outer reactions (R^n and R^τ
+    where the dyad splits them)."""
+    r = ks.reactions
+    arrows = loads_on(ks, links)
+    own = {p.name for p in r.pairs if p.group == key}
+    for k in links:
+        for p in r.pairs_of(k):
+            j = p.other(k)
+            if p.name not in own and j not in links:
+                arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(k)[0]), pair_name(j, k)))
+    by_link = {sp.link: sp for sp in splits}
+    for p in r.pairs:
+        if p.group != key or not p.external:
+            continue
+        k = p.hi if p.hi in links else p.lo
+        nm = pair_name(p.other(k), k)
+        sp = by_link.get(k)
+        if sp is not None and p.kind == "R":
+            arrows.append(Arrow(np.asarray(p.point[0]), sp.normal * np.asarray(sp.along), "Rn" + nm[1:]))
+            arrows.append(Arrow(np.asarray(p.point[0]), sp.tau * np.asarray(sp.tangent), "Rτ" + nm[1:]))
+        else:
+            arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(k)[0]), nm))
+    return [a for a in arrows if float(np.hypot(*a.vector)) > 0.0]
+
+
+def crank_arrows(ks) -> list[Arrow]:
+    r = ks.reactions
+    d = r.crank
+    fp = next(p for p in r.pairs if p.group == str(d))
+    arrows = loads_on(ks, (d,))
+    for p in r.pairs_of(d):
+        if p.name != fp.name:
+            arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(d)[0]), pair_name(p.other(d), d)))
+    arrows.append(Arrow(np.asarray(r.balancing_point[0]), np.asarray(r.balancing_force[0]), "Fур"))
+    arrows.append(Arrow(np.asarray(fp.point[0]), np.asarray(fp.on(d)[0]), pair_name(0, d)))
+    return [a for a in arrows if float(np.hypot(*a.vector)) > 0.0]
