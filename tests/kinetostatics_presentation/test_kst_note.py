@@ -1,0 +1,76 @@
+"""Section 2 of the note: it renders for every example, every printed record re-evaluates (and
+repeats the replica's value: the part checks that itself), the PDF prints M_ур by both methods
+equal to results.json's values, and a near-dead-centre position carries the warning."""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).parent))
+from kst_build import EXAMPLES, project_of, section_note  # noqa: E402
+
+from reportgen.calc import evaluate_displayed, format_decimal  # noqa: E402
+from reportgen.kinetostatics.results import kinetostatics_block, kinetostatics_of  # noqa: E402
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_kst_section_renders_and_records_reevaluate(example, tmp_path):
+    project = project_of(example)
+    note = section_note(project)
+    tex = note.render(tmp_path).read_text(encoding="utf-8")
+    assert "Силовой расчёт рычажного механизма" in tex
+    assert "Рычаг Жуковского" in tex
+    records = note.records
+    assert len(records) > 20
+    assert all(evaluate_displayed(r).ok for r in records)
+    ks = kinetostatics_of(project)
+    # the printed arms of the tangential components are the replica's measured arms
+    for gg in ks.graphical.groups:
+        for sp in gg.splits:
+            for t in sp.terms:
+                if t.arm_mm_measured:
+                    assert format_decimal(abs(t.arm_mm_measured), 4) in tex
+    # every figure of the part is included
+    for name in ("kst_crank", "kst_poly_crank", "kst_lever", "kst_cycle"):
+        assert name.replace("_", "-") in tex or name in tex
+
+
+def _norm(s: str) -> str:
+    return re.sub(r"[\s\u2009\u202f\u00a0]", "", s).replace("\u2212", "-")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("example", ["press", "class3"])
+def test_kst_pdf_prints_both_balancing_moments(example, tmp_path):
+    project = project_of(example)
+    note = section_note(project)
+    note.render(tmp_path)
+    report = note.build(tmp_path)
+    text = _norm(subprocess.run(["pdftotext", str(report.pdf), "-"], capture_output=True, text=True,
+                                check=True).stdout)
+    block = kinetostatics_block(kinetostatics_of(project))
+    for key in ("balancing_moment", "balancing_moment_zhukovsky"):
+        printed = _norm(format_decimal(block[key], 6).replace("{,}", ",").replace("\\,", ""))
+        assert printed in text, (key, printed)
+    assert _norm("Сравнение результатов") in text
+
+
+def test_kst_warning_near_dead_centre(tmp_path, monkeypatch):
+    """No example's analysed position is within 10° of a dead centre: no warning. With the threshold
+    raised above the press's transmission angle there, the section prints the warning with that μ
+    and the conclusions say so too."""
+    from latex_templates.parts import kinetostatics as part
+    project = project_of("press")
+    ks = kinetostatics_of(project)
+    tex = section_note(project).render(tmp_path / "plain").read_text(encoding="utf-8")
+    assert "мёртвому положению" not in tex
+    mu = min(ks.transmission_deg.values())
+    monkeypatch.setattr(part, "WARN_TRANSMISSION_DEG", mu + 1.0)
+    note = section_note(project)
+    tex = note.render(tmp_path / "warned").read_text(encoding="utf-8")
+    assert "мёртвому положению" in tex
+    assert format_decimal(mu, decimals=2) in tex
