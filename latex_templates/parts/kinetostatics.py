@@ -353,8 +353,10 @@ def _resistance(project, ks) -> list[dict]:
         if on and travel != 0:
             s_val = abs(x - float(xe[0])) if working else abs(float(xe[1]) - x)
             unit = "м" if kind == "slider" else "рад"
-            s = Var("s", "s", s_val, unit, "перемещение выходного звена от начала хода")
-            H = Var("H", "H", abs(travel), unit, "полный ход выходного звена")
+            s = Var("s", "s", s_val, unit, "перемещение выходного звена от начала хода" if kind == "slider"
+                    else "угол поворота выходного звена от начала хода")
+            H = Var("H", "H", abs(travel), unit, "полный ход выходного звена" if kind == "slider"
+                    else "размах выходного звена")
             frac = record("s/H", "s / H", "", s, H, meaning="доля пройденного хода")
             kf = float(law_value(ld.law, np.array([frac.value]))[0])
             kv = Var("k", "k", kf, "", Markup("доля наибольшего сопротивления по~закону нагружения"))
