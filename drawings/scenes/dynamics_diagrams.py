@@ -1,0 +1,309 @@
+"""Sheet 3, the flywheel calculation drawn as the course draws it, from
+:class:`reportgen.dynamics.GraphicalReplica` (every length in mm is the replica's own):
+
+* M_red(φ) at μM with the mid-interval ordinates (steps), the pole P at H and its rays;
+* the work of resistance A_с by chords (each parallel to its ray) and the straight line of A_дв;
+* ΔE(φ) at μE;
+* the Wittenbauer diagram ΔE(J) with the tangents at ψmax, ψmin, the points K, L and KL dimensioned;
+* J_red(φ) turned (φ downwards) under it, sharing its J axis.
+
+Views are placed at explicit rectangles (:func:`layout`) so that ΔE(φ) and the Wittenbauer diagram
+share their ΔE level and the Wittenbauer diagram and J_red(φ) share their J axis.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from drawings.layout import Rect
+from drawings.primitives import Transform, format_number, format_significant
+from drawings.sheet import Sheet, View
+
+#: Room around a diagram: above (title, scale), below (position numbers), mm.
+TOP_MM = 22.0
+BOTTOM_MM = 12.0
+#: Room right of the φ axis (its arrow and name) and left of the ordinate axis (its ticks), mm.
+RIGHT_MM = 24.0
+LEFT_MM = 14.0
+GAP_MM = 8.0
+#: The column of M, A, ΔE is at least this wide (its titles), mm.
+MIN_WIDTH_MM = 250.0
+#: The J_red(φ) view: room above the J axis (the axis name) and below the φ axis's end.
+J_TOP_MM = 12.0
+J_BOTTOM_MM = 16.0
+
+
+@dataclass(frozen=True)
+class Span:
+    """Ordinates of a diagram, mm: how far it goes above and below its φ axis (both ≥ 0), and the
+    room under it (position numbers, the names of the break positions)."""
+    up: float
+    down: float
+    bottom: float = BOTTOM_MM
+
+    @staticmethod
+    def of(*arrays, bottom: float = BOTTOM_MM) -> "Span":
+        v = np.concatenate([np.atleast_1d(np.asarray(a, dtype=float)) for a in arrays])
+        return Span(max(float(v.max()), 0.0) + 4.0, max(-float(v.min()), 0.0) + 4.0, bottom)
+
+    @property
+    def height(self) -> float:
+        return TOP_MM + self.up + self.down + self.bottom
+
+
+@dataclass(frozen=True)
+class Layout:
+    """The rectangles of the five views and the origins of their diagrams (sheet mm)."""
+    moment: Rect
+    work: Rect
+    energy: Rect
+    wittenbauer: Rect
+    inertia: Rect
+    o_moment: tuple[float, float]
+    o_work: tuple[float, float]
+    o_energy: tuple[float, float]
+    o_wittenbauer: tuple[float, float]
+    o_inertia: tuple[float, float]
+
+    @property
+    def right(self) -> float:
+        return max(self.wittenbauer.x1, self.inertia.x1)
+
+
+def spans(g, labels: list[str] | None = None) -> dict[str, Span]:
+    chord_line = np.array([0.0, float(g.a_mm[-1])])
+    tangents = np.array([g.K_mm, g.L_mm])
+    names = [n for n in (labels or []) if not n.isdigit()]
+    bottom_m = BOTTOM_MM + (max(len(n) for n in names) * 2.6 + 6.0 if names else 0.0)
+    return {"M": Span.of(g.M_mm, g.mid_mm, bottom=bottom_m), "A": Span.of(g.a_mm, chord_line), "E": Span.of(g.e_mm),
+            "W": Span.of(g.e_mm, tangents, _tangent_ends(g))}
+
+
+def _tangent_ends(g) -> np.ndarray:
+    """Ordinates of the two tangents at the right end of the J axis."""
+    x = _j_length(g)
+    return np.array([g.K_mm + x * math.tan(math.radians(g.psi_max_deg)),
+                     g.L_mm + x * math.tan(math.radians(g.psi_min_deg))])
+
+
+def _j_length(g) -> float:
+    """Length of the drawn tangents and of the J axis up to its arrow, mm."""
+    return float(np.max(g.j_mm)) + 12.0
+
+
+def layout(g, labels: list[str], x0: float, y_top: float, y_bottom: float) -> Layout:
+    """Column of M, A, ΔE from (x0, y_top) down; Wittenbauer right of ΔE at its level; J_red under it."""
+    sp = spans(g, labels)
+    phi_len = float(g.x[-1])
+    left = g.H + LEFT_MM + 8.0
+    width = max(left + phi_len + RIGHT_MM, MIN_WIDTH_MM)
+    rects, origins = [], []
+    top = y_top
+    for key in ("M", "A", "E"):
+        s = sp[key]
+        r = Rect(x0, top - s.height, x0 + width, top)
+        rects.append(r)
+        origins.append((x0 + left, top - TOP_MM - s.up))
+        top = r.y0 - GAP_MM
+    sw = sp["W"]
+    xw = x0 + width + GAP_MM
+    ww = LEFT_MM + 8.0 + _j_length(g) + RIGHT_MM
+    j_height = J_TOP_MM + phi_len + J_BOTTOM_MM
+    # the Wittenbauer diagram at the level of ΔE(φ) (same ΔE axis); if J_red(φ) would not fit under
+    # it, both go to the top of their column
+    oy_w = origins[2][1]
+    if oy_w - sw.down - BOTTOM_MM - GAP_MM - j_height < y_bottom:
+        oy_w = y_top - TOP_MM - sw.up
+    wit = Rect(xw, oy_w - sw.down - BOTTOM_MM, xw + ww, oy_w + sw.up + TOP_MM)
+    o_w = (xw + LEFT_MM + 8.0, oy_w)
+    inertia_top = wit.y0 - GAP_MM
+    inertia = Rect(xw, inertia_top - j_height, xw + ww, inertia_top)
+    o_j = (o_w[0], inertia_top - J_TOP_MM)
+    if inertia.y0 < y_bottom or wit.y1 > y_top:
+        raise ValueError("the Wittenbauer and J_red(φ) diagrams do not fit one under the other")
+    return Layout(rects[0], rects[1], rects[2], wit, inertia, origins[0], origins[1], origins[2], o_w, o_j)
+
+
+def _view(sheet: Sheet, name: str, rect: Rect, origin: tuple[float, float]) -> View:
+    """A view whose model units are the diagram's mm, model (0, 0) at ``origin``."""
+    return sheet.place_view(name, rect, Transform(1.0, (0.0, 0.0), origin))
+
+
+def _title(view: View, text: str, scale: str) -> None:
+    r = view.rect
+    view.text_mm((r.x0 + 4.0, r.y1 - 6.5), text, 5.0, "bottom-left")
+    view.text_mm((r.x0 + 4.0, r.y1 - 13.0), scale, 3.5, "bottom-left")
+
+
+def _phi_axes(view: View, g, span: Span, y_label: str, labels: list[str], numbers: bool) -> None:
+    ticks = [(float(x), "") for x in g.x]
+    view.axes((0.0, 0.0), float(g.x[-1]) + RIGHT_MM - 6.0, span.up + 4.0, span.down, x_label="φ",
+              y_label=y_label, x_ticks=ticks)
+    if numbers:
+        y = -span.down - 1.0
+        for x, name in zip(g.x, labels):
+            if name.isdigit():
+                view.text((float(x), y), name, 3.5, "top-center")
+
+
+def _break_lines(view: View, g, span: Span, labels: list[str]) -> None:
+    """Thin verticals at the break positions, their names turned under the position numbers."""
+    for x, name in zip(g.x, labels):
+        if name.isdigit():
+            continue
+        view.line((float(x), -span.down), (float(x), span.up), "thin")
+        view.text((float(x), -span.down - 7.0), name, 3.5, "middle-right", rotation=90.0)
+
+
+def draw_moment(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+    """M_red(φ): the points, the curve through them, the steps of the mid ordinates and the pole."""
+    sp = spans(g, labels)["M"]
+    v = _view(sheet, "moment", lay.moment, lay.o_moment)
+    _title(v, "Приведённый момент сил сопротивления Мпр(φ)",
+           f"μM = {format_significant(g.mu_M, 4)} Н·м/мм,  μφ = {format_significant(g.mu_phi, 4)} рад/мм")
+    _phi_axes(v, g, sp, "Мпр", labels, numbers=True)
+    _break_lines(v, g, sp, labels)
+    pts = list(zip(map(float, g.x), map(float, g.M_mm)))
+    v.polyline(pts, "contour")
+    for p in pts:
+        v.circle_mm(p, 0.6, "contour")
+    # steps: the mid ordinate over each interval, carried to the M axis and joined to the pole
+    pole = (-float(g.H), 0.0)
+    for a, b, y in zip(g.x[:-1], g.x[1:], g.mid_mm):
+        v.line((float(a), float(y)), (float(b), float(y)), "thin")
+        v.line((0.0, float(y)), pole, "construction")
+    v.circle_mm(pole, 0.8, "contour")
+    v.text((pole[0], 2.0), "P", 5.0, "bottom-center")
+    y_dim = -sp.down - 7.0
+    v.dimension((pole[0], y_dim), (0.0, y_dim), offset_mm=0.0, text=f"H = {format_number(g.H, 0)}")
+    v.line(pole, (pole[0], y_dim - 1.0), "thin")
+    return v
+
+
+def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+    """A_с by chords and the straight line of A_дв (from the origin to the end of A_с)."""
+    sp = spans(g)["A"]
+    v = _view(sheet, "work", lay.work, lay.o_work)
+    _title(v, "Работа сил сопротивления Ас(φ) и движущих сил Адв(φ)",
+           f"μA = μM·μφ·H = {format_significant(g.mu_A, 4)} Дж/мм")
+    _phi_axes(v, g, sp, "A", labels, numbers=False)
+    pts = list(zip(map(float, g.x), map(float, g.a_mm)))
+    v.polyline(pts, "contour")
+    for p in pts:
+        v.circle_mm(p, 0.6, "contour")
+    end = pts[-1]
+    v.line((0.0, 0.0), end, "contour")
+    i_mid = len(pts) // 2
+    v.label(pts[i_mid], "Ас", 5.0, prefer_deg=-60.0)
+    v.label((end[0] * 0.5, end[1] * 0.5), "Адв", 5.0, prefer_deg=60.0)
+    return v
+
+
+def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+    """ΔE(φ) = A_дв + A_с at μE, by subtracting the line from the chords."""
+    sp = spans(g)["E"]
+    v = _view(sheet, "energy", lay.energy, lay.o_energy)
+    k = f" (увеличено в {g.enlargement} раза)" if g.enlargement > 1 else ""
+    _title(v, "Изменение кинетической энергии ΔE(φ)",
+           f"μE = {format_significant(g.mu_E, 4)} Дж/мм{k}")
+    _phi_axes(v, g, sp, "ΔE", labels, numbers=True)
+    pts = list(zip(map(float, g.x), map(float, g.e_mm)))
+    v.polyline(pts, "contour")
+    for p in pts:
+        v.circle_mm(p, 0.6, "contour")
+    return v
+
+
+def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str]) -> tuple[View, float]:
+    """ΔE(J) through the positions, the tangents at ψmax, ψmin, K, L and the dimension KL (its value
+    is returned: the distance between K and L measured on the sheet, mm)."""
+    sp = spans(g)["W"]
+    v = _view(sheet, "wittenbauer", lay.wittenbauer, lay.o_wittenbauer)
+    _title(v, "Диаграмма энергомасс ΔE(Jпр)", f"μE = {format_significant(g.mu_E, 4)} Дж/мм,  "
+           f"μJ = {format_significant(g.mu_J, 4)} кг·м²/мм")
+    x_len = _j_length(g)
+    v.axes((0.0, 0.0), x_len + RIGHT_MM - 6.0, sp.up + 4.0, sp.down, x_label="J", y_label="ΔE")
+    pts = list(zip(map(float, g.j_mm), map(float, g.e_mm)))
+    v.polyline(pts, "contour")
+    for p, name in zip(pts[:-1], labels[:-1]):
+        v.circle_mm(p, 0.6, "contour")
+    for y0, psi, name in ((g.K_mm, g.psi_max_deg, "ψmax"), (g.L_mm, g.psi_min_deg, "ψmin")):
+        t = math.tan(math.radians(psi))
+        v.line((0.0, y0), (x_len, y0 + x_len * t), "contour")
+        v.line((0.0, y0), (26.0, y0), "thin")
+        v.arc((0.0, y0), 22.0, 0.0, psi, "thin")
+        v.text((23.5, y0 + 22.0 * math.sin(math.radians(psi / 2)) - 1.2), name, 3.5, "middle-left")
+    for p, name in zip(pts[:-1], labels[:-1]):
+        if name.isdigit():
+            v.label(p, name, 3.5, gap_mm=1.0)
+    v.circle_mm((0.0, g.K_mm), 0.8, "contour")
+    v.circle_mm((0.0, g.L_mm), 0.8, "contour")
+    v.text((-2.0, g.K_mm + 1.0), "K", 5.0, "bottom-right")
+    v.text((-2.0, g.L_mm - 1.0), "L", 5.0, "top-right")
+    kl = v.dimension((0.0, g.L_mm), (0.0, g.K_mm), offset_mm=LEFT_MM + 2.0, decimals=1)
+    return v, kl
+
+
+def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+    """J_red(φ) turned: J to the right (the Wittenbauer diagram's J axis), φ downwards."""
+    v = _view(sheet, "inertia", lay.inertia, lay.o_inertia)
+    phi_len = float(g.x[-1])
+    x_len = _j_length(g)
+    # J axis to the right, φ axis downwards (arrows at the positive ends)
+    v.line((0.0, 0.0), (x_len + 4.0, 0.0), "thin")
+    v.arrowhead_mm(v.transform((x_len + 7.0, 0.0)), (1.0, 0.0), 5.0, 1.7, "thin")
+    v.text((x_len + 7.0, 2.0), "J", 5.0, "bottom-right")
+    v.line((0.0, 0.0), (0.0, -phi_len - 4.0), "thin")
+    v.arrowhead_mm(v.transform((0.0, -phi_len - 7.0)), (0.0, -1.0), 5.0, 1.7, "thin")
+    v.text((2.5, -phi_len - 7.0), "φ", 5.0, "bottom-left")
+    for x, name in zip(g.x, labels):
+        y = -float(x)
+        v.line((-1.5, y), (1.5, y), "thin")
+        if name.isdigit():
+            v.text((-2.5, y), name, 3.5, "middle-right")
+    pts = [(float(j), -float(x)) for j, x in zip(g.j_mm, g.x)]
+    v.polyline(pts, "contour")
+    for p in pts:
+        v.circle_mm(p, 0.6, "contour")
+    r = v.rect
+    v.text_mm((r.x0 + 4.0, r.y0 + 2.0), f"Приведённый момент инерции Jпр(φ),  μJ = "
+              f"{format_significant(g.mu_J, 4)} кг·м²/мм", 3.5, "bottom-left")
+    return v
+
+
+def omega_span(res, g) -> tuple[float, Span]:
+    """μω (rad/s per mm, round) and the span of ω − ω_m on the sheet (band included)."""
+    from reportgen.dynamics.graphical import nice_ceil
+
+    w = np.asarray(res.motion.omega) - res.omega_m
+    lo, hi = (b - res.omega_m for b in res.motion.band)
+    mu = nice_ceil(max(float(np.abs(w).max()), hi, -lo) / 28.0)
+    return mu, Span.of(w / mu, np.array([lo, hi]) / mu)
+
+
+def omega_height(res, g) -> float:
+    return omega_span(res, g)[1].height
+
+
+def draw_omega(sheet: Sheet, rect: Rect, res, g, labels: list[str]) -> View:
+    """ω(φ) of the steady motion with the flywheel: the φ axis at ω_m, the band ω_m(1 ± δ/2)."""
+    mu, sp = omega_span(res, g)
+    left = g.H + LEFT_MM + 8.0
+    v = _view(sheet, "omega", rect, (rect.x0 + left, rect.y1 - TOP_MM - sp.up))
+    _title(v, "Угловая скорость кривошипа ω(φ) с маховиком",
+           f"μω = {format_significant(mu, 4)} (рад/с)/мм,  ось φ на уровне ωm = {format_significant(res.omega_m, 4)} рад/с")
+    lo, hi = res.motion.band
+    ticks = [((hi - res.omega_m) / mu, format_significant(hi, 4)), ((lo - res.omega_m) / mu, format_significant(lo, 4))]
+    view_len = float(g.x[-1])
+    v.axes((0.0, 0.0), view_len + RIGHT_MM - 6.0, sp.up + 4.0, sp.down, x_label="φ", y_label="ω",
+           x_ticks=[(float(x), "") for x in g.x], y_ticks=ticks)
+    for y in (ticks[0][0], ticks[1][0]):
+        v.line((0.0, y), (view_len, y), "hidden")
+    x = np.append(np.asarray(res.theta), 2 * math.pi) / g.mu_phi
+    w = np.append(np.asarray(res.motion.omega), res.motion.omega[0])
+    v.curve(x, (w - res.omega_m) / mu, "contour")
+    v.text((view_len + 1.5, ticks[0][0]), "ωmax", 3.5, "middle-left")
+    v.text((view_len + 1.5, ticks[1][0]), "ωmin", 3.5, "middle-left")
+    return v

@@ -1,0 +1,116 @@
+"""Sheet 3: the flywheel's sketch (front view and axial section at a ГОСТ 2.302 scale, dimensioned
+in real millimetres) and the table of the calculation's results."""
+from __future__ import annotations
+
+from drawings.layout import Rect
+from drawings.primitives import Transform, format_number, format_significant
+from drawings.sheet import Sheet, View
+
+#: ГОСТ 2.302 reduction scales, largest first (sheet mm per real mm).
+GOST_REDUCTIONS = (1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20, 1 / 25, 1 / 40, 1 / 50)
+#: Room of the sketch around the two views (dimensions, title), mm.
+PAD_MM = 24.0
+BETWEEN_MM = 30.0
+HATCH_MM = 4.0
+
+
+def scale_text(k: float) -> str:
+    return "1:1" if k >= 1 else f"1:{format_number(1 / k, 1)}"
+
+
+def sketch_scale(fw, width: float, height: float) -> float:
+    """The largest ГОСТ scale at which the front view and the section fit ``width`` × ``height``."""
+    D, b = 2000 * fw.radius, 1000 * fw.width
+    for k in GOST_REDUCTIONS:
+        if D * k + b * k + BETWEEN_MM + 2 * PAD_MM <= width and D * k + 2 * PAD_MM + 14 <= height:
+            return k
+    return GOST_REDUCTIONS[-1]
+
+
+def sketch_size(fw, k: float) -> tuple[float, float]:
+    D, b = 2000 * fw.radius, 1000 * fw.width
+    return D * k + b * k + BETWEEN_MM + 2 * PAD_MM, D * k + 2 * PAD_MM + 14
+
+
+def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float) -> View:
+    """Front view (circles and centre lines) and the axial section (hatched) of the disk or rim;
+    dimensions in real mm (the view's model units are real mm)."""
+    R, r, b = 1000 * fw.radius, 1000 * fw.inner_radius, 1000 * fw.width
+    cx = rect.x0 + PAD_MM + R * k
+    cy = rect.y0 + PAD_MM + R * k
+    view = sheet.place_view("flywheel", rect, Transform(k, (0.0, 0.0), (cx, cy)))
+    view.title(f"Эскиз маховика  М {scale_text(k)}")
+    view.circle((0.0, 0.0), R, "contour")
+    if r > 0:
+        view.circle((0.0, 0.0), r, "contour")
+    ext = R + 6.0 / k
+    view.line((-ext, 0.0), (ext, 0.0), "axis")
+    view.line((0.0, -ext), (0.0, ext), "axis")
+    # the section, right of the front view
+    x0 = R + BETWEEN_MM / k
+    rings = [(-R, R)] if r <= 0 else [(r, R), (-R, -r)]
+    for y0, y1 in rings:
+        view.polyline([(x0, y0), (x0 + b, y0), (x0 + b, y1), (x0, y1)], "contour", closed=True)
+        _hatch(view, x0, y0, x0 + b, y1, HATCH_MM / k)
+    view.line((x0 - 6.0 / k, 0.0), (x0 + b + 6.0 / k, 0.0), "axis")
+    view.dimension((x0 + b, -R), (x0 + b, R), offset_mm=-10.0, decimals=0, text=f"Ø{format_number(2 * R, 0)}")
+    view.dimension((x0, R), (x0 + b, R), offset_mm=8.0, decimals=0)
+    if r > 0:
+        view.dimension((x0, -r), (x0, r), offset_mm=10.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")
+    return view
+
+
+def _hatch(view: View, x0: float, y0: float, x1: float, y1: float, step: float) -> None:
+    """45° section lines inside the rectangle (model units), ``step`` apart along x."""
+    w, h = x1 - x0, y1 - y0
+    c = -h
+    while c < w:
+        # the line x − x0 = (y − y0) + c, clipped to the rectangle
+        ya, yb = max(0.0, -c), min(h, w - c)
+        if yb > ya:
+            view.line((x0 + ya + c, y0 + ya), (x0 + yb + c, y0 + yb), "thin")
+        c += step * 1.4142135623730951
+
+
+def draw_results(sheet: Sheet, res, rect: Rect, rows: list[tuple[str, str]]) -> View:
+    """A two-column table (name, value) of the calculation's results, rows 8 mm high."""
+    view = sheet.place_view("results", rect, Transform(1.0, (0.0, 0.0), (rect.x0, rect.y0)))
+    w1 = rect.width * 0.62
+    top = rect.y1 - 10.0
+    view.text_mm((rect.x0 + rect.width / 2, rect.y1 - 7.0), "Результаты расчёта маховика", 5.0, "bottom-center")
+    n = len(rows)
+    y_bottom = top - 8.0 * n
+    for i in range(n + 1):
+        y = top - 8.0 * i
+        view.line((0.0, y - rect.y0), (rect.width, y - rect.y0), "contour" if i in (0, n) else "thin")
+    for x in (0.0, w1, rect.width):
+        view.line((x, top - rect.y0), (x, y_bottom - rect.y0), "contour")
+    for i, (name, value) in enumerate(rows):
+        y = top - 8.0 * i - 4.0 - rect.y0
+        view.text((2.0, y), name, 3.5, "middle-left")
+        view.text((w1 + 2.0, y), value, 3.5, "middle-left")
+    return view
+
+
+def result_rows(res, kl_on_sheet: float) -> list[tuple[str, str]]:
+    """Scales, the tangents, KL and the flywheel by the three methods with the δ of the exact one."""
+    g, fw = res.graphical, res.flywheel
+    names = {"exact": "точно", "merzalov": "по Мерцалову", "graphical": "по диаграмме"}
+    rows = [("Масштаб μφ, рад/мм", format_significant(g.mu_phi, 4)),
+            ("Масштаб μM, Н·м/мм", format_significant(g.mu_M, 4)),
+            ("Полюсное расстояние H, мм", format_number(g.H, 0)),
+            ("Масштаб μA, Дж/мм", format_significant(g.mu_A, 4)),
+            ("Масштаб μE, Дж/мм", format_significant(g.mu_E, 4)),
+            ("Масштаб μJ, кг·м²/мм", format_significant(g.mu_J, 4)),
+            ("Угол ψmax, °", format_number(g.psi_max_deg, 2)),
+            ("Угол ψmin, °", format_number(g.psi_min_deg, 2)),
+            ("Отрезок KL, мм", format_number(kl_on_sheet, 1)),
+            ("Коэффициент δ заданный", format_significant(res.delta_target, 4))]
+    for c in res.comparison:
+        rows.append((f"Jм {names[c.method]}, кг·м²", format_significant(c.J_fly, 4)))
+    rows += [("Коэффициент δ получен", format_significant(res.delta_achieved, 4)),
+             ("Движущий момент Mдв, Н·м", format_significant(res.M_drive, 4)),
+             ("Радиус R, мм", format_number(1000 * fw.radius, 0)),
+             ("Ширина b, мм", format_number(1000 * fw.width, 0)),
+             ("Масса m, кг", format_significant(fw.mass, 4))]
+    return rows

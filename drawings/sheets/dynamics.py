@@ -1,0 +1,76 @@
+"""Sheet 3 «Динамический анализ машинного агрегата» (A1): on the left, one under the other, M_red(φ)
+with the steps and the pole, the works A_с and A_дв, ΔE(φ); right of ΔE(φ) the Wittenbauer diagram
+with the tangents and KL dimensioned, J_red(φ) turned under it; on the right the flywheel's sketch
+and the table of results. Every length is the graphical replica's (``project.dynamics.graphical``),
+so KL on the sheet is the KL of results.json."""
+from __future__ import annotations
+
+from drawings.layout import Rect
+from drawings.scenes import dynamics_diagrams as dd
+from drawings.scenes import dynamics_flywheel as df
+from drawings.sheet import Sheet
+from reportgen.project import Project
+
+NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics")
+TITLE = "Динамический анализ машинного агрегата"
+
+#: Clearance from the frame and from graph 26 / the title block, mm.
+CLEAR_MM = 8.0
+#: Height of a row of the results table, mm (as in :func:`dynamics_flywheel.draw_results`).
+ROW_MM = 8.0
+#: The flywheel's sketch is at most this high (a ГОСТ scale is chosen to fit), mm.
+SKETCH_MAX_MM = 260.0
+
+
+def available(project: Project) -> bool:
+    return project.task.mechanism is not None and project.task.dynamics is not None
+
+
+def code(number: int) -> str:
+    return f"ТММ.КП.00.00.{number:03d}"
+
+
+def graph_labels(project: Project) -> list[str]:
+    """The names of the graph's positions, as the note's table prints them."""
+    from latex_templates.parts.dynamics import _first_step, position_labels
+    import math
+
+    res = project.dynamics
+    positions = int(round(2 * math.pi / _first_step(res.graphical.theta)))
+    return position_labels(res, positions)
+
+
+def draw(project: Project, number: int, count: int) -> Sheet:
+    res = project.dynamics
+    g = res.graphical
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    fr = sheet.frame
+    labels = graph_labels(project)
+    y_top = sheet.extra_rect.y0 - CLEAR_MM
+    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM)
+    dd.draw_moment(sheet, lay, g, labels)
+    dd.draw_work(sheet, lay, g, labels)
+    dd.draw_energy(sheet, lay, g, labels)
+    _, kl = dd.draw_wittenbauer(sheet, lay, g, labels)
+    dd.draw_inertia(sheet, lay, g, labels)
+    om_top = lay.energy.y0 - dd.GAP_MM
+    dd.draw_omega(sheet, Rect(lay.energy.x0, om_top - dd.omega_height(res, g), lay.energy.x1, om_top), res, g, labels)
+    # the right column: the flywheel's sketch at the top, the table of results under it
+    x0, x1 = lay.right + 12.0, fr.x1 - CLEAR_MM
+    top = fr.y1 - CLEAR_MM
+    rows = df.result_rows(res, kl)
+    table_h = 12.0 + ROW_MM * len(rows)
+    table_w = min(x1 - x0, 150.0)
+    room_h = top - (sheet.title_rect.y1 + CLEAR_MM) - table_h - 12.0
+    sketch = None
+    if res.J_flywheel > 0:
+        k = df.sketch_scale(res.flywheel, x1 - x0, min(room_h, SKETCH_MAX_MM))
+        sketch = (k, *df.sketch_size(res.flywheel, k))
+    # the table and the sketch one under the other, centred in the column
+    cx = (x0 + x1) / 2
+    df.draw_results(sheet, res, Rect(cx - table_w / 2, top - table_h, cx + table_w / 2, top), rows)
+    top -= table_h + 12.0
+    if sketch is not None:
+        k, w, h = sketch
+        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, top - h, cx + w / 2, top), k)
+    return sheet
