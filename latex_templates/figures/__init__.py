@@ -13,6 +13,7 @@ STYLE = {
     "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],
     "font.size": 10,
     "mathtext.fontset": "stix",
+    "figure.max_open_warning": 0,      # a note holds ~30 figures until NoteBuilder saves (and closes) them
     "axes.grid": True,
     "grid.linewidth": 0.3,
     "grid.alpha": 0.5,
