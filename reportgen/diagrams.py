@@ -80,6 +80,13 @@ def _pick_pole(peak_value: float, mu_prev: float, mu_t: float) -> float:
         y = peak_value / (mu_prev / (mu_t * H))
         if abs(y - ORDINATE_MM) < abs(peak_value / (mu_prev / (mu_t * best)) - ORDINATE_MM):
             best = H
+    # A near-singular mechanism (e.g. a slotted link whose pivot nearly touches the crank circle) can
+    # have a peak that even the shortest pole draws metres tall: go down the 5-2-1 series until the
+    # exact curve fits in 2 ordinates (the replica is then coarse there, which is the method's truth).
+    k = 0
+    while peak_value / (mu_prev / (mu_t * best)) > 2 * ORDINATE_MM and k < 60:
+        best = (5.0, 2.0, 1.0)[k % 3] * 10.0 ** (-(k // 3))
+        k += 1
     return best
 
 
