@@ -234,7 +234,8 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str]) -> tuple[V
         v.line((0.0, y0), (x_len, y0 + x_len * t), "contour")
         v.line((0.0, y0), (26.0, y0), "thin")
         v.arc((0.0, y0), 22.0, 0.0, psi, "thin")
-        v.text((23.5, y0 + 22.0 * math.sin(math.radians(psi / 2)) - 1.2), name, 3.5, "middle-left")
+        mid = math.radians(psi / 2)
+        v.label((22.0 * math.cos(mid), y0 + 22.0 * math.sin(mid)), name, 3.5, gap_mm=1.0, prefer_deg=-20.0)
     for p, name in zip(pts[:-1], labels[:-1]):
         if name.isdigit():
             v.label(p, name, 3.5, gap_mm=1.0)
