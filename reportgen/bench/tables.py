@@ -28,7 +28,7 @@ class Table:
         return "\n".join(out) + "\n"
 
     def markdown(self) -> str:
-        out = [f"### {self.title}", "", "| " + " | ".join(self.headers) + " |",
+        out = [f"### {self.title}", "", "| " + " | ".join(h.replace("|", "\\|") for h in self.headers) + " |",
                "|" + "|".join("---" if i == 0 else "---:" for i in range(len(self.headers))) + "|"]
         out += ["| " + " | ".join(c.replace("|", "\\|") for c in r) + " |" for r in self.rows]
         if self.notes:
