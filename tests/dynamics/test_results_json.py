@@ -5,6 +5,8 @@ import json
 import math
 
 import numpy as np
+
+from reportgen.project import Project
 import pytest
 
 from reportgen.dynamics import DynamicsInputError, dynamics_block, solve_dynamics
