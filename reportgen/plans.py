@@ -26,10 +26,14 @@ from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .structure import Group, Structure
 
-#: Scale factors are 1, 2, 2.5, 4 or 5 × 10^k (so the crank's vector is 50–100 mm).
+#: Scale factors are 1, 2, 2.5, 4 or 5 × 10^k (so the crank's vector is 50–100 mm, unless another
+#: point's vector would then stand beyond ``PLAN_MAX_MM``).
 ROUND_STEPS = (1.0, 2.0, 2.5, 4.0, 5.0)
 #: The drawn length of the crank's vector is at most this, mm.
 CRANK_VECTOR_MAX_MM = 100.0
+#: No point of a plan stands farther than this from the pole, mm (a link that turns much faster
+#: than the crank — near a toggle — would otherwise draw a plan of metres).
+PLAN_MAX_MM = 200.0
 #: Resolution of a student's measurement on the plan, mm.
 MEASURE_MM = 0.1
 
@@ -143,8 +147,12 @@ def build_plans(linkage: Linkage, structure: Structure, kin: KinematicsResult, i
     """The velocity and acceleration plans at position ``i`` of ``kin``."""
     b = _Builder(linkage, structure, kin, i)
     tip, axis = linkage.drive_tip, linkage.drive_axis
-    mu_v = mu_v or round_scale(float(np.hypot(*b.vel(tip))))
-    mu_a = mu_a or round_scale(float(np.hypot(*b.acc(tip))))
+    if mu_v is None:
+        far = max(float(np.hypot(*np.asarray(m.vel[i]))) for m in kin.points.values())
+        mu_v = max(round_scale(float(np.hypot(*b.vel(tip)))), round_scale(far, PLAN_MAX_MM))
+    if mu_a is None:
+        far = max(float(np.hypot(*np.asarray(m.acc[i]))) for m in kin.points.values())
+        mu_a = max(round_scale(float(np.hypot(*b.acc(tip)))), round_scale(far, PLAN_MAX_MM))
     vpts: dict[str, tuple[float, float]] = {"p": (0.0, 0.0)}
     apts: dict[str, tuple[float, float]] = {"π": (0.0, 0.0)}
     for name in kin.points:
