@@ -64,7 +64,7 @@ def test_headings_and_numbers_match_results(press_build):
     work = k["extremes"]["working_stroke_deg"]
     assert f"{work:.1f}".replace(".", ",") in text
     # the speed of the crank pin: ω1·l_OA = 18·0,11 = 1,98 m/s
-    assert re.search(r"18 · 0,11 = 1,98", text)
+    assert re.search(r"18 [·⋅] 0,11 = 1,98", text)
     # every position's crank angle appears in the positions table
     for phi in k["phi_deg"]:
         assert f"{phi:.2f}".replace(".", ",") in text, phi
