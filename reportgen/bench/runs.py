@@ -244,36 +244,9 @@ FOUR_BAR = (0.1, 0.35, 0.3, 0.4)   # crank, coupler, rocker, frame (m): a Grasho
 def _four_bar_model(a, b, c, d, omega):
     from ..kinematics import build_model
     from ..taskfile import loads_task
+    from ..zoo import four_bar
     # sketch at φ1 = 0: A = (a, 0); B above the frame
-    x = (b * b - c * c + (d - a) ** 2) / (2 * (d - a))
-    B = (a + x, math.sqrt(b * b - x * x))
-    text = f"""
-[mechanism]
-ground = ["O", "C"]
-[mechanism.points]
-O = [0.0, 0.0]
-C = [{d!r}, 0.0]
-A = [{a!r}, 0.0]
-B = [{B[0]!r}, {B[1]!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {a!r}
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-length = {b!r}
-[[mechanism.link]]
-id = 3
-kind = "rocker"
-points = ["C", "B"]
-length = {c!r}
-[mechanism.drive]
-link = 1
-omega = {omega!r}
-"""
+    text = four_bar(a, b, c, d, phi_deg=0.0, omega=omega, name=None, analysis=None)
     return build_model(loads_task(text).mechanism)
 
 

@@ -6,83 +6,27 @@ to prove that no traceback reaches the terminal.
 """
 from __future__ import annotations
 
-import math
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from reportgen import zoo
 from reportgen.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def slider_crank(r: float = 0.1, l: float = 0.3, e: float = 0.0, phi_deg: float = 30.0, extra: str = "") -> str:
-    ph = math.radians(phi_deg)
-    A = (r * math.cos(ph), r * math.sin(ph))
-    B = (A[0] + math.sqrt(max(l * l - (A[1] - e) ** 2, 0.0)), e)
-    return f"""
-[mechanism]
-name = "slider-crank"
-ground = ["O"]
-[mechanism.points]
-O = [0.0, 0.0]
-A = [{A[0]!r}, {A[1]!r}]
-B = [{B[0]!r}, {e!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {r!r}
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-length = {l!r}
-[[mechanism.link]]
-id = 3
-kind = "slider"
-points = ["B"]
-[[mechanism.slide]]
-link = 3
-point = "B"
-guide = 0
-line = {{ through = [0.0, {e!r}], angle_deg = 0.0 }}
-[mechanism.drive]
-link = 1
-omega = 10.0
-[analysis]
-start = 0.0
-{extra}"""
+    return zoo.slider_crank(r, l, e, phi_deg=phi_deg, omega=10.0, extra=extra)
 
 
-FOUR_BAR = """
-[mechanism]
-ground = ["O", "C"]
-[mechanism.points]
-O = [0.0, 0.0]
-C = [0.4, 0.0]
-A = [0.1, 0.0]
-B = [0.3, 0.3]
-X = [0.4, 0.1]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = 0.1
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-[[mechanism.link]]
-id = 3
-kind = "rocker"
-points = ["C", "B"]
-[mechanism.drive]
-link = 1
-omega = 10.0
-"""
+FOUR_BAR = zoo.linkage(
+    ground=("O", "C"), points={"O": (0.0, 0.0), "C": (0.4, 0.0), "A": (0.1, 0.0), "B": (0.3, 0.3), "X": (0.4, 0.1)},
+    links=[{"id": 1, "kind": "crank", "points": ["O", "A"], "length": 0.1},
+           {"id": 2, "kind": "coupler", "points": ["A", "B"]},
+           {"id": 3, "kind": "rocker", "points": ["C", "B"]}], omega=10.0)
 
 SC = slider_crank()
 
@@ -108,35 +52,11 @@ points = ["D", "B"]
 """
 
 
-SLOTTED = """
-[mechanism]
-ground = ["O", "C"]
-[mechanism.points]
-C = [0.0, 0.0]
-O = [0.0, 0.2]
-A = [0.1, 0.2]
-E = [0.4, 0.8]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-[[mechanism.link]]
-id = 2
-kind = "block"
-points = ["A"]
-[[mechanism.link]]
-id = 3
-kind = "slotted"
-points = ["C", "E"]
-[[mechanism.slide]]
-link = 2
-point = "A"
-guide = 3
-along = ["C", "Z"]
-[mechanism.drive]
-link = 1
-omega = 10.0
-"""
+SLOTTED = zoo.linkage(
+    ground=("O", "C"), points={"C": (0.0, 0.0), "O": (0.0, 0.2), "A": (0.1, 0.2), "E": (0.4, 0.8)},
+    links=[{"id": 1, "kind": "crank", "points": ["O", "A"]}, {"id": 2, "kind": "block", "points": ["A"]},
+           {"id": 3, "kind": "slotted", "points": ["C", "E"]}],
+    slides=[{"link": 2, "point": "A", "guide": 3, "along": ["C", "Z"]}], omega=10.0)
 
 GEARS = "[gears]\nz1 = {z1}\nz2 = 26\nmodule = 9.0\nx1 = 0.0\nx2 = 0.0\n"
 

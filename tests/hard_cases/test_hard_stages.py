@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from reportgen import zoo
 from reportgen.dynamics import dynamics_of, solve_dynamics
 from reportgen.errors import AssemblyError, TaskError
 from reportgen.gears.pair import solve_gear_pair
@@ -33,158 +34,30 @@ def four_bar(a: float, b: float, c: float, d: float, k: float = 1.0, phi_deg: fl
              dynamics: str = "[dynamics]\ndelta = 0.05\ncrank_inertia = 0.5\n") -> str:
     """Crank–rocker O–A–B–C with masses, a resisting moment on the rocker and gravity off, every
     length × k (masses kept: forces ∝ k, moments and inertias ∝ k²)."""
-    a, b, c, d = a * k, b * k, c * k, d * k
-    ph = math.radians(phi_deg)
-    A = (a * math.cos(ph), a * math.sin(ph))
-    dx, dy = d - A[0], -A[1]
-    D = math.hypot(dx, dy)
-    x = (b * b - c * c + D * D) / (2 * D)
-    h = math.sqrt(max(b * b - x * x, 0.0))
-    B = (A[0] + x * dx / D - h * dy / D, A[1] + x * dy / D + h * dx / D)
-    return f"""
-[mechanism]
-g = 0.0
-ground = ["O", "C"]
-[mechanism.points]
-O = [0.0, 0.0]
-C = [{d!r}, 0.0]
-A = [{A[0]!r}, {A[1]!r}]
-B = [{B[0]!r}, {B[1]!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {a!r}
-mass = 2.0
-inertia = {0.01 * k * k!r}
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-length = {b!r}
-mass = 5.0
-inertia = {0.05 * k * k!r}
-[[mechanism.link]]
-id = 3
-kind = "rocker"
-points = ["C", "B"]
-length = {c!r}
-mass = 4.0
-inertia = {0.04 * k * k!r}
-[mechanism.drive]
-link = 1
-omega = 12.0
-[[mechanism.load]]
-kind = "resistance"
-link = 3
-moment = {400.0 * k * k!r}
-law = [[0.0, 0.3], [0.5, 1.0], [1.0, 0.3]]
-stroke = "working"
-[analysis]
-positions = 12
-start = "extreme"
-force_position = 3
-{dynamics.replace("crank_inertia = 0.5", f"crank_inertia = {0.5 * k * k!r}")}"""
+    return zoo.four_bar(
+        a * k, b * k, c * k, d * k, phi_deg=phi_deg, omega=12.0, name=None, g=0.0,
+        links={1: {"mass": 2.0, "inertia": 0.01 * k * k}, 2: {"mass": 5.0, "inertia": 0.05 * k * k},
+               3: {"mass": 4.0, "inertia": 0.04 * k * k}},
+        loads=[{"kind": "resistance", "link": 3, "moment": 400.0 * k * k,
+                "law": [[0.0, 0.3], [0.5, 1.0], [1.0, 0.3]], "stroke": "working"}],
+        analysis={"positions": 12, "start": "extreme", "force_position": 3},
+        extra=dynamics.replace("crank_inertia = 0.5", f"crank_inertia = {0.5 * k * k!r}"))
 
 
 def slider_crank(r: float, l: float, e: float = 0.0, phi_deg: float = 30.0) -> str:
-    ph = math.radians(phi_deg)
-    A = (r * math.cos(ph), r * math.sin(ph))
-    B = (A[0] + math.sqrt(l * l - (A[1] - e) ** 2), e)
-    return f"""
-[mechanism]
-ground = ["O"]
-[mechanism.points]
-O = [0.0, 0.0]
-A = [{A[0]!r}, {A[1]!r}]
-B = [{B[0]!r}, {e!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {r!r}
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-length = {l!r}
-mass = 6.0
-inertia = 0.08
-[[mechanism.link]]
-id = 3
-kind = "slider"
-points = ["B"]
-mass = 20.0
-[[mechanism.slide]]
-link = 3
-point = "B"
-guide = 0
-line = {{ through = [0.0, {e!r}], angle_deg = 0.0 }}
-[mechanism.drive]
-link = 1
-omega = 15.0
-[[mechanism.load]]
-kind = "resistance"
-link = 3
-force = 5000.0
-law = [[0.0, 0.0], [0.2, 1.0], [1.0, 1.0]]
-stroke = "working"
-[analysis]
-positions = 12
-start = "extreme"
-[dynamics]
-delta = 0.04
-crank_inertia = 0.3
-"""
+    return zoo.slider_crank(
+        r, l, e, phi_deg=phi_deg, omega=15.0, name=None,
+        links={2: {"mass": 6.0, "inertia": 0.08}, 3: {"mass": 20.0}},
+        loads=[{"kind": "resistance", "link": 3, "force": 5000.0, "law": [[0.0, 0.0], [0.2, 1.0], [1.0, 1.0]],
+                "stroke": "working"}],
+        analysis={"positions": 12, "start": "extreme"}, extra="[dynamics]\ndelta = 0.04\ncrank_inertia = 0.3\n")
 
 
 def slotted_lever(r: float, d: float, L: float = 1.0, phi_deg: float = 30.0) -> str:
     """Crank O–A (r) with O at (0, d) above the slotted link's pivot C; block 2 at A in the slot C→E."""
-    ph = math.radians(phi_deg)
-    A = (r * math.cos(ph), d + r * math.sin(ph))
-    n = math.hypot(*A)
-    E = (L * A[0] / n, L * A[1] / n)
-    return f"""
-[mechanism]
-ground = ["O", "C"]
-[mechanism.points]
-C = [0.0, 0.0]
-O = [0.0, {d!r}]
-A = [{A[0]!r}, {A[1]!r}]
-E = [{E[0]!r}, {E[1]!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {r!r}
-[[mechanism.link]]
-id = 2
-kind = "block"
-points = ["A"]
-mass = 1.0
-[[mechanism.link]]
-id = 3
-kind = "slotted"
-points = ["C", "E"]
-length = {L!r}
-mass = 8.0
-inertia = 0.7
-[[mechanism.slide]]
-link = 2
-point = "A"
-guide = 3
-along = ["C", "E"]
-[mechanism.drive]
-link = 1
-omega = 10.0
-[[mechanism.load]]
-kind = "moment"
-link = 3
-value = -50.0
-[analysis]
-positions = 12
-start = 0.0
-"""
+    return zoo.slotted_lever(
+        r, d, L, phi_deg=phi_deg, omega=10.0, name=None, links={2: {"mass": 1.0}, 3: {"mass": 8.0, "inertia": 0.7}},
+        loads=[{"kind": "moment", "link": 3, "value": -50.0}], analysis={"positions": 12, "start": 0.0})
 
 
 # -- identities -----------------------------------------------------------------------------------------

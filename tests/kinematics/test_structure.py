@@ -5,6 +5,7 @@ import re
 
 import pytest
 
+from reportgen import zoo
 from reportgen.errors import StructureError
 from reportgen.kinematics import build_model
 from reportgen.linkage import compile_linkage
@@ -63,36 +64,12 @@ def test_structure_independent_of_link_numbers(name):
 
 def _five_bar() -> str:
     """Two cranks' chain with one driver: W = 2."""
-    return """
-[mechanism]
-name = "five-bar"
-ground = ["O", "E"]
-[mechanism.points]
-O = [0.0, 0.0]
-E = [0.5, 0.0]
-A = [0.0, 0.1]
-B = [0.25, 0.3]
-D = [0.5, 0.12]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-[[mechanism.link]]
-id = 3
-kind = "coupler"
-points = ["B", "D"]
-[[mechanism.link]]
-id = 4
-kind = "rocker"
-points = ["E", "D"]
-[mechanism.drive]
-link = 1
-omega = 1.0
-"""
+    return zoo.linkage(
+        name="five-bar", ground=("O", "E"),
+        points={"O": (0.0, 0.0), "E": (0.5, 0.0), "A": (0.0, 0.1), "B": (0.25, 0.3), "D": (0.5, 0.12)},
+        links=[{"id": 1, "kind": "crank", "points": ["O", "A"]}, {"id": 2, "kind": "coupler", "points": ["A", "B"]},
+               {"id": 3, "kind": "coupler", "points": ["B", "D"]}, {"id": 4, "kind": "rocker", "points": ["E", "D"]}],
+        omega=1.0)
 
 
 def test_two_degrees_of_freedom_is_refused_with_leftover_links():
@@ -104,37 +81,13 @@ def test_two_degrees_of_freedom_is_refused_with_leftover_links():
 
 def _parallelogram_with_extra_link() -> str:
     """A parallelogram O-A-B-C with a third parallel bar E-F: Chebyshev gives W = 0, the rank W = 1."""
-    return """
-[mechanism]
-name = "parallelogram"
-ground = ["O", "C", "E"]
-[mechanism.points]
-O = [0.0, 0.0]
-C = [0.4, 0.0]
-E = [0.2, 0.0]
-A = [0.0, 0.1]
-B = [0.4, 0.1]
-F = [0.2, 0.1]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B", "F"]
-[[mechanism.link]]
-id = 3
-kind = "rocker"
-points = ["C", "B"]
-[[mechanism.link]]
-id = 4
-kind = "rocker"
-points = ["E", "F"]
-[mechanism.drive]
-link = 1
-omega = 1.0
-"""
+    return zoo.linkage(
+        name="parallelogram", ground=("O", "C", "E"),
+        points={"O": (0.0, 0.0), "C": (0.4, 0.0), "E": (0.2, 0.0), "A": (0.0, 0.1), "B": (0.4, 0.1), "F": (0.2, 0.1)},
+        links=[{"id": 1, "kind": "crank", "points": ["O", "A"]},
+               {"id": 2, "kind": "coupler", "points": ["A", "B", "F"]},
+               {"id": 3, "kind": "rocker", "points": ["C", "B"]}, {"id": 4, "kind": "rocker", "points": ["E", "F"]}],
+        omega=1.0)
 
 
 def test_redundant_constraint_is_reported():

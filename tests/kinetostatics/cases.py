@@ -1,9 +1,9 @@
 """Mechanisms for the kinetostatics tests: the examples and generated slider-cranks and four-bars."""
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
+from reportgen import zoo
 from reportgen.project import Project
 from reportgen.taskfile import load_task, loads_task
 
@@ -21,100 +21,17 @@ def slider_crank(r: float, l: float, e: float = 0.0, omega: float = 10.0, m2: fl
     force ``force`` along +x on the slider. The sketch stands at 31.7° (not 30°): with the sketch at
     30° the stroke search of reportgen.kinematics.extremes can land a grid point on a dead centre and
     brentq fails (reported; e.g. r = 0.125, l = 0.25, e = 0, ω = −2)."""
-    ph = math.radians(phi_deg)
-    A = (r * math.cos(ph), r * math.sin(ph))
-    B = (A[0] + math.sqrt(l * l - (A[1] - e) ** 2), e)
-    text = f"""
-[mechanism]
-name = "slider-crank"
-g = {g!r}
-ground = ["O"]
-[mechanism.points]
-O = [0.0, 0.0]
-A = [{A[0]!r}, {A[1]!r}]
-B = [{B[0]!r}, {e!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {r!r}
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-length = {l!r}
-mass = {m2!r}
-inertia = {j2!r}
-[[mechanism.link]]
-id = 3
-kind = "slider"
-points = ["B"]
-mass = {m3!r}
-[[mechanism.slide]]
-link = 3
-point = "B"
-guide = 0
-line = {{ through = [0.0, {e!r}], angle_deg = 0.0 }}
-[mechanism.drive]
-link = 1
-omega = {omega!r}
-[[mechanism.load]]
-kind = "force"
-link = 3
-point = "B"
-vector = [{force!r}, 0.0]
-[analysis]
-positions = 12
-start = 0.0
-force_position = 1
-"""
+    text = zoo.slider_crank(r, l, e, phi_deg=phi_deg, omega=omega, g=g,
+                            links={2: {"mass": m2, "inertia": j2}, 3: {"mass": m3}},
+                            loads=[{"kind": "force", "link": 3, "point": "B", "vector": [force, 0.0]}],
+                            analysis={"positions": 12, "start": 0.0, "force_position": 1})
     return Project(loads_task(text))
 
 
 def four_bar(a: float, b: float, c: float, d: float, omega: float = 10.0, moment: float = -30.0,
              phi_deg: float = 60.0) -> Project:
     """Crank O–A (a), coupler A–B (b), rocker C–B (c), frame O–C (d) along +x; a couple on the rocker."""
-    ph = math.radians(phi_deg)
-    A = (a * math.cos(ph), a * math.sin(ph))
-    dx, dy = d - A[0], -A[1]
-    D = math.hypot(dx, dy)
-    x = (b * b - c * c + D * D) / (2 * D)
-    h = math.sqrt(max(b * b - x * x, 0.0))
-    ex, ey = dx / D, dy / D
-    B = (A[0] + x * ex - h * ey, A[1] + x * ey + h * ex)
-    text = f"""
-[mechanism]
-name = "four-bar"
-ground = ["O", "C"]
-[mechanism.points]
-O = [0.0, 0.0]
-C = [{d!r}, 0.0]
-A = [{A[0]!r}, {A[1]!r}]
-B = [{B[0]!r}, {B[1]!r}]
-[[mechanism.link]]
-id = 1
-kind = "crank"
-points = ["O", "A"]
-length = {a!r}
-[[mechanism.link]]
-id = 2
-kind = "coupler"
-points = ["A", "B"]
-length = {b!r}
-[[mechanism.link]]
-id = 3
-kind = "rocker"
-points = ["C", "B"]
-length = {c!r}
-[mechanism.drive]
-link = 1
-omega = {omega!r}
-[[mechanism.load]]
-kind = "moment"
-link = 3
-value = {moment!r}
-[analysis]
-positions = 12
-start = 0.0
-"""
+    text = zoo.four_bar(a, b, c, d, phi_deg=phi_deg, omega=omega,
+                        loads=[{"kind": "moment", "link": 3, "value": moment}],
+                        analysis={"positions": 12, "start": 0.0})
     return Project(loads_task(text))
