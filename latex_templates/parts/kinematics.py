@@ -42,6 +42,31 @@ def _plan_rows(plan, with_exact=True):
     return rows
 
 
+def _omega_record(kin, i: int, k: int, seg: Var, lv: Var, mu_v) -> tuple[dict, Var]:
+    """ω_k of position i from the velocity plan (segment ``seg`` over the length ``lv``): the note's
+    row, and the exact |ω_k| as a variable for the accelerations."""
+    omega = float(kin.links[k].omega[i])
+    wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
+                  meaning=f"угловая скорость звена {k}")
+    row = {"link": k, "rec": wrec, "exact": omega, "sense": "против" if kin.links[k].omega[i] > 0 else "по"}
+    return row, Var("w", rf"\omega_{{{k}}}", abs(omega), "рад/с")
+
+
+def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv: Var, w_exact: Var) -> tuple[dict, dict]:
+    """The normal acceleration a^n_rel = ω_k²·l and ε_k of position i from the tangential component
+    a^τ_rel of the acceleration plan (its segment named ``segt_symbol``): the note's two rows."""
+    an = record(f"a^n_{{{rel}}}", "w**2 * l", "м/с²", w_exact, lv)
+    comp_t = aplan.component(f"a^{{\\tau}}_{{{rel}}}")
+    segt = Var("segt", segt_symbol, aplan.measured_mm(comp_t), "мм",
+               Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{rel}}}$"))
+    erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
+                  mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
+                  meaning=f"угловое ускорение звена {k}")
+    eps = {"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
+           "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"}
+    return {"rec": an, "mm": an.value / aplan.scale}, eps
+
+
 def content(project) -> PartContent:
     from ..figures.plans import diagrams_figure, plan_figure, positions_figure
 
@@ -110,24 +135,14 @@ def content(project) -> PartContent:
                 Q, P = inner.point, ext.point
                 l = _len(body, P, Q)
                 comp = vplan.component(f"V_{{{Q}{P}}}")
-                seg = Var("seg", f"{P.lower()}{Q.lower()}".replace("", "") if False else f"{comp.start}{comp.end}",
+                seg = Var("seg", f"{comp.start}{comp.end}",
                           vplan.measured_mm(comp), "мм", Markup(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
                 lv = Var("l", f"l_{{{P}{Q}}}", l, "м", f"длина звена {P}{Q}")
-                wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
-                              meaning=f"угловая скорость звена {k}")
-                omega_recs.append({"link": k, "rec": wrec, "exact": float(kin.links[k].omega[i]),
-                                   "sense": "против" if kin.links[k].omega[i] > 0 else "по"})
-                w_exact = Var("w", rf"\omega_{{{k}}}", abs(float(kin.links[k].omega[i])), "рад/с")
-                an = record(f"a^n_{{{Q}{P}}}", "w**2 * l", "м/с²", w_exact, lv)
-                an_recs.append({"rec": an, "mm": an.value / aplan.scale})
-                comp_t = aplan.component(f"a^{{\\tau}}_{{{Q}{P}}}")
-                segt = Var("segt", f"n_{{{Q}{P}}}{Q.lower()}", aplan.measured_mm(comp_t), "мм",
-                           Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{Q}{P}}}$"))
-                erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
-                              mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
-                              meaning=f"угловое ускорение звена {k}")
-                eps_recs.append({"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
-                                 "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"})
+                omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
+                omega_recs.append(omega_rec)
+                an_rec, eps_rec = _epsilon_records(kin, i, k, aplan, f"{Q}{P}", f"n_{{{Q}{P}}}{Q.lower()}", lv, w_exact)
+                an_recs.append(an_rec)
+                eps_recs.append(eps_rec)
             elif g.kind == "RPR":
                 s = lk.slides[inner.slide]
                 if k != s.guide:
@@ -140,26 +155,17 @@ def content(project) -> PartContent:
                 seg = Var("seg", f"{comp.start}{comp.end}", vplan.measured_mm(comp), "мм",
                           Markup(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
                 lv = Var("l", f"l_{{{G}{H}}}", gh, "м", f"расстояние {G}{H} в данном положении")
-                wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
-                              meaning=f"угловая скорость звена {k}")
-                omega_recs.append({"link": k, "rec": wrec, "exact": float(kin.links[k].omega[i]),
-                                   "sense": "против" if kin.links[k].omega[i] > 0 else "по"})
+                omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
+                omega_recs.append(omega_rec)
                 vrel = vplan.component(f"V_{{{Hg}{H}}}")
-                w_exact = Var("w", rf"\omega_{{{k}}}", abs(float(kin.links[k].omega[i])), "рад/с")
                 vr = Var("vr", f"V_{{{Hg}{H}}}", vrel.value, "м/с", "скорость скольжения камня по кулисе")
                 cor = record(f"a^k_{{{Hg}{H}}}", "2 * w * vr", "м/с²", w_exact, vr,
                              meaning="ускорение Кориолиса")
                 cor_recs.append({"rec": cor, "mm": cor.value / aplan.scale})
-                an = record(f"a^n_{{{Hg}{G}}}", "w**2 * l", "м/с²", w_exact, lv)
-                an_recs.append({"rec": an, "mm": an.value / aplan.scale})
-                comp_t = aplan.component(f"a^{{\\tau}}_{{{Hg}{G}}}")
-                segt = Var("segt", f"n{comp_t.end}", aplan.measured_mm(comp_t), "мм",
-                           Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{Hg}{G}}}$"))
-                erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
-                              mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
-                              meaning=f"угловое ускорение звена {k}")
-                eps_recs.append({"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
-                                 "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"})
+                end = aplan.component(f"a^{{\\tau}}_{{{Hg}{G}}}").end
+                an_rec, eps_rec = _epsilon_records(kin, i, k, aplan, f"{Hg}{G}", f"n{end}", lv, w_exact)
+                an_recs.append(an_rec)
+                eps_recs.append(eps_rec)
     # centres of mass from the plans (by similarity)
     com_rows = []
     for k in lk.moving:

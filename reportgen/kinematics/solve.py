@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Mapping
+from typing import Callable, Mapping
 
 import numpy as np
 
@@ -222,31 +222,30 @@ class KinematicModel:
     def velocities(self, q: np.ndarray, upto: int | None = None) -> np.ndarray:
         qd = np.zeros_like(q)
         self._driver_vel(q, qd)
-        groups = self.structure.groups[1:]
-        for n_g, (g, cons) in enumerate(zip(groups, self.group_rows)):
-            if upto is not None and n_g >= upto:
-                break
-            cols = list(g.links)
-            J, rows = assemble(cons, q, cols)
-            rhs = -known_terms(rows, qd, set(cols))
-            x = self._solve(J, rhs, g, q)
-            qd[:, cols, :] = x.reshape(-1, len(cols), 3)
-        return qd
+        return self._by_groups(q, qd, lambda cons, rows, cols: -known_terms(rows, qd, set(cols)), upto)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None) -> np.ndarray:
         qdd = np.zeros_like(q)
         self._driver_acc(q, qdd)
+
+        def rhs(cons, rows, cols):
+            gm = np.stack([r for c in cons for r in gamma(c, q, qd)], axis=-1)
+            return gm - known_terms(rows, qdd, set(cols))
+        return self._by_groups(q, qdd, rhs, upto)
+
+    def _by_groups(self, q: np.ndarray, out: np.ndarray,
+                   rhs: Callable[[list, list, list[int]], np.ndarray], upto: int | None) -> np.ndarray:
+        """Solve the groups in order (the first ``upto`` of them): J·x = rhs(constraints, rows, columns)
+        for each group's unknowns, written into ``out`` (the derivative the later groups read)."""
         groups = self.structure.groups[1:]
         for n_g, (g, cons) in enumerate(zip(groups, self.group_rows)):
             if upto is not None and n_g >= upto:
                 break
             cols = list(g.links)
             J, rows = assemble(cons, q, cols)
-            gm = np.stack([r for c in cons for r in gamma(c, q, qd)], axis=-1)
-            rhs = gm - known_terms(rows, qdd, set(cols))
-            x = self._solve(J, rhs, g, q)
-            qdd[:, cols, :] = x.reshape(-1, len(cols), 3)
-        return qdd
+            x = self._solve(J, rhs(cons, rows, cols), g, q)
+            out[:, cols, :] = x.reshape(-1, len(cols), 3)
+        return out
 
     def _solve(self, J: np.ndarray, rhs: np.ndarray, g: Group, q: np.ndarray) -> np.ndarray:
         try:
