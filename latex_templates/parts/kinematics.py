@@ -222,7 +222,7 @@ def content(project) -> PartContent:
         "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi),
         "mu_l": mu_l, "OA_mm": OA_mm, "strokes": stroke_ctx, "out_rows": out_rows,
         "groups": [g.label for g in st.groups[1:]],
-        "VA": VA, "mu_v": mu_v, "vplan": vplan, "vrows": vrows, "omega": omega_recs,
+        "VA": VA, "mu_v": mu_v, "pa_mm": pa_mm, "pia_mm": aA.value / aplan.scale, "vplan": vplan, "vrows": vrows, "omega": omega_recs,
         "aA": aA, "mu_a": mu_a, "aplan": aplan, "arows": arows, "an": an_recs, "cor": cor_recs, "eps": eps_recs,
         "com_rows": com_rows, "moving": moving, "rot_links": rot_links, "vtab": vtab, "atab": atab,
         "diag": diag, "trans": trans, "dense_trans": dense_trans,
