@@ -5,11 +5,11 @@ Run: .venv/bin/python benchmarks/bench_kinematics.py   (prints a table; not a te
 from __future__ import annotations
 
 import math
-import time
 from pathlib import Path
 
 import numpy as np
 
+from reportgen.bench.tables import best_time as shortest_time
 from reportgen.kinematics import build_model
 from reportgen.taskfile import load_task
 
@@ -17,12 +17,8 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 def best_time(fn, repeat: int = 7) -> float:
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
+    """The shortest wall time of ``repeat`` calls of ``fn``, s."""
+    return shortest_time(fn, repeat)[0]
 
 
 def main() -> None:

@@ -7,11 +7,11 @@ Run: .venv/bin/python benchmarks/bench_kinetostatics.py   (prints tables; not a 
 from __future__ import annotations
 
 import math
-import time
 from pathlib import Path
 
 import numpy as np
 
+from reportgen.bench.tables import best_time as shortest_time
 from reportgen.kinetostatics import kinetostatics_at, solve_reactions, zhukovsky_lever
 from reportgen.project import Project
 from reportgen.taskfile import load_task
@@ -21,12 +21,8 @@ NAMES = ("press", "crank-slider", "shaper", "conveyor", "class3")
 
 
 def best_time(fn, repeat: int = 5) -> float:
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
+    """The shortest wall time of ``repeat`` calls of ``fn``, s."""
+    return shortest_time(fn, repeat)[0]
 
 
 def main() -> None:

@@ -182,6 +182,15 @@ def draw_moment(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     return v
 
 
+def _nodes_polyline(v: View, xs, ys) -> list[tuple[float, float]]:
+    """The curve through the positions' nodes (mm): a polyline with a small circle at every node."""
+    pts = list(zip(map(float, xs), map(float, ys)))
+    v.polyline(pts, "contour")
+    for p in pts:
+        v.circle_mm(p, 0.6, "contour")
+    return pts
+
+
 def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     """A_с by chords and the straight line of A_дв (from the origin to the end of A_с)."""
     sp = spans(g)["A"]
@@ -189,10 +198,7 @@ def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     _title(v, "Работа сил сопротивления Ас(φ) и движущих сил Адв(φ)",
            f"μA = μM·μφ·H = {format_significant(g.mu_A, 4)} Дж/мм")
     _phi_axes(v, g, sp, "A", labels, numbers=False)
-    pts = list(zip(map(float, g.x), map(float, g.a_mm)))
-    v.polyline(pts, "contour")
-    for p in pts:
-        v.circle_mm(p, 0.6, "contour")
+    pts = _nodes_polyline(v, g.x, g.a_mm)
     end = pts[-1]
     v.line((0.0, 0.0), end, "contour")
     i_mid = len(pts) // 2
@@ -209,10 +215,7 @@ def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     _title(v, "Изменение кинетической энергии ΔE(φ)",
            f"μE = {format_significant(g.mu_E, 4)} Дж/мм{k}")
     _phi_axes(v, g, sp, "ΔE", labels, numbers=True)
-    pts = list(zip(map(float, g.x), map(float, g.e_mm)))
-    v.polyline(pts, "contour")
-    for p in pts:
-        v.circle_mm(p, 0.6, "contour")
+    pts = _nodes_polyline(v, g.x, g.e_mm)
     return v
 
 

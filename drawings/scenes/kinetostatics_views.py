@@ -57,6 +57,13 @@ def arrow_end(a: Arrow, mu_f: float, mu_l: float) -> np.ndarray:
     return np.asarray(a.point, float) + a.vector / (mag + 1e-300) * mm * mu_l
 
 
+def _title_and_scales(view: View, title: str, upper: str, lower: str) -> None:
+    """The view's title, and two scale captions (e.g. μl and μF) at its bottom."""
+    view.title(title)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), upper, 3.5, "bottom-center")
+    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), lower, 3.5, "bottom-center")
+
+
 def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
                    hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
                    arrows: list[Arrow], mu_l: float, preferred: str) -> View:
@@ -83,11 +90,8 @@ def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.
         view.arrow(a.point, arrow_end(a, mu_f, mu_l), plain(a.name), head_mm=4.0, label_height=LABEL_MM)
     for letter, p in letters.items():
         view.label(p, letter, 5.0, prefer_deg=135.0)
-    view.title(title)
-    view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), f"μl = {format_significant(mu_l, 4)} м/мм", 3.5,
-                 "bottom-center")
-    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), f"μF = {format_significant(mu_f, 4)} Н/мм", 3.5,
-                 "bottom-center")
+    _title_and_scales(view, title, f"μl = {format_significant(mu_l, 4)} м/мм",
+                      f"μF = {format_significant(mu_f, 4)} Н/мм")
     return view
 
 
@@ -191,11 +195,8 @@ def lever_view(sheet: Sheet, name: str, points: dict[str, np.ndarray], segments:
         view.arrow(img, end, None, head_mm=3.5)
     for (img, v, label, arm), end in zip(loads, ends):
         place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
-    view.title(title)
-    view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), f"μv = {format_significant(mu_v, 4)} (м/с)/мм", 3.5,
-                 "bottom-center")
-    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), f"μF = {format_significant(mu_f, 4)} Н/мм", 3.5,
-                 "bottom-center")
+    _title_and_scales(view, title, f"μv = {format_significant(mu_v, 4)} (м/с)/мм",
+                      f"μF = {format_significant(mu_f, 4)} Н/мм")
     return view
 
 

@@ -88,6 +88,17 @@ def residual(cons: list[Constraint], q: np.ndarray) -> np.ndarray:
     return np.stack(out, axis=-1) if out else np.zeros((q.shape[0], 0))
 
 
+def _slide_frame(s: SlidePair, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Of a prismatic pair, all (N, 2): the guide line's normal n, the arms Rpa (the sliding point
+    on its link) and Rl (the line's point on the guide), and d from the line's point to the sliding point."""
+    a, g = s.link, s.guide
+    n = rot(q[:, g, 2], (-s.line_dir[1], s.line_dir[0]))
+    Rpa = rot(q[:, a, 2], s.point_local)
+    Rl = rot(q[:, g, 2], s.line_point)
+    d = q[:, a, :2] + Rpa - q[:, g, :2] - Rl
+    return n, Rpa, Rl, d
+
+
 def jacobian_rows(c: Constraint, q: np.ndarray) -> list[dict[int, np.ndarray]]:
     """Rows of ∂Φ/∂q of one constraint: each row maps a body to its (N, 3) coefficients."""
     N = q.shape[0]
@@ -102,10 +113,7 @@ def jacobian_rows(c: Constraint, q: np.ndarray) -> list[dict[int, np.ndarray]]:
         return [rx, ry]
     s = c.s
     a, g = s.link, s.guide
-    n = rot(q[:, g, 2], (-s.line_dir[1], s.line_dir[0]))
-    Rpa = rot(q[:, a, 2], s.point_local)
-    Rl = rot(q[:, g, 2], s.line_point)
-    d = q[:, a, :2] + Rpa - q[:, g, :2] - Rl
+    n, Rpa, Rl, d = _slide_frame(s, q)
     r1 = {a: np.stack((n[:, 0], n[:, 1], _dot(n, perp(Rpa))), -1)}
     r1[g] = r1.get(g, 0) + np.stack((-n[:, 0], -n[:, 1], _dot(perp(n), d) - _dot(n, perp(Rl))), -1)
     r2 = {a: np.stack((zero, zero, one), -1)}
@@ -124,10 +132,7 @@ def gamma(c: Constraint, q: np.ndarray, qd: np.ndarray) -> list[np.ndarray]:
         return [gm[:, 0], gm[:, 1]]
     s = c.s
     a, g = s.link, s.guide
-    n = rot(q[:, g, 2], (-s.line_dir[1], s.line_dir[0]))
-    Rpa = rot(q[:, a, 2], s.point_local)
-    Rl = rot(q[:, g, 2], s.line_point)
-    d = q[:, a, :2] + Rpa - q[:, g, :2] - Rl
+    n, Rpa, Rl, d = _slide_frame(s, q)
     wa, wg = qd[:, a, 2], qd[:, g, 2]
     dd = qd[:, a, :2] + wa[:, None] * perp(Rpa) - qd[:, g, :2] - wg[:, None] * perp(Rl)
     g1 = (wg ** 2) * _dot(n, d) - 2 * wg * _dot(perp(n), dd) + _dot(n, (wa ** 2)[:, None] * Rpa - (wg ** 2)[:, None] * Rl)

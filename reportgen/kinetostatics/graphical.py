@@ -377,14 +377,7 @@ def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set
             e = d / l
             t = perp(e)
             R = ext.on(k)[i]
-            terms, meas_sum = [], 0.0
-            for it in its:
-                term, m_r = _moment_term(it.name, it.point, it.vector, Qp, mu_l, arm_step, it.point_r, it.vector_r)
-                terms.append(term)
-                meas_sum += m_r
-            if couples:
-                terms.append(MomentTerm("M", couples, 1.0, 0.0, 0.0, couples))
-                meas_sum += couples
+            terms, meas_sum = _moment_terms(its, couples, Qp, mu_l, arm_step)
             l_meas = measure(l / mu_l, arm_step)
             tau = float(R @ t)
             tau_m = meas_sum / (l_meas * mu_l)
@@ -487,6 +480,21 @@ def _generic(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: 
     return GroupGraphic(g.key, g.label, g.kind, (), _polygon(g.key, entries, mu_f, step, extra), "exact-read")
 
 
+def _moment_terms(its, couples: float, centre: np.ndarray, mu_l: float,
+                  arm_step: float) -> tuple[list[MomentTerm], float]:
+    """The moments about ``centre`` of the forces ``its`` (arms measured on the drawing) and of the
+    couples: the terms as the note lists them, and their sum from the measured arms."""
+    terms, total = [], 0.0
+    for it in its:
+        term, m_r = _moment_term(it.name, it.point, it.vector, centre, mu_l, arm_step, it.point_r, it.vector_r)
+        terms.append(term)
+        total += m_r
+    if couples:
+        terms.append(MomentTerm("M", couples, 1.0, 0.0, 0.0, couples))
+        total += couples
+    return terms, total
+
+
 def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
            arm_step: float) -> CrankGraphic:
     d = reactions.crank
@@ -495,14 +503,7 @@ def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l:
     O = fp.point[i]
     A = reactions.balancing_point[i]
     l = float(np.hypot(*(A - O)))
-    terms, meas = [], 0.0
-    for it in its:
-        term, m_r = _moment_term(it.name, it.point, it.vector, O, mu_l, arm_step, it.point_r, it.vector_r)
-        terms.append(term)
-        meas += m_r
-    if couples:
-        terms.append(MomentTerm("M", couples, 1.0, 0.0, 0.0, couples))
-        meas += couples
+    terms, meas = _moment_terms(its, couples, O, mu_l, arm_step)
     l_meas = measure(l / mu_l, arm_step)
     M_exact = float(reactions.balancing_moment[i])
     F_exact = M_exact / l
