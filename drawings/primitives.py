@@ -253,7 +253,7 @@ class Canvas:
     def text_mm(self, pos: Vec, text: str, height: float = 3.5, align: str = "bottom-left",
                 rotation: float = 0.0, layer: str = "text", register: bool = True) -> Polygon:
         """A one-line TEXT at a *sheet* point; returns its box. ``align`` e.g. "center"."""
-        ent = self.layout.add_text(text, height=height, rotation=rotation, dxfattribs={
+        ent = self.layout.add_text(style.dxf_literal(text), height=height, rotation=rotation, dxfattribs={
             **self._attrs(layer), "style": style.TEXT_STYLE,
             "lineweight": style.text_lineweight(height)})
         ent.set_placement(pos, align=_ALIGN[_ALIGN_NAMES[align]])

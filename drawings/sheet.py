@@ -302,7 +302,7 @@ class Sheet:
                 cx0, cy0 = x + w / 2, y + h / 2
                 pos = (2 * cx0 - pos[0], 2 * cy0 - pos[1])
                 al = {"middle-left": "middle-right"}.get(al, al)
-            ent = self.msp.add_text(s, height=th, rotation=rotation, dxfattribs={
+            ent = self.msp.add_text(style.dxf_literal(s), height=th, rotation=rotation, dxfattribs={
                 "layer": "text", "style": style.TEXT_STYLE, "width": wf,
                 "lineweight": style.text_lineweight(th)})
             ent.set_placement(pos, align=_ALIGN[_ALIGN_NAMES[al]])

@@ -226,3 +226,9 @@ def _setup_header(doc: Drawing, paper_width: float, paper_height: float) -> None
     h["$LIMMAX"] = (float(paper_width), float(paper_height))
     h["$EXTMIN"] = (0.0, 0.0, 0.0)
     h["$EXTMAX"] = (float(paper_width), float(paper_height), 0.0)
+
+
+def dxf_literal(text: str) -> str:
+    """Text as the DXF TEXT entity must hold it to print literally: ``%%d``, ``%%c``, ``%%p`` are
+    control codes (°, ⌀, ±), so every ``%`` of a ``%%`` run is written ``%%%``."""
+    return text.replace("%%", "%%%%%%") if "%%" in text else text

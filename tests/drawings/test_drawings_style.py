@@ -67,3 +67,11 @@ def test_text_lineweight_is_a_tenth_of_height():
     assert style.text_lineweight(7.0) == 70
     assert style.text_lineweight(3.5) == 35
     assert style.text_lineweight(2.5) == 25
+
+
+def test_percent_codes_print_literally():
+    """A user's «%%d» must not become «°» on a sheet (DXF TEXT control codes)."""
+    from ezdxf.tools.text import plain_text
+    from drawings.style import dxf_literal
+    for s in ("Иванов %%d", "50 %", "%%c%%p", "a%%%b"):
+        assert plain_text(dxf_literal(s)) == s
