@@ -202,6 +202,45 @@ class CalcParts:
     substituted: Markup | None   # None when it would repeat the result
     result: Markup
     wide: bool
+    substituted_lines: tuple[Markup, ...] = ()   # the substitution broken at top-level + and −
+
+
+#: A line of a split formula shows about this many characters (14 pt text on A4 with the frame).
+LINE_WIDTH = 45
+
+
+def break_sum(source: str, width: int = LINE_WIDTH) -> list[str]:
+    """Break a LaTeX expression before top-level `` + `` / `` - `` (outside braces and
+    \\left…\\right), greedily, so that each line shows at most about ``width`` characters."""
+    cuts: list[int] = []
+    depth = 0
+    i = 0
+    while i < len(source):
+        if source.startswith("\\left", i):
+            depth += 1
+            i += 5
+            continue
+        if source.startswith("\\right", i):
+            depth -= 1
+            i += 6
+            continue
+        ch = source[i]
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and ch == " " and source[i + 1:i + 3] in ("+ ", "- ") and i > 0:
+            cuts.append(i)
+        i += 1
+    bounds = [0] + cuts + [len(source)]
+    terms = [source[a:b].strip() for a, b in zip(bounds[:-1], bounds[1:])]
+    lines: list[str] = []
+    for term in terms:
+        if lines and visible_width(lines[-1] + term) <= width:
+            lines[-1] = f"{lines[-1]} {term}"
+        else:
+            lines.append(term)
+    return lines
 
 
 def calc_parts(rec: CalcRecord) -> CalcParts:
@@ -213,12 +252,17 @@ def calc_parts(rec: CalcRecord) -> CalcParts:
     show_substituted = substituted != result_number
     width = visible_width(" ".join([rec.symbol, symbolic if show_symbolic else "",
                                     substituted if show_substituted else "", rec.result_latex()]))
+    wide = width > WIDE_FORMULA and show_symbolic and show_substituted
+    lines: tuple[Markup, ...] = ()
+    if wide and visible_width(substituted) > LINE_WIDTH:
+        lines = tuple(Markup(p) for p in break_sum(substituted))
     return CalcParts(
         symbol=Markup(rec.symbol),
         symbolic=Markup(symbolic) if show_symbolic else None,
         substituted=Markup(substituted) if show_substituted else None,
         result=Markup(rec.result_latex()),
-        wide=width > WIDE_FORMULA and show_symbolic and show_substituted,
+        wide=wide,
+        substituted_lines=lines if len(lines) > 1 else (),
     )
 
 
