@@ -28,11 +28,18 @@ BOTTOM_MM = 12.0
 RIGHT_MM = 24.0
 LEFT_MM = 14.0
 GAP_MM = 8.0
+#: The diagrams of the column are spread over its height, at most this far apart, mm.
+MAX_GAP_MM = 30.0
 #: The column of M, A, ΔE is at least this wide (its titles), mm.
 MIN_WIDTH_MM = 250.0
 #: The J_red(φ) view: room above the J axis (the axis name) and below the φ axis's end.
 J_TOP_MM = 12.0
 J_BOTTOM_MM = 16.0
+#: Radius of the arcs marking ψmax, ψmin at K and L (at least ARC_MIN_MM), mm.
+ARC_MM = 22.0
+ARC_MIN_MM = 10.0
+#: The largest |ω − ω_m| (or the band) of ω(φ) is at most this high, mm (μω is round).
+OMEGA_MM = 36.0
 
 
 @dataclass(frozen=True)
@@ -66,6 +73,7 @@ class Layout:
     o_energy: tuple[float, float]
     o_wittenbauer: tuple[float, float]
     o_inertia: tuple[float, float]
+    omega: Rect | None = None
 
     @property
     def right(self) -> float:
@@ -93,20 +101,25 @@ def _j_length(g) -> float:
     return float(np.max(g.j_mm)) + 12.0
 
 
-def layout(g, labels: list[str], x0: float, y_top: float, y_bottom: float) -> Layout:
-    """Column of M, A, ΔE from (x0, y_top) down; Wittenbauer right of ΔE at its level; J_red under it."""
+def layout(g, labels: list[str], x0: float, y_top: float, y_bottom: float, omega_h: float = 0.0) -> Layout:
+    """Column of M, A, ΔE and ω(φ) (``omega_h`` high) from (x0, y_top) down to y_bottom, the room left
+    spread between them (at most MAX_GAP_MM apart); the Wittenbauer diagram right of ΔE at its level,
+    J_red(φ) turned under it (if J_red(φ) would not fit there, both go to the top of their column)."""
     sp = spans(g, labels)
     phi_len = float(g.x[-1])
     left = g.H + LEFT_MM + 8.0
     width = max(left + phi_len + RIGHT_MM, MIN_WIDTH_MM)
+    heights = [sp[key].height for key in ("M", "A", "E")] + ([omega_h] if omega_h > 0 else [])
+    spare = (y_top - y_bottom) - sum(heights) - GAP_MM * (len(heights) - 1)
+    gap = GAP_MM + min(max(spare, 0.0) / max(len(heights) - 1, 1), MAX_GAP_MM - GAP_MM)
     rects, origins = [], []
     top = y_top
-    for key in ("M", "A", "E"):
-        s = sp[key]
-        r = Rect(x0, top - s.height, x0 + width, top)
+    for key, h in zip(("M", "A", "E", "ω"), heights):
+        r = Rect(x0, top - h, x0 + width, top)
         rects.append(r)
-        origins.append((x0 + left, top - TOP_MM - s.up))
-        top = r.y0 - GAP_MM
+        if key != "ω":
+            origins.append((x0 + left, top - TOP_MM - sp[key].up))
+        top = r.y0 - gap
     sw = sp["W"]
     xw = x0 + width + GAP_MM
     ww = LEFT_MM + 8.0 + _j_length(g) + RIGHT_MM
@@ -123,7 +136,8 @@ def layout(g, labels: list[str], x0: float, y_top: float, y_bottom: float) -> La
     o_j = (o_w[0], inertia_top - J_TOP_MM)
     if inertia.y0 < y_bottom or wit.y1 > y_top:
         raise ValueError("the Wittenbauer and J_red(φ) diagrams do not fit one under the other")
-    return Layout(rects[0], rects[1], rects[2], wit, inertia, origins[0], origins[1], origins[2], o_w, o_j)
+    omega = rects[3] if omega_h > 0 else None
+    return Layout(rects[0], rects[1], rects[2], wit, inertia, origins[0], origins[1], origins[2], o_w, o_j, omega)
 
 
 def _view(sheet: Sheet, name: str, rect: Rect, origin: tuple[float, float]) -> View:
@@ -232,13 +246,15 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str]) -> tuple[V
     v.polyline(pts, "contour")
     for p, name in zip(pts[:-1], labels[:-1]):
         v.circle_mm(p, 0.6, "contour")
+    # the arcs of ψ stop short of the curve where it comes close to the ΔE axis (shaper)
+    r_arc = min(ARC_MM, max(ARC_MIN_MM, 0.6 * float(np.min(g.j_mm))))
     for y0, psi, name in ((g.K_mm, g.psi_max_deg, "ψmax"), (g.L_mm, g.psi_min_deg, "ψmin")):
         t = math.tan(math.radians(psi))
         v.line((0.0, y0), (x_len, y0 + x_len * t), "contour")
-        v.line((0.0, y0), (26.0, y0), "thin")
-        v.arc((0.0, y0), 22.0, 0.0, psi, "thin")
+        v.line((0.0, y0), (r_arc + 4.0, y0), "thin")
+        v.arc((0.0, y0), r_arc, 0.0, psi, "thin")
         mid = math.radians(psi / 2)
-        v.label((22.0 * math.cos(mid), y0 + 22.0 * math.sin(mid)), name, 3.5, gap_mm=1.0, prefer_deg=-20.0)
+        v.label((r_arc * math.cos(mid), y0 + r_arc * math.sin(mid)), name, 3.5, gap_mm=1.0, prefer_deg=-20.0)
     for p, name in zip(pts[:-1], labels[:-1]):
         if name.isdigit():
             v.label(p, name, 3.5, gap_mm=1.0)
@@ -283,7 +299,7 @@ def omega_span(res, g) -> tuple[float, Span]:
 
     w = np.asarray(res.motion.omega) - res.omega_m
     lo, hi = (b - res.omega_m for b in res.motion.band)
-    mu = nice_ceil(max(float(np.abs(w).max()), hi, -lo) / 28.0)
+    mu = nice_ceil(max(float(np.abs(w).max()), hi, -lo) / OMEGA_MM)
     return mu, Span.of(w / mu, np.array([lo, hi]) / mu)
 
 

@@ -1,5 +1,6 @@
-"""Sheet 3: the flywheel's sketch (front view and axial section at a ГОСТ 2.302 scale, dimensioned
-in real millimetres) and the table of the calculation's results."""
+"""Sheet 3: the flywheel's sketch (front view and axial section at a ГОСТ 2.302 scale, the section
+beside the front view or under it, dimensioned in real millimetres) and the table of the
+calculation's results."""
 from __future__ import annotations
 
 from drawings.layout import Rect
@@ -12,32 +13,46 @@ GOST_REDUCTIONS = (1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20, 1 
 PAD_MM = 24.0
 BETWEEN_MM = 30.0
 HATCH_MM = 4.0
+#: Offset of the outer diameter's dimension: its text clears the end of the centre line, mm.
+DIAMETER_MM = 14.0
 
 
 def scale_text(k: float) -> str:
     return "1:1" if k >= 1 else f"1:{format_number(1 / k, 1)}"
 
 
-def sketch_scale(fw, width: float, height: float) -> float:
-    """The largest ГОСТ scale at which the front view and the section fit ``width`` × ``height``."""
+def sketch_size(fw, k: float, stacked: bool = False) -> tuple[float, float]:
+    """Width and height of the sketch at scale ``k``: the section right of the front view, or
+    (``stacked``) under it as the view from above."""
     D, b = 2000 * fw.radius, 1000 * fw.width
-    for k in GOST_REDUCTIONS:
-        if D * k + b * k + BETWEEN_MM + 2 * PAD_MM <= width and D * k + 2 * PAD_MM + 14 <= height:
-            return k
-    return GOST_REDUCTIONS[-1]
-
-
-def sketch_size(fw, k: float) -> tuple[float, float]:
-    D, b = 2000 * fw.radius, 1000 * fw.width
+    if stacked:
+        return D * k + 2 * PAD_MM, D * k + b * k + BETWEEN_MM + 2 * PAD_MM + 14
     return D * k + b * k + BETWEEN_MM + 2 * PAD_MM, D * k + 2 * PAD_MM + 14
 
 
-def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float) -> View:
-    """Front view (circles and centre lines) and the axial section (hatched) of the disk or rim;
-    dimensions in real mm (the view's model units are real mm)."""
+def sketch_fit(fw, width: float, height: float) -> tuple[float, bool]:
+    """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` and its arrangement
+    (section beside the front view where both give the same scale, else under it)."""
+    for k in GOST_REDUCTIONS:
+        for stacked in (False, True):
+            w, h = sketch_size(fw, k, stacked)
+            if w <= width and h <= height:
+                return k, stacked
+    return GOST_REDUCTIONS[-1], False
+
+
+def sketch_scale(fw, width: float, height: float) -> float:
+    """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` (either arrangement)."""
+    return sketch_fit(fw, width, height)[0]
+
+
+def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False) -> View:
+    """Front view (circles and centre lines) and the axial section (hatched) of the disk or rim, the
+    section right of the front view or (``stacked``) under it; dimensions in real mm (the view's
+    model units are real mm)."""
     R, r, b = 1000 * fw.radius, 1000 * fw.inner_radius, 1000 * fw.width
     cx = rect.x0 + PAD_MM + R * k
-    cy = rect.y0 + PAD_MM + R * k
+    cy = rect.y0 + PAD_MM + R * k + ((b * k + BETWEEN_MM) if stacked else 0.0)
     view = sheet.place_view("flywheel", rect, Transform(k, (0.0, 0.0), (cx, cy)))
     view.title(f"Эскиз маховика  М {scale_text(k)}")
     view.circle((0.0, 0.0), R, "contour")
@@ -46,6 +61,20 @@ def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float) -> View:
     ext = R + 6.0 / k
     view.line((-ext, 0.0), (ext, 0.0), "axis")
     view.line((0.0, -ext), (0.0, ext), "axis")
+    if stacked:
+        # the section as the view from above: the axis vertical, the rings left and right of it
+        y1 = -R - BETWEEN_MM / k
+        y0 = y1 - b
+        rings = [(-R, R)] if r <= 0 else [(r, R), (-R, -r)]
+        for x0, x1 in rings:
+            view.polyline([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], "contour", closed=True)
+            _hatch(view, x0, y0, x1, y1, HATCH_MM / k)
+        view.line((0.0, y1 + 6.0 / k), (0.0, y0 - 6.0 / k), "axis")
+        view.dimension((-R, y0), (R, y0), offset_mm=-DIAMETER_MM, decimals=0, text=f"Ø{format_number(2 * R, 0)}")
+        view.dimension((R, y0), (R, y1), offset_mm=-8.0, decimals=0)
+        if r > 0:
+            view.dimension((-r, y1), (r, y1), offset_mm=10.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")
+        return view
     # the section, right of the front view
     x0 = R + BETWEEN_MM / k
     rings = [(-R, R)] if r <= 0 else [(r, R), (-R, -r)]
@@ -53,7 +82,7 @@ def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float) -> View:
         view.polyline([(x0, y0), (x0 + b, y0), (x0 + b, y1), (x0, y1)], "contour", closed=True)
         _hatch(view, x0, y0, x0 + b, y1, HATCH_MM / k)
     view.line((x0 - 6.0 / k, 0.0), (x0 + b + 6.0 / k, 0.0), "axis")
-    view.dimension((x0 + b, -R), (x0 + b, R), offset_mm=-10.0, decimals=0, text=f"Ø{format_number(2 * R, 0)}")
+    view.dimension((x0 + b, -R), (x0 + b, R), offset_mm=-DIAMETER_MM, decimals=0, text=f"Ø{format_number(2 * R, 0)}")
     view.dimension((x0, R), (x0 + b, R), offset_mm=8.0, decimals=0)
     if r > 0:
         view.dimension((x0, -r), (x0, r), offset_mm=10.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")

@@ -18,8 +18,8 @@ TITLE = "Динамический анализ машинного агрегат
 CLEAR_MM = 8.0
 #: Height of a row of the results table, mm (as in :func:`dynamics_flywheel.draw_results`).
 ROW_MM = 8.0
-#: The flywheel's sketch is at most this high (a ГОСТ scale is chosen to fit), mm.
-SKETCH_MAX_MM = 260.0
+#: The table of results is at most this wide, mm.
+TABLE_MAX_MM = 160.0
 
 
 def available(project: Project) -> bool:
@@ -47,30 +47,27 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM
-    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM)
+    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM, dd.omega_height(res, g))
     dd.draw_moment(sheet, lay, g, labels)
     dd.draw_work(sheet, lay, g, labels)
     dd.draw_energy(sheet, lay, g, labels)
     _, kl = dd.draw_wittenbauer(sheet, lay, g, labels)
     dd.draw_inertia(sheet, lay, g, labels)
-    om_top = lay.energy.y0 - dd.GAP_MM
-    dd.draw_omega(sheet, Rect(lay.energy.x0, om_top - dd.omega_height(res, g), lay.energy.x1, om_top), res, g, labels)
-    # the right column: the flywheel's sketch at the top, the table of results under it
+    dd.draw_omega(sheet, lay.omega, res, g, labels)
+    # the right column, over the title block: the table of results at the top, the flywheel's sketch
+    # under it at the largest ГОСТ scale that fits the rest of the column
     x0, x1 = lay.right + 12.0, fr.x1 - CLEAR_MM
     top = fr.y1 - CLEAR_MM
     rows = df.result_rows(res, kl)
     table_h = 12.0 + ROW_MM * len(rows)
-    table_w = min(x1 - x0, 150.0)
-    room_h = top - (sheet.title_rect.y1 + CLEAR_MM) - table_h - 12.0
-    sketch = None
-    if res.J_flywheel > 0:
-        k = df.sketch_scale(res.flywheel, x1 - x0, min(room_h, SKETCH_MAX_MM))
-        sketch = (k, *df.sketch_size(res.flywheel, k))
-    # the table and the sketch one under the other, centred in the column
+    table_w = min(x1 - x0, TABLE_MAX_MM)
+    bottom = sheet.title_rect.y1 + CLEAR_MM
     cx = (x0 + x1) / 2
     df.draw_results(sheet, res, Rect(cx - table_w / 2, top - table_h, cx + table_w / 2, top), rows)
     top -= table_h + 12.0
-    if sketch is not None:
-        k, w, h = sketch
-        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, top - h, cx + w / 2, top), k)
+    if res.J_flywheel > 0:
+        k, stacked = df.sketch_fit(res.flywheel, x1 - x0, top - bottom)
+        w, h = df.sketch_size(res.flywheel, k, stacked)
+        cy = (top + bottom) / 2 if h <= top - bottom else top - h / 2
+        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), k, stacked)
     return sheet

@@ -48,12 +48,14 @@ def nice_ceil(x: float) -> float:
 
 @dataclass(frozen=True)
 class GraphLayout:
-    """Room on the sheet for the diagrams, mm."""
-    phi_axis: float = 180.0       # length of the φ axis for one cycle
-    m_height: float = 60.0        # largest |M_red|
-    a_height: float = 60.0        # largest |A| of the work diagram
-    e_height: float = 60.0        # span of ΔE
-    j_width: float = 120.0        # largest J_red (from J = 0)
+    """Room on the sheet for the diagrams, mm (sized for an A1 sheet 3: the column of M, A, ΔE, ω
+    on the left, the Wittenbauer diagram with J_red(φ) turned under it in the middle; the note's
+    section 3 uses the same scales, so that note and sheet agree)."""
+    phi_axis: float = 260.0       # length of the φ axis for one cycle
+    m_height: float = 80.0        # largest |M_red|
+    a_height: float = 80.0        # largest |A| of the work diagram
+    e_height: float = 80.0        # span of ΔE
+    j_width: float = 160.0        # largest J_red (from J = 0)
     pole_step: float = 10.0       # H is a multiple of this
 
 
