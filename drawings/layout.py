@@ -7,6 +7,7 @@ title block), each as near to its preferred corner as it fits, without touching 
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import dataclass
 from typing import Iterable, Literal, Sequence
 
@@ -159,3 +160,131 @@ def find_overlaps(items: Sequence[tuple[str, BaseGeometry]], *,
         if area > tolerance:
             found.append(Overlap(items[i][0], items[j][0], area))
     return found
+
+
+# ---------------------------------------------------------------------------------------------
+# trial packing and spreading (additive helpers for sheets that try several arrangements)
+
+
+def try_pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0,
+             placed: Sequence[Rect] = ()) -> list[Rect] | None:
+    """Like :func:`pack` but returns None when a view does not fit, and fast enough to try many
+    arrangements: a rectangle is inside ``region`` when it is inside its bounds and clear of its
+    :func:`walls` (exact for a rectilinear region such as the free field of a sheet, cautious
+    otherwise)."""
+    bx0, by0, bx1, by1 = region.bounds
+    notches = walls(region)
+    done: list[Rect] = list(placed)
+    out: list[Rect] = []
+    eps = 1e-6
+    for req in requests:
+        if req.preferred not in CORNERS:
+            raise ValueError(f"preferred must be one of {CORNERS}, not {req.preferred!r}")
+        tx, ty = _corner_target(region, req.preferred)
+        fx = {"top-left": 0.0, "bottom-left": 0.0, "top-right": 1.0, "bottom-right": 1.0}.get(req.preferred, 0.5)
+        fy = {"top-left": 1.0, "top-right": 1.0, "bottom-left": 0.0, "bottom-right": 0.0}.get(req.preferred, 0.5)
+        blocked = [p.expanded(gap - eps) for p in done] + [n.expanded(-eps) for n in notches]
+        best: tuple[float, Rect] | None = None
+        for cx, cy in _candidates(region, done, req.width, req.height, gap):
+            if cx < bx0 - eps or cy < by0 - eps or cx + req.width > bx1 + eps or cy + req.height > by1 + eps:
+                continue
+            d = (cx + fx * req.width - tx) ** 2 + (cy + fy * req.height - ty) ** 2
+            if best is not None and d >= best[0] - 1e-9:
+                continue
+            rect = Rect.from_size(cx, cy, req.width, req.height)
+            if any(rect.overlaps(b) for b in blocked):
+                continue
+            best = (d, rect)
+        if best is None:
+            return None
+        done.append(best[1])
+        out.append(best[1])
+    return out
+
+
+def walls(region: BaseGeometry) -> list[Rect]:
+    """The parts of ``region``'s bounding box outside it (the notches of the title block and
+    graph 26), as rectangles (bounding boxes of the parts)."""
+    rest = box(*region.bounds).difference(region)
+    return [Rect(*g.bounds) for g in getattr(rest, "geoms", [rest]) if not g.is_empty and g.area > 1e-6]
+
+
+def clearance(region: BaseGeometry, rect: Rect, others: Sequence[Rect],
+              notches: Sequence[Rect] | None = None) -> tuple[float, float, float, float]:
+    """Free room (mm) left, below, right and above ``rect`` before ``others`` or the edge of
+    ``region`` (the others as given: expand them by a gap first if one is wanted); ``notches``
+    are :func:`walls` of the region if already known."""
+    x0, y0, x1, y1 = region.bounds
+    stops = [*others, *(walls(region) if notches is None else notches)]
+    left, below, right, above = rect.x0 - x0, rect.y0 - y0, x1 - rect.x1, y1 - rect.y1
+    for b in stops:
+        if b.y0 < rect.y1 and rect.y0 < b.y1:            # in the same row
+            if b.x1 <= rect.x0 + 1e-6:
+                left = min(left, rect.x0 - b.x1)
+            elif b.x0 >= rect.x1 - 1e-6:
+                right = min(right, b.x0 - rect.x1)
+        if b.x0 < rect.x1 and rect.x0 < b.x1:            # in the same column
+            if b.y1 <= rect.y0 + 1e-6:
+                below = min(below, rect.y0 - b.y1)
+            elif b.y0 >= rect.y1 - 1e-6:
+                above = min(above, b.y0 - rect.y1)
+    return max(left, 0.0), max(below, 0.0), max(right, 0.0), max(above, 0.0)
+
+
+def room(region: BaseGeometry, rects: Sequence[Rect], *, gap: float = 10.0,
+         placed: Sequence[Rect] = ()) -> float:
+    """The free room each of ``rects`` would have on either side once centred in it: the smallest
+    over the rects and the two axes of half the room along the axis (mm)."""
+    notches = walls(region)
+    worst = math.inf
+    for i, r in enumerate(rects):
+        others = [o.expanded(gap) for o in [*placed, *rects[:i], *rects[i + 1:]]]
+        left, below, right, above = clearance(region, r, others, notches)
+        worst = min(worst, (left + right) / 2, (below + above) / 2)
+    return worst
+
+
+def spread(region: BaseGeometry, rects: Sequence[Rect], *, gap: float = 10.0,
+           placed: Sequence[Rect] = (), rounds: int = 12,
+           weights: Sequence[tuple[float, float]] | None = None) -> list[Rect]:
+    """Move ``rects`` (sizes kept) so that the free room is shared out: each in turn goes to the
+    middle of the room it can slide in along x, then along y, at least ``gap`` mm from the others
+    and ``placed`` and inside ``region``; a few rounds. ``weights`` (per rect, x and y, 0…1) put
+    a rect at that fraction of its room instead of the middle (0: left/bottom, 1: right/top)."""
+    notches = walls(region)
+    out = list(rects)
+    ws = list(weights) if weights is not None else [(0.5, 0.5)] * len(out)
+    for _ in range(rounds):
+        moved = 0.0
+        for i, r in enumerate(out):
+            others = [o.expanded(gap) for o in [*placed, *out[:i], *out[i + 1:]]]
+            left, _, right, _ = clearance(region, r, others, notches)
+            dx = ws[i][0] * (left + right) - left
+            r = Rect(r.x0 + dx, r.y0, r.x1 + dx, r.y1)
+            _, below, _, above = clearance(region, r, others, notches)
+            dy = ws[i][1] * (below + above) - below
+            r = Rect(r.x0, r.y0 + dy, r.x1, r.y1 + dy)
+            moved = max(moved, abs(dx), abs(dy))
+            out[i] = r
+        if moved < 0.05:
+            break
+    return out
+
+
+def grow(region: BaseGeometry, rects: Sequence[Rect], index: int, *, gap: float = 10.0,
+         placed: Sequence[Rect] = (), share: float = 0.5, max_grow: tuple[float, float] = (math.inf, math.inf)
+         ) -> list[Rect]:
+    """Enlarge ``rects[index]`` about its centre into ``share`` of the room it has on its
+    narrower side along each axis (at most ``max_grow`` mm in width and height), keeping ``gap``
+    mm from the others and ``placed`` and staying inside ``region``."""
+    out = list(rects)
+    r = out[index]
+    others = [o.expanded(gap) for o in [*placed, *out[:index], *out[index + 1:]]]
+    notches = walls(region)
+    left, _, right, _ = clearance(region, r, others, notches)
+    ex = min(min(left, right) * share, max_grow[0] / 2)
+    r = Rect(r.x0 - ex, r.y0, r.x1 + ex, r.y1)
+    _, below, _, above = clearance(region, r, others, notches)
+    ey = min(min(below, above) * share, max_grow[1] / 2)
+    out[index] = Rect(r.x0, r.y0 - ey, r.x1, r.y1 + ey)
+    return out

@@ -135,36 +135,68 @@ def add_plan_view(sheet: Sheet, name: str, plan: Plan, image_keys: set[str], tit
     return view, draw_plan(view, plan, image_keys, title)
 
 
-def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str) -> View | None:
-    """All velocity plans in one view, a grid of equal cells numbered by position; None if the
-    sheet has no room for them."""
+def place_plan_view(sheet: Sheet, name: str, plan: Plan, image_keys: set[str], title: str,
+                    rect: Rect) -> tuple[View, list[Drawn]]:
+    """The plan in a given rectangle (at least :func:`view_size`), its drawing centred in it."""
+    w, h, origin = view_size(plan, title)
+    ox = origin[0] - (rect.width - w) / 2
+    oy = origin[1] - (rect.height - h) / 2
+    view = sheet.place_view(name, rect, Transform(1.0, (ox, oy), (rect.x0, rect.y0)))
+    return view, draw_plan(view, plan, image_keys, title)
+
+
+#: Title and caption strips of the small plans' view, mm.
+SMALL_TITLE_MM, SMALL_CAPTION_MM = 14.0, 12.0
+
+
+def small_title(plans: list[Plan]) -> str:
+    return f"Планы скоростей положений 0–{len(plans) - 1}"
+
+
+def small_caption(plans: list[Plan]) -> str:
+    return f"μv = {format_significant(plans[0].scale, 4)} (м/с)/мм"
+
+
+def small_cell(plans: list[Plan]) -> tuple[float, float]:
+    """Width and height of one cell of the small plans' grid (the largest plan, its letters and
+    its number), mm."""
     ext = np.array([extent(p) for p in plans])
     pad = 9.0
     cw = float((ext[:, 2] - ext[:, 0]).max()) + 2 * pad
     ch = float((ext[:, 3] - ext[:, 1]).max()) + 2 * pad + 5.0
+    return cw, ch
+
+
+def small_grids(plans: list[Plan], max_width: float) -> list[tuple[int, float, float]]:
+    """Grids of the small plans to try: (columns, width, height) for 1–4 rows."""
+    cw, ch = small_cell(plans)
     n = len(plans)
-    title_h = 14.0
-    title = (f"Планы скоростей положений 0–{n - 1}, "
-             f"μv = {format_significant(plans[0].scale, 4)} (м/с)/мм")
-    tried: set[int] = set()
+    out: list[tuple[int, float, float]] = []
     for rows in range(1, 5):
         cols = math.ceil(n / rows)
-        if cols in tried or cols * cw > sheet.frame.width:
+        if any(c == cols for c, _, _ in out) or cols * cw > max_width:
             continue
-        tried.add(cols)
-        w, h = cols * cw, rows * ch + title_h
-        try:
-            holder = sheet.add_view("plans_all", w, h, preferred=preferred)
-        except BuildError:
-            continue
-        break
-    else:
-        return None
-    holder.title(title)
+        rows = math.ceil(n / cols)
+        w = max(cols * cw, style.text_width(small_title(plans), 5.0) + 10.0)
+        out.append((cols, w, rows * ch + SMALL_TITLE_MM + SMALL_CAPTION_MM))
+    return out
+
+
+def place_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], cols: int,
+                      rect: Rect) -> View:
+    """All velocity plans in ``rect``, a grid of ``cols`` equal cells numbered by position, the
+    cells sharing out the rectangle."""
+    holder = sheet.place_view("plans_all", rect, Transform())
+    holder.title(small_title(plans))
+    holder.text_mm((rect.center[0], rect.y0 + 4.0), small_caption(plans), 5.0, "bottom-center")
+    n = len(plans)
+    rows = math.ceil(n / cols)
+    cw = rect.width / cols
+    ch = (rect.height - SMALL_TITLE_MM - SMALL_CAPTION_MM) / rows
     for i, plan in enumerate(plans):
         r, c = divmod(i, cols)
-        x0 = holder.rect.x0 + c * cw
-        y1 = holder.rect.y1 - title_h - r * ch
+        x0 = rect.x0 + c * cw
+        y1 = rect.y1 - SMALL_TITLE_MM - r * ch
         cell = Rect(x0, y1 - ch, x0 + cw, y1)
         e = extent(plan)
         cx, cy = (e[0] + e[2]) / 2, (e[1] + e[3]) / 2
@@ -172,3 +204,15 @@ def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], prefe
         sub = View(sheet, "plans_all", cell, tr)
         draw_plan(sub, plan, image_keys, f"{i}", names=False, letter_height=3.5, small=True)
     return holder
+
+
+def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str) -> View | None:
+    """All velocity plans in one view packed near ``preferred``; None if the sheet has no room."""
+    for cols, w, h in small_grids(plans, sheet.frame.width):
+        try:
+            holder = sheet.add_view("plans_all", w, h, preferred=preferred)
+        except BuildError:
+            continue
+        del sheet.views["plans_all"]
+        return place_small_plans(sheet, plans, image_keys, cols, holder.rect)
+    return None

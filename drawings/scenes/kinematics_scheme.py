@@ -26,6 +26,8 @@ DENSE = 144
 HINGE_MM = 2.0
 THIN_HINGE_MM = 1.0
 BLOCK_MM = (14.0, 7.0)
+#: Link numbers: radius of the circle, text height, mm.
+LINK_NUMBER_MM = (2.8, 3.5)
 
 
 @dataclass(frozen=True)
@@ -100,6 +102,7 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_stroke(view, project, data)
     _draw_letters(view, project, data)
     _draw_numbers(view, project, data)
+    _draw_link_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
                  f"μl = {format_number(mu_l, 5)} м/мм (М {scale_text})", 5.0, "bottom-center")
     view.title(f"Кинематическая схема механизма ({len(data.kin.phi)} положений)")
@@ -333,3 +336,73 @@ def _draw_numbers(view: View, project: Project, data: SchemeData) -> None:
         r = math.dist(p, o)
         cands = [q for q in cands if math.dist(q, o) > r] or cands
         rl.place_rich(view, cands, rich, 3.5, inside=_inside(view))
+
+
+def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i: int) -> list[tuple[float, float]]:
+    """Candidate centres (sheet mm) of link ``k``'s number in position ``i``: beside its
+    segments, from their middles towards the ends, on either side; round a slider's block."""
+    lk = project.linkage
+    pts = {n: view.transform(tuple(p)) for n, p in _pts(data.kin, i).items()}
+    names = lk.bodies[k].points
+    r = LINK_NUMBER_MM[0]
+    out: list[tuple[float, float]] = []
+    if len(names) >= 2:
+        segs = _link_outline(names)
+        for off in (r + 1.5, r + 3.5, r + 6.0):
+            for t in (0.5, 0.38, 0.62, 0.28, 0.72, 0.2, 0.8):
+                for a, b in segs:
+                    pa, pb = np.asarray(pts[a]), np.asarray(pts[b])
+                    d = pb - pa
+                    n = float(np.hypot(*d))
+                    if n < 4 * r:
+                        continue
+                    u = d / n
+                    nrm = np.array([-u[1], u[0]])
+                    for side in (1.0, -1.0):
+                        q = pa + d * t + side * nrm * off
+                        out.append((float(q[0]), float(q[1])))
+        return out
+    slide = next((sl for sl in lk.slides if sl.link == k), None)
+    p = np.asarray(pts[names[0]])
+    if slide is None:
+        return [tuple(c) for c in rl.around(tuple(p), rl.Rich("0"), 2 * r, 90.0, gaps=(4.0, 7.0))]
+    d = _guide_dir(project, data.kin, i, slide)
+    d = d / (np.hypot(*d) or 1.0)
+    nrm = np.array([-d[1], d[0]])
+    half_l, half_h = BLOCK_MM[0] / 2, BLOCK_MM[1] / 2
+    for extra in (1.5, 4.0, 7.0):
+        for along, across in ((0.0, half_h + r + extra), (0.0, -(half_h + r + extra)),
+                              (half_l * 0.6, half_h + r + extra), (-half_l * 0.6, half_h + r + extra),
+                              (half_l * 0.6, -(half_h + r + extra)), (-half_l * 0.6, -(half_h + r + extra))):
+            q = p + d * along + nrm * across
+            out.append((float(q[0]), float(q[1])))
+    return out
+
+
+def _draw_link_numbers(view: View, project: Project, data: SchemeData) -> None:
+    """The numbers of the moving links on the analysed position (the bold one with letters), in
+    small circles beside the links, where they overlap no text and cross no line (else crossing
+    as few lines as possible; never over a text)."""
+    lk = project.linkage
+    r, h = LINK_NUMBER_MM
+    inside = _inside(view)
+    ann = view.annotations
+    for k in lk.moving:
+        best: tuple[int, tuple[float, float]] | None = None
+        for c in _link_number_spots(view, project, data, k, data.analysed):
+            square = Polygon([(c[0] - r - 0.3, c[1] - r - 0.3), (c[0] + r + 0.3, c[1] - r - 0.3),
+                              (c[0] + r + 0.3, c[1] + r + 0.3), (c[0] - r - 0.3, c[1] + r + 0.3)])
+            if not inside.contains(square) or ann.hits_box(square):
+                continue
+            crossings = ann.crossings(square)
+            if best is None or crossings < best[0]:
+                best = (crossings, c)
+            if crossings == 0:
+                break
+        if best is None:
+            continue
+        c = best[1]
+        view.circle_mm(view.transform.inverse(c), r, "thin")
+        view.text_mm(c, str(k), h, "center", register=False)
+        ann.add_box(f"{view.name}: «{k}»", Polygon([(c[0] - r, c[1] - r), (c[0] + r, c[1] - r),
+                                                   (c[0] + r, c[1] + r), (c[0] - r, c[1] + r)]))

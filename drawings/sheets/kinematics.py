@@ -4,12 +4,14 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
+import itertools
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from drawings import style
-from drawings.layout import Rect
+from drawings.layout import Rect, Request, grow, room, spread, try_pack
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_diagrams as kd
@@ -31,6 +33,10 @@ SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
 INTERVALS = 24
 #: The small velocity plans: the crank's vector is at most this long, mm.
 SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
+#: Gap between views, and between the two plans of the analysed position put together, mm.
+VIEW_GAP, PAIR_GAP = 10.0, 10.0
+#: The plans of the analysed position may widen by this much to give their names room, mm.
+GROW_PLANS_MM = 40.0
 
 
 def available(project: Project) -> bool:
@@ -104,13 +110,128 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     keys = image_keys(project)
     vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
     add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
-    kp.add_plan_view(sheet, "plan_v", vplan, keys, f"План скоростей, положение {i}", "bottom-left")
-    kp.add_plan_view(sheet, "plan_a", aplan, keys, f"План ускорений, положение {i}", "bottom-left")
-    # the velocity plans of all positions in small form, as large as the room left allows
-    for crank_mm in SMALL_PLAN_MM:
-        if kp.add_small_plans(sheet, small_plans(project, crank_mm), keys, "bottom-left") is not None:
-            break
+    titles = (f"План скоростей, положение {i}", f"План ускорений, положение {i}")
+    # the plans and the small plans (as large as the room left allows) share out the free field
+    arrangement = arrange(sheet, [kp.view_size(vplan, titles[0])[:2], kp.view_size(aplan, titles[1])[:2]],
+                          lambda crank_mm: small_plans(project, crank_mm))
+    for name, plan, title in (("plan_v", vplan, titles[0]), ("plan_a", aplan, titles[1])):
+        kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
+    if arrangement.small is not None:
+        kp.place_small_plans(sheet, arrangement.small, keys, arrangement.cols, arrangement.rects["plans_all"])
     return sheet
+
+
+@dataclass(frozen=True)
+class Block:
+    """Views placed together: ``parts`` are (name, dx, dy, width, height) from the lower-left
+    corner of the block."""
+    name: str
+    width: float
+    height: float
+    parts: tuple[tuple[str, float, float, float, float], ...]
+
+
+@dataclass(frozen=True)
+class Arrangement:
+    """Where the plans and the small plans go (``rects`` by view name), the small plans drawn
+    (None if dropped) in ``cols`` columns."""
+    rects: dict[str, Rect]
+    small: list[Plan] | None
+    cols: int
+    room: float
+
+
+def plan_blocks(sizes: list[tuple[float, float]]) -> tuple[list[list[Block]], list[Block]]:
+    """Ways to put the two plans of the analysed position together — side by side (titles and
+    captions on one line) or one above the other — and the two apart (the last resort)."""
+    (wv, hv), (wa, ha) = sizes
+    h = max(hv, ha)
+    row = Block("plans", wv + PAIR_GAP + wa, h, (("plan_v", 0.0, 0.0, wv, h), ("plan_a", wv + PAIR_GAP, 0.0, wa, h)))
+    w = max(wv, wa)
+    column = Block("plans", w, hv + PAIR_GAP + ha, (("plan_v", 0.0, ha + PAIR_GAP, w, hv), ("plan_a", 0.0, 0.0, w, ha)))
+    apart = [Block("plan_v", wv, hv, (("plan_v", 0.0, 0.0, wv, hv),)),
+             Block("plan_a", wa, ha, (("plan_a", 0.0, 0.0, wa, ha),))]
+    return [[row], [column]], apart
+
+
+def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
+    """Orders and preferred corners to try for ``blocks`` (the first block is the plans)."""
+    corners = ("top-left", "bottom-left", "bottom-right")
+    plans = [b for b in blocks if b.name != "plans_all"]
+    rest = [b for b in blocks if b.name == "plans_all"]
+    out = []
+    for c_plans in corners:
+        for c_rest in corners if rest else (None,):
+            first = [(b, c_plans) for b in plans]
+            second = [(b, c_rest) for b in rest]
+            out.append(first + second)
+            if rest:
+                out.append(second + first)
+    return out
+
+
+def arrange(sheet: Sheet, plan_sizes: list[tuple[float, float]], small_of) -> Arrangement:
+    """Find where the plans of the analysed position and the small plans go in the free field
+    left by the scheme, the diagrams and the table: the small plans at the largest crank vector
+    of ``SMALL_PLAN_MM`` that fits (else dropped); among the ways that fit, the one that leaves
+    the most room around every view; then the views are moved to share out the room."""
+    region = sheet.free_region
+    placed = [v.rect for v in sheet.views.values()]
+    together, apart = plan_blocks(plan_sizes)
+    for options in (together, [apart]):
+        best = _best(region, placed, options, sheet.frame.width, small_of)
+        if best is not None:
+            return best
+    raise BuildError("sheet layout", "the plans of the analysed position do not fit in the free field "
+                                     "of the sheet; reduce the scheme's scale")
+
+
+def _best(region, placed: list[Rect], options: list[list[Block]], max_width: float, small_of
+          ) -> Arrangement | None:
+    """The arrangement with the most room round its views among ``options`` (ways to put the
+    plans), with the small plans at the largest crank vector that fits, else without them."""
+    scales_tried: set[float] = set()
+    for crank_mm in (*SMALL_PLAN_MM, None):
+        small = small_of(crank_mm) if crank_mm is not None else None
+        if small is not None:
+            if small[0].scale in scales_tried:
+                continue                  # the same round μv as a larger crank vector
+            scales_tried.add(small[0].scale)
+        grids = kp.small_grids(small, max_width) if small is not None else [(0, 0.0, 0.0)]
+        best: Arrangement | None = None
+        for cols, sw, sh in grids:
+            extra = [Block("plans_all", sw, sh, (("plans_all", 0.0, 0.0, sw, sh),))] if small is not None else []
+            for blocks in options:
+                for trial in _trials(blocks + extra):
+                    rects = try_pack(region, [Request(b.name, b.width, b.height, c) for b, c in trial],
+                                     gap=VIEW_GAP, placed=placed)
+                    if rects is None:
+                        continue
+                    free = room(region, rects, gap=VIEW_GAP, placed=placed)
+                    if best is None or free > best.room + 1e-6:
+                        rects = spread(region, rects, gap=VIEW_GAP, placed=placed)
+                        rects = _grow(region, [b for b, _ in trial], rects, placed)
+                        parts = {}
+                        for (b, _), r in zip(trial, rects):
+                            sx, sy = r.width / b.width, r.height / b.height     # grown
+                            for name, dx, dy, w, h in b.parts:
+                                parts[name] = Rect.from_size(r.x0 + dx * sx, r.y0 + dy * sy, w * sx, h * sy)
+                        best = Arrangement(parts, small, cols, free)
+        if best is not None:
+            return best
+    return None
+
+
+def _grow(region, blocks: list[Block], rects: list[Rect], placed: list[Rect]) -> list[Rect]:
+    """Give the views some of the room left round them: the small plans' cells and the plans'
+    margins (more room for the names) grow into half of it, within limits."""
+    for k, b in enumerate(blocks):
+        if b.name == "plans_all":
+            limit = (0.35 * b.width, 0.35 * b.height)
+        else:
+            limit = (GROW_PLANS_MM, 0.0)
+        rects = grow(region, rects, k, gap=VIEW_GAP, placed=placed, max_grow=limit)
+    return rects
 
 
 def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float) -> View:

@@ -170,3 +170,35 @@ def test_librecad_draws_the_sheet(name, sheets, tmp_path):
     sheet.save(path)
     result = check_sheet(path, tmp_path / "out")
     assert result.drawn, result
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_links_are_numbered_in_circles(name, sheets):
+    project, sheet = sheets[name]
+    r = kinematics.ks.LINK_NUMBER_MM[0]
+    circles = [(c.dxf.center.x, c.dxf.center.y) for c in sheet.msp.query("CIRCLE")
+               if abs(c.dxf.radius - r) < 1e-9]
+    texts = {e.dxf.text: [] for e in sheet.msp.query("TEXT")}
+    for e in sheet.msp.query("TEXT"):
+        texts[e.dxf.text].append((e.dxf.align_point.x, e.dxf.align_point.y))
+    scheme = sheet.views["scheme"].rect
+    for k in project.linkage.moving:
+        spots = [p for p in texts.get(str(k), []) if any(math.dist(p, c) < 1e-6 for c in circles)]
+        assert spots, f"link {k} has no circled number"
+        assert all(scheme.x0 < x < scheme.x1 and scheme.y0 < y < scheme.y1 for x, y in spots)
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_plans_of_the_analysed_position_stay_together(name, sheets):
+    _, sheet = sheets[name]
+    v, a = sheet.views["plan_v"].rect, sheet.views["plan_a"].rect
+    gap = kinematics.PAIR_GAP
+    side_by_side = (math.isclose(v.y0, a.y0) and math.isclose(v.y1, a.y1)
+                    and gap - 1e-6 <= a.x0 - v.x1 <= 2 * gap)
+    stacked = math.isclose(v.x0, a.x0) and math.isclose(v.x1, a.x1) and math.isclose(v.y0 - a.y1, gap)
+    assert side_by_side or stacked, (v, a)
+    # no two views closer than the packer's gap
+    rects = [w.rect for w in sheet.views.values()]
+    for i, p in enumerate(rects):
+        for q in rects[i + 1:]:
+            assert not p.expanded(kinematics.VIEW_GAP - 1e-6).overlaps(q), (p, q)
