@@ -2,15 +2,20 @@
 force scale, a force polygon at its μF (the replica's, so the sheet and the note read the same
 lengths), and Zhukovsky's lever (the turned velocity plan with the loads and their arms).
 
-All numbers come from :class:`reportgen.kinetostatics.Kinetostatics`; nothing here solves."""
+Each view is first a :class:`Panel` — its size and a function that draws it into a given rectangle —
+so that the sheet can arrange all of them before drawing any (``*_panel``); ``*_view`` pack and draw
+one at once. All numbers come from :class:`reportgen.kinetostatics.Kinetostatics`; nothing here
+solves."""
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
-from drawings.primitives import format_significant
+from drawings.layout import Rect
+from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.kinetostatics.reactions import pair_name, perp
@@ -19,14 +24,17 @@ from reportgen.kinetostatics.reactions import pair_name, perp
 ARROW_MM = 45.0
 MIN_ARROW_MM = 7.0
 #: Room around a view's drawing for labels, and the title / caption strips, mm.
-PAD_MM = 14.0
+PAD_MM = 10.0
 TITLE_MM = 10.0
 CAPTION_MM = 16.0
 HINGE_MM = 1.5
 LABEL_MM = 3.5
 POLY_LABEL_MM = 2.5
-#: The groups are drawn at the round μl that puts the whole mechanism within this many mm.
-SHEET_SCHEME_MM = 400.0
+POLY_PAD_MM = 10.0
+#: The lever's loads: the largest drawn this long (mm) at their own round μF.
+LEVER_ARROW_MM = 40.0
+LEVER_TITLE = "Рычаг Жуковского"
+LEVER_SUBTITLE = "(план скоростей, повёрнутый на 90°)"
 
 
 def plain(name: str) -> str:
@@ -35,6 +43,22 @@ def plain(name: str) -> str:
         base, point = name.split(":", 1)
         return f"F{base}({point})"
     return name.replace("′", "'")
+
+
+@dataclass
+class Panel:
+    """A view not yet placed: ``width`` × ``height`` mm, drawn by ``paint(sheet, rect)``."""
+    name: str
+    width: float
+    height: float
+    paint: Callable[[Sheet, Rect], View]
+
+    def place(self, sheet: Sheet, preferred: str) -> View:
+        """Packed near ``preferred`` and drawn (a view of its own, as :meth:`Sheet.add_view`)."""
+        from drawings.layout import Request, pack
+        rect = pack(sheet.free_region, [Request(self.name, self.width, self.height, preferred)],
+                    placed=[v.rect for v in sheet.views.values()])[0]
+        return self.paint(sheet, rect)
 
 
 @dataclass
@@ -64,68 +88,83 @@ def _title_and_scales(view: View, title: str, upper: str, lower: str) -> None:
     view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), lower, 3.5, "bottom-center")
 
 
-def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
-                   hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
-                   arrows: list[Arrow], mu_l: float, preferred: str) -> View:
+def free_body_panel(name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
+                    hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
+                    arrows: list[Arrow], mu_l: float) -> Panel:
     """A cut-out group (or the crank) at μl with its forces at a round μF."""
     mu_f = arrow_scale(arrows)
     pts = [p for s in segments for p in s] + hinges + [np.asarray(a.point) for a in arrows] + \
         [arrow_end(a, mu_f, mu_l) for a in arrows]
     arr = np.array(pts)
     lo, hi = arr.min(0), arr.max(0)
-    scale = 1.0 / mu_l / 1000.0 * 1000.0     # sheet mm per metre
+    scale = 1.0 / mu_l                        # sheet mm per metre
     w = max((hi[0] - lo[0]) * scale + 2 * PAD_MM, 110.0)
     h = (hi[1] - lo[1]) * scale + 2 * PAD_MM + TITLE_MM + CAPTION_MM
-    view = sheet.add_view(name, w, h, preferred=preferred, scale=scale)
-    cx = view.rect.x0 + (w - (hi[0] - lo[0]) * scale) / 2
-    from drawings.primitives import Transform
-    view.transform = Transform(scale, (float(lo[0]), float(lo[1])), (cx, view.rect.y0 + PAD_MM + CAPTION_MM))
-    for a, b in segments:
-        view.segment(a, b, "contour", trim_mm=(HINGE_MM, HINGE_MM))
-    for p in hinges:
-        view.hinge(p, HINGE_MM)
-    for p, ang in sliders:
-        view.slider(p, ang, 12.0, 6.0, guide_mm=None, hinge_mm=HINGE_MM)
-    for a in arrows:
-        view.arrow(a.point, arrow_end(a, mu_f, mu_l), plain(a.name), head_mm=4.0, label_height=LABEL_MM)
-    for letter, p in letters.items():
-        view.label(p, letter, 5.0, prefer_deg=135.0)
-    _title_and_scales(view, title, f"μl = {format_significant(mu_l, 4)} м/мм",
-                      f"μF = {format_significant(mu_f, 4)} Н/мм")
-    return view
+
+    def paint(sheet: Sheet, rect: Rect) -> View:
+        cx = rect.x0 + (rect.width - (hi[0] - lo[0]) * scale) / 2
+        cy = rect.y0 + CAPTION_MM + (rect.height - CAPTION_MM - TITLE_MM - (hi[1] - lo[1]) * scale) / 2
+        view = sheet.place_view(name, rect, Transform(scale, (float(lo[0]), float(lo[1])), (cx, cy)))
+        for a, b in segments:
+            view.segment(a, b, "contour", trim_mm=(HINGE_MM, HINGE_MM))
+        for p in hinges:
+            view.hinge(p, HINGE_MM)
+        for p, ang in sliders:
+            view.slider(p, ang, 12.0, 6.0, guide_mm=None, hinge_mm=HINGE_MM)
+        for a in arrows:
+            view.arrow(a.point, arrow_end(a, mu_f, mu_l), plain(a.name), head_mm=4.0, label_height=LABEL_MM)
+        for letter, p in letters.items():
+            view.label(p, letter, 5.0, prefer_deg=135.0)
+        _title_and_scales(view, title, f"μl = {format_significant(mu_l, 4)} м/мм",
+                          f"μF = {format_significant(mu_f, 4)} Н/мм")
+        return view
+    return Panel(name, w, h, paint)
 
 
-def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:
+def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
+                   hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
+                   arrows: list[Arrow], mu_l: float, preferred: str) -> View:
+    """:func:`free_body_panel` packed near ``preferred`` and drawn."""
+    return free_body_panel(name, title, segments, hinges, sliders, letters, arrows, mu_l).place(sheet, preferred)
+
+
+def polygon_panel(name: str, title: str, polygon) -> Panel:
     """A force polygon drawn head to tail at its scale (mm), the diagonals read off it dashed."""
-    from drawings.primitives import Transform
     verts = [np.asarray(v.start_mm, float) for v in polygon.vectors] + [np.asarray(polygon.vectors[-1].end_mm, float)]
     diags = [_diagonal(verts, np.asarray(v.end_mm, float)) for v in polygon.extra]
     arr = np.array(verts)
     lo, hi = arr.min(0), arr.max(0)
-    pad = 18.0
-    w = max(hi[0] - lo[0] + 2 * pad, 90.0)
-    h = hi[1] - lo[1] + 2 * pad + TITLE_MM + 8.0
-    view = sheet.add_view(name, w, h, preferred=preferred)
-    cx = view.rect.x0 + (w - (hi[0] - lo[0])) / 2
-    view.transform = Transform(1.0, (float(lo[0]), float(lo[1])), (cx, view.rect.y0 + pad + 8.0))
-    for v in polygon.vectors:
-        a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
-        if float(np.hypot(*(e - a))) < 1e-6:
-            continue
-        view.arrow(a, e, None, head_mm=min(4.0, float(np.hypot(*(e - a)))))
-    for v in polygon.vectors:
-        a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
-        if float(np.hypot(*(e - a))) < 1e-6:
-            continue
-        d = e - a
-        view.label((a + e) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=math.degrees(math.atan2(d[0], -d[1])))
-    for v, (a, b) in zip(polygon.extra, diags):
-        view.segment(a, b, "hidden")
-        view.label((a + b) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=-45.0)
-    view.title(title)
-    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), f"μF = {format_significant(polygon.scale, 4)} Н/мм",
-                 3.5, "bottom-center")
-    return view
+    w = max(hi[0] - lo[0] + 2 * POLY_PAD_MM, 90.0)
+    h = hi[1] - lo[1] + 2 * POLY_PAD_MM + TITLE_MM + 8.0
+
+    def paint(sheet: Sheet, rect: Rect) -> View:
+        cx = rect.x0 + (rect.width - (hi[0] - lo[0])) / 2
+        cy = rect.y0 + 8.0 + (rect.height - 8.0 - TITLE_MM - (hi[1] - lo[1])) / 2
+        view = sheet.place_view(name, rect, Transform(1.0, (float(lo[0]), float(lo[1])), (cx, cy)))
+        for v in polygon.vectors:
+            a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
+            if float(np.hypot(*(e - a))) < 1e-6:
+                continue
+            view.arrow(a, e, None, head_mm=min(4.0, float(np.hypot(*(e - a)))))
+        for v in polygon.vectors:
+            a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
+            if float(np.hypot(*(e - a))) < 1e-6:
+                continue
+            d = e - a
+            view.label((a + e) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=math.degrees(math.atan2(d[0], -d[1])))
+        for v, (a, b) in zip(polygon.extra, diags):
+            view.segment(a, b, "hidden")
+            view.label((a + b) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=-45.0)
+        view.title(title)
+        view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
+                     f"μF = {format_significant(polygon.scale, 4)} Н/мм", 3.5, "bottom-center")
+        return view
+    return Panel(name, w, h, paint)
+
+
+def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:
+    """:func:`polygon_panel` packed near ``preferred`` and drawn."""
+    return polygon_panel(name, title, polygon).place(sheet, preferred)
 
 
 def place_label(view: View, anchors: list[np.ndarray], text: str, height: float) -> None:
@@ -159,45 +198,56 @@ def _diagonal(verts: list[np.ndarray], d: np.ndarray) -> tuple[np.ndarray, np.nd
     return best
 
 
-def lever_view(sheet: Sheet, name: str, points: dict[str, np.ndarray], segments: list[tuple[str, str]],
-               loads: list[tuple[np.ndarray, np.ndarray, str, float]], mu_v: float, preferred: str) -> View:
+def lever_panel(name: str, points: dict[str, np.ndarray], segments: list[tuple[str, str]],
+                loads: list[tuple[np.ndarray, np.ndarray, str, float]], mu_v: float) -> Panel:
     """The turned plan (mm) with each load at its image point at a round μF, and the arm of each
     force with a non-zero arm (thin, from the pole square to the force's line, numbered h1, h2, …)."""
-    from drawings.primitives import Transform
-    mu_f = round_scale(max([float(np.hypot(*v)) for _, v, _, _ in loads] + [1e-9]), 40.0)
+    from drawings import style
+    mu_f = round_scale(max([float(np.hypot(*v)) for _, v, _, _ in loads] + [1e-9]), LEVER_ARROW_MM)
     ends = []
     for img, v, _, _ in loads:
         mag = float(np.hypot(*v))
         ends.append(img + v / (mag + 1e-300) * max(mag / mu_f, MIN_ARROW_MM))
-    arr = np.array([np.zeros(2)] + list(points.values()) + ends)
+    feet = []
+    for img, v, _, arm in loads:
+        u = v / (float(np.hypot(*v)) + 1e-300)
+        foot = img - float(img @ u) * u
+        feet.append(foot if arm != 0.0 and float(np.hypot(*foot)) > 3.0 else None)
+    arr = np.array([np.zeros(2)] + list(points.values()) + ends + [f for f in feet if f is not None])
     lo, hi = arr.min(0), arr.max(0)
-    pad = 16.0
-    title = "Рычаг Жуковского (план скоростей, повёрнутый на 90°)"
-    from drawings import style
-    w = max(hi[0] - lo[0] + 2 * pad, style.text_width(title, 5.0) + 4.0)
-    h = hi[1] - lo[1] + 2 * pad + TITLE_MM + CAPTION_MM
-    view = sheet.add_view(name, w, h, preferred=preferred)
-    x0 = view.rect.x0 + (w - (hi[0] - lo[0])) / 2
-    view.transform = Transform(1.0, (float(lo[0]), float(lo[1])), (x0, view.rect.y0 + pad + CAPTION_MM))
-    for a, b in segments:
-        pa = np.zeros(2) if a == "p" else points[a]
-        view.line(pa, points[b], "vectors")
-    for (img, v, label, arm), end in zip(loads, ends):
-        if arm != 0.0:
-            u = v / (float(np.hypot(*v)) + 1e-300)
-            foot = img - float(img @ u) * u
-            if float(np.hypot(*foot)) > 3.0:
+    pad = 12.0
+    w = max(hi[0] - lo[0] + 2 * pad, style.text_width(LEVER_TITLE, 5.0) + 4.0,
+            style.text_width(LEVER_SUBTITLE, 3.5) + 4.0)
+    h = hi[1] - lo[1] + 2 * pad + TITLE_MM + 6.0 + CAPTION_MM
+
+    def paint(sheet: Sheet, rect: Rect) -> View:
+        x0 = rect.x0 + (rect.width - (hi[0] - lo[0])) / 2
+        y0 = rect.y0 + CAPTION_MM + (rect.height - CAPTION_MM - TITLE_MM - 6.0 - (hi[1] - lo[1])) / 2
+        view = sheet.place_view(name, rect, Transform(1.0, (float(lo[0]), float(lo[1])), (x0, y0)))
+        for a, b in segments:
+            pa = np.zeros(2) if a == "p" else points[a]
+            view.line(pa, points[b], "vectors")
+        for foot in feet:
+            if foot is not None:
                 view.line((0.0, 0.0), foot, "construction")
-    view.label((0.0, 0.0), "p", 5.0, prefer_deg=-135.0)
-    for k, p in points.items():
-        view.label(p, k, 5.0, prefer_deg=45.0)
-    for (img, v, label, arm), end in zip(loads, ends):
-        view.arrow(img, end, None, head_mm=3.5)
-    for (img, v, label, arm), end in zip(loads, ends):
-        place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
-    _title_and_scales(view, title, f"μv = {format_significant(mu_v, 4)} (м/с)/мм",
-                      f"μF = {format_significant(mu_f, 4)} Н/мм")
-    return view
+        view.label((0.0, 0.0), "p", 5.0, prefer_deg=-135.0)
+        for k, p in points.items():
+            view.label(p, k, 5.0, prefer_deg=45.0)
+        for (img, v, label, arm), end in zip(loads, ends):
+            view.arrow(img, end, None, head_mm=3.5)
+        for (img, v, label, arm), end in zip(loads, ends):
+            place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
+        _title_and_scales(view, LEVER_TITLE, f"μv = {format_significant(mu_v, 4)} (м/с)/мм",
+                          f"μF = {format_significant(mu_f, 4)} Н/мм")
+        view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), LEVER_SUBTITLE, 3.5, "bottom-center")
+        return view
+    return Panel(name, w, h, paint)
+
+
+def lever_view(sheet: Sheet, name: str, points: dict[str, np.ndarray], segments: list[tuple[str, str]],
+               loads: list[tuple[np.ndarray, np.ndarray, str, float]], mu_v: float, preferred: str) -> View:
+    """:func:`lever_panel` packed near ``preferred`` and drawn."""
+    return lever_panel(name, points, segments, loads, mu_v).place(sheet, preferred)
 
 
 def group_geometry(ks, linkage, links: tuple[int, ...], key: str | None):

@@ -22,7 +22,98 @@ def code(number: int) -> str:
     return f"ТММ.КП.00.00.{number:03d}"
 
 
+#: Arrangements tried in turn, each a list of (kind, corner) in packing order: ``lever``, ``bodies``
+#: (the groups and the crank cut out), ``polygons``, or ``rows`` (each body followed by its polygon).
+ARRANGEMENTS: tuple[tuple[tuple[str, str], ...], ...] = (
+    (("lever", "top-right"), ("bodies", "top-left"), ("polygons", "top-left")),
+    (("lever", "top-right"), ("rows", "top-left")),
+    (("lever", "top-right"), ("bodies", "top-left"), ("polygons", "bottom-left")),
+    (("lever", "top-right"), ("bodies", "top-left"), ("polygons", "bottom-right")),
+    (("bodies", "top-left"), ("lever", "top-right"), ("polygons", "bottom-left")),
+    (("lever", "bottom-right"), ("bodies", "top-left"), ("polygons", "top-left")),
+    (("polygons", "bottom-left"), ("lever", "top-right"), ("bodies", "top-left")),
+)
+#: If the views do not fit at the replica's μl, the groups are drawn at the scheme's extent within
+#: these many mm (a smaller round scale, written under them) before giving up.
+FALLBACK_SCHEME_MM = (300.0, 200.0, 150.0)
+
+
+def _try_pack(region, requests, placed) -> list | None:
+    """:func:`drawings.layout.pack`, or None when a view does not fit."""
+    from drawings.layout import pack
+    from reportgen.errors import BuildError
+    try:
+        return pack(region, requests, placed=placed)
+    except BuildError:
+        return None
+
+
+def _room(bounds, obstacles: list, r, axis: int) -> tuple[float, float]:
+    """Free room (mm) before and after ``r`` along ``axis`` (0: x, 1: y) up to ``obstacles`` and
+    ``bounds``."""
+    lo, hi = (r.x0, r.x1) if axis == 0 else (r.y0, r.y1)
+    a0, a1 = (r.y0, r.y1) if axis == 0 else (r.x0, r.x1)
+    b0, b1 = (bounds.x0, bounds.x1) if axis == 0 else (bounds.y0, bounds.y1)
+    before, after = lo - b0, b1 - hi
+    for o in obstacles:
+        o0, o1, c0, c1 = (o.x0, o.x1, o.y0, o.y1) if axis == 0 else (o.y0, o.y1, o.x0, o.x1)
+        if not (c0 < a1 and a0 < c1):
+            continue
+        if o1 <= lo + 1e-6:
+            before = min(before, lo - o1)
+        elif o0 >= hi - 1e-6:
+            after = min(after, o0 - hi)
+    return max(before, 0.0), max(after, 0.0)
+
+
+def _spread(sheet: Sheet, rects: list, placed: list, gap: float = 10.0, rounds: int = 12) -> list:
+    """Each rectangle in turn moved to the middle of the room it can slide in along x, then y (sizes
+    kept, ``gap`` from the others, inside the free field): the free room shared out, a few rounds."""
+    from drawings.layout import Rect
+    m = sheet.margin
+    bounds = sheet.frame.expanded(-m)
+    walls = [sheet.title_rect.expanded(m), sheet.extra_rect.expanded(m)] + [r.expanded(gap) for r in placed]
+    out = list(rects)
+    for _ in range(rounds):
+        moved = 0.0
+        for i, r in enumerate(out):
+            obstacles = walls + [o.expanded(gap) for j, o in enumerate(out) if j != i]
+            for axis in (0, 1):
+                before, after = _room(bounds, obstacles, r, axis)
+                d = (after - before) / 2.0
+                r = Rect(r.x0 + d, r.y0, r.x1 + d, r.y1) if axis == 0 else Rect(r.x0, r.y0 + d, r.x1, r.y1 + d)
+                moved = max(moved, abs(d))
+            out[i] = r
+        if moved < 0.05:
+            break
+    return out
+
+
+def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
+    """Rectangles for the panels (bodies, polygons, lever) by the first of :data:`ARRANGEMENTS` in
+    which they all fit, spread over the free field; None if none fits."""
+    from drawings.layout import Request
+    region = sheet.free_region
+    for arrangement in ARRANGEMENTS:
+        order = []
+        for kind, corner in arrangement:
+            if kind == "lever":
+                order.append((lever, corner))
+            elif kind == "bodies":
+                order += [(b, corner) for b in bodies]
+            elif kind == "polygons":
+                order += [(q, corner) for q in polygons]
+            else:
+                order += [(x, corner) for pair in zip(bodies, polygons) for x in pair]
+        rects = _try_pack(region, [Request(pn.name, pn.width, pn.height, c) for pn, c in order], placed)
+        if rects is not None:
+            rects = _spread(sheet, rects, placed)
+            return [(pn, r) for (pn, _), r in zip(order, rects)]
+    return None
+
+
 def draw(project: Project, number: int, count: int) -> Sheet:
+    from drawings import style
     from drawings.scenes import kinetostatics_views as kv
     from reportgen.kinetostatics.results import kinetostatics_of
     from reportgen.kinetostatics.zhukovsky import turn_cw
@@ -33,24 +124,25 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
     by_key = {gr.key: gr for gr in st.groups}
     where = f"положение {ks.position}, " if ks.position is not None else ""
-    pts = np.array([np.asarray(m.pos)[0] for m in ks.reactions.kin.points.values()])
-    mu_l = round_scale(float(np.hypot(*np.ptp(pts, axis=0))), kv.SHEET_SCHEME_MM)
     note = f"Положение силового расчёта: {where}φ1 = {ks.phi_deg:.2f}°".replace(".", ",")
-    from drawings import style
     pv = sheet.add_view("position", style.text_width(note, 5.0) + 4.0, 9.0, preferred="top-left")
     pv.text_mm((pv.rect.x0 + 2.0, pv.rect.y0 + 2.0), note, 5.0)
-    for gg in g.groups:
-        grp = by_key[gg.key]
-        segs, hinges, sliders, letters = kv.group_geometry(ks, lk, grp.links, gg.key)
-        kv.free_body_view(sheet, f"group {gg.key}", f"Группа {grp.label}", segs, hinges, sliders, letters,
-                          kv.group_arrows(ks, grp.links, gg.key, gg.splits), mu_l, "top-left")
-    segs, hinges, sliders, letters = kv.group_geometry(ks, lk, (ks.reactions.crank,), None)
-    kv.free_body_view(sheet, "crank", "Ведущее звено", segs, hinges, sliders, letters, kv.crank_arrows(ks),
-                      mu_l, "top-left")
-    for gg in g.groups:
-        kv.polygon_view(sheet, f"polygon {gg.key}", f"План сил группы {by_key[gg.key].label}", gg.polygon,
-                        "bottom-left")
-    kv.polygon_view(sheet, "polygon crank", "План сил ведущего звена", g.crank.polygon, "bottom-left")
+
+    def bodies_at(mu_l: float) -> list:
+        out = []
+        for gg in g.groups:
+            segs, hinges, sliders, letters = kv.group_geometry(ks, lk, by_key[gg.key].links, gg.key)
+            out.append(kv.free_body_panel(f"group {gg.key}", f"Группа {by_key[gg.key].label}", segs, hinges,
+                                          sliders, letters, kv.group_arrows(ks, by_key[gg.key].links, gg.key,
+                                                                            gg.splits), mu_l))
+        segs, hinges, sliders, letters = kv.group_geometry(ks, lk, (ks.reactions.crank,), None)
+        out.append(kv.free_body_panel("crank", "Ведущее звено", segs, hinges, sliders, letters,
+                                      kv.crank_arrows(ks), mu_l))
+        return out
+
+    polygons = [kv.polygon_panel(f"polygon {gg.key}", f"План сил группы {by_key[gg.key].label}", gg.polygon)
+                for gg in g.groups]
+    polygons.append(kv.polygon_panel("polygon crank", "План сил ведущего звена", g.crank.polygon))
     kin = ks.reactions.kin
     mu_v = g.lever.scale
     points = {}
@@ -64,5 +156,23 @@ def draw(project: Project, number: int, count: int) -> Sheet:
         segments += [("p", n) for n in names] + list(zip(names, names[1:]))
     loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured)
              for t, f in zip(g.lever.terms, ks.lever.forces) if t.magnitude > 0.0]
-    kv.lever_view(sheet, "lever", points, segments, loads, mu_v, "top-right")
+    lever = kv.lever_panel("lever", points, segments, loads, mu_v)
+
+    # the groups at the replica's μl (the note's); a smaller round scale only if nothing else fits
+    pts = np.array([np.asarray(m.pos)[0] for m in kin.points.values()])
+    extent = float(np.hypot(*np.ptp(pts, axis=0)))
+    scales = [g.length_scale] + [mu for mu in (round_scale(extent, mm) for mm in FALLBACK_SCHEME_MM)
+                                 if mu > g.length_scale]
+    for mu_l in scales:
+        bodies = bodies_at(mu_l)
+        layout = arrange(sheet, bodies, polygons, lever, [pv.rect])
+        if layout is not None:
+            break
+    else:   # let the packer name the view that does not fit
+        for pn, corner in [(lever, "top-right")] + [(b, "top-left") for b in bodies] + \
+                [(q, "bottom-left") for q in polygons]:
+            pn.place(sheet, corner)
+        return sheet
+    for pn, rect in layout:
+        pn.paint(sheet, rect)
     return sheet

@@ -4,8 +4,13 @@ value from the exact one.
 
 - Scales: a round scale μ = m·10^k with m ∈ {1, 2, 2.5, 5} (:data:`ROUND_MANTISSAS`), the smallest
   one that draws the largest vector within ``max_mm`` — so the largest vector lies in
-  (max_mm/2, max_mm] mm. Forces μF (N/mm), ``max_mm`` = 200; the scheme μL (m/mm), the mechanism's
-  extent within 300 mm; the velocity plan of the lever μv ((m/s)/mm), 200 mm.
+  (max_mm/2, max_mm] mm. Forces μF (N/mm): the largest vector within 200 mm, or — where that draws
+  the polygon larger — the whole polygon within 400 × 180 mm (a flat polygon of two large, nearly
+  opposite vectors is drawn long enough for its short sides to be read; 350 × 180 mm when the
+  mechanism has two or more groups); the scheme μL (m/mm), the
+  mechanism's extent (diagonal) within 450 mm, the scale of sheet 2's group views; the velocity plan
+  of the lever μv ((m/s)/mm): the largest image within 200 mm, or the whole plan within 250 × 300 mm
+  where that is larger. These are the scales of sheet 2, so the note and the sheet read the same mm.
 - Measurements: a length read off a plan is rounded to ``reading_mm`` (0.1 mm), an arm to
   ``arm_reading_mm`` (0.01 mm), as a student measures them.
 - Inertia: Fи and Mи of a link replaced by one force Fи′ = Fи shifted by h = Mи/Fи (seed 000, 2.2).
@@ -30,13 +35,19 @@ import numpy as np
 from ..linkage import Linkage
 from ..structure import Group, Structure
 from .reactions import Reactions, _cross, _Known, _ro, pair_name, perp, solve_group
-from .zhukovsky import Lever
+from .zhukovsky import Lever, turn_cw
 
 #: Mantissas of a round scale.
 ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0)
-#: Longest vector of a force polygon or of the lever's plan, mm; extent of the scheme, mm.
+#: Longest vector of a force polygon or of the lever's plan, mm; extent (diagonal) of the scheme, mm.
 POLYGON_MM = 200.0
-SCHEME_MM = 300.0
+SCHEME_MM = 450.0
+#: A polygon (the lever's plan) is drawn larger than POLYGON_MM gives as long as it fits this box,
+#: width × height, mm (:func:`polygon_scale`); a narrower box when two or more groups (three
+#: polygons and three cut-outs) share sheet 2.
+POLYGON_BOX_MM = (400.0, 180.0)
+POLYGON_BOX_MANY_MM = (350.0, 180.0)
+LEVER_BOX_MM = (250.0, 400.0)
 #: Rounding of lengths read off a plan and of arms measured on a scheme, mm.
 READING_MM = 0.1
 ARM_READING_MM = 0.01
@@ -56,6 +67,24 @@ def round_scale(largest: float, max_mm: float) -> float:
             if largest / mu <= max_mm * (1 + 1e-12):
                 return float(f"{mu:.12g}")
         k += 1
+
+
+def box_scale(points: np.ndarray, box: tuple[float, float]) -> float:
+    """The smallest round μ that draws ``points`` (n × 2) within ``box`` (width, height, mm); inf for
+    a single point."""
+    ext = np.ptp(np.asarray(points, float).reshape(-1, 2), axis=0)
+    mus = [round_scale(float(x), m) for x, m in zip(ext, box) if x > 0]
+    return max(mus) if mus else math.inf
+
+
+def polygon_scale(vectors, largest: float = 0.0, box: tuple[float, float] = POLYGON_BOX_MM) -> float:
+    """μF of a force polygon (``vectors`` head to tail, N): the smallest round scale that draws its
+    largest vector (or ``largest``, e.g. a diagonal) within POLYGON_MM, or the larger drawing that
+    puts the whole polygon within ``box``."""
+    vs = [np.asarray(v, float) for v in vectors]
+    big = max([float(np.hypot(*v)) for v in vs] + [largest])
+    verts = np.cumsum([np.zeros(2)] + vs, axis=0)
+    return min(round_scale(big, POLYGON_MM), box_scale(verts, box))
 
 
 def measure(x: float, step: float) -> float:
@@ -314,6 +343,7 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
     extent = float(np.hypot(*(pts.max(0) - pts.min(0)))) if len(pts) else 1.0
     mu_l = length_scale or round_scale(extent, SCHEME_MM)
     repl = inertia_replacements(linkage, reactions, mu_l, arm_reading_mm, i)
+    box = POLYGON_BOX_MM if len(structure.groups) <= 2 else POLYGON_BOX_MANY_MM
     read: dict[str, np.ndarray] = {}          # canonical reaction name → read vector (lo on hi)
     read_pt: dict[str, np.ndarray] = {}
 
@@ -347,10 +377,10 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
         own = {p.name for p in reactions.pairs if p.group == g.key}
         if g.group_class == 2 and g.kind in ("RRR", "RRP"):
             groups_out.append(_dyad(linkage, g, reactions, i, q, items_on, own, read, read_pt, mu_l,
-                                    reading_mm, arm_reading_mm))
+                                    reading_mm, arm_reading_mm, box))
         else:
-            groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm))
-    crank = _crank(linkage, reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm)
+            groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm, box))
+    crank = _crank(linkage, reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
     lev = _lever(lever, reactions, i, arm_reading_mm, linkage)
     disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
     return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
@@ -358,7 +388,7 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
 
 
 def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set[str], read, read_pt, mu_l: float,
-          step: float, arm_step: float) -> GroupGraphic:
+          step: float, arm_step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> GroupGraphic:
     a, b = g.links
     inner = next(p for p in g.pairs if not p.external)
     Q = next(r for r in reactions.pairs if r.group == g.key and r.joint == inner.point and r.kind == "R"
@@ -385,9 +415,13 @@ def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set
                                     l_meas, tau, float(R @ e), tuple(terms), tau_m, _deviation(tau_m, tau))
             splits.append(split)
         head.append((k, ext, its, split))
-    mu_f = round_scale(max([float(np.hypot(*it.vector)) for _, _, its, _ in head for it in its] +
-                           [float(np.hypot(*x.on(k)[i])) for k, x, _, _ in head] + [float(np.hypot(*Q.vector[i]))]),
-                       POLYGON_MM)
+    seq = []                                    # the exact sides in the order drawn
+    for n_k, (k, ext, its, split) in enumerate(head):
+        side = [ext.on(k)[i]] if split is None else [split.normal * split.along, split.tau * split.tangent]
+        body = [it.vector for it in its]
+        seq += side + body if n_k == 0 else body + side[::-1]
+    mu_f = polygon_scale(seq, max([float(np.hypot(*x.on(k)[i])) for k, x, _, _ in head] +
+                                  [float(np.hypot(*Q.vector[i]))]), box)
     # the polygon with the read vectors: knowns rounded, the two unknown directions closing it
     known_sum = np.zeros(2)
     dirs = []
@@ -439,7 +473,7 @@ def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set
 
 
 def _generic(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set[str], read, read_pt,
-             step: float) -> GroupGraphic:
+             step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> GroupGraphic:
     """Other groups: their exact equations fed with the read forces, each reaction read off."""
     kn = _Known({}, {})
     entries = []
@@ -458,9 +492,10 @@ def _generic(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: 
                 r_m = next(m for m in reactions.loads.moments if m.link == k and m.kind == "inertia")
                 kn.add_couple(k, -np.asarray(r_m.value)[i:i + 1])
     sol = solve_group(linkage, g, q, kn, reactions.length_scale, reactions.kin.phi[i:i + 1])
-    mags = [float(np.hypot(*it.vector)) for it in all_items] + \
-        [float(np.hypot(*r.vector[i])) for r in reactions.pairs if r.group == g.key]
-    mu_f = round_scale(max(mags), POLYGON_MM)
+    exacts = [next(r for r in reactions.pairs if r.group == g.key and r.joint == p.point and r.kind == p.kind
+                   and {r.lo, r.hi} == set(p.bodies)) for p, *_ in sol]
+    seq = [it.vector for it in all_items] + [ex.on(p.bodies[1])[i] for (p, *_), ex in zip(sol, exacts) if p.external]
+    mu_f = polygon_scale(seq, max(float(np.hypot(*r.vector[i])) for r in reactions.pairs if r.group == g.key), box)
     for it in all_items:
         entries.append((it.name, it.vector, True, float(np.hypot(*_read_vector(it.vector_r, mu_f, step)))))
     extra = []
@@ -496,7 +531,7 @@ def _moment_terms(its, couples: float, centre: np.ndarray, mu_l: float,
 
 
 def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
-           arm_step: float) -> CrankGraphic:
+           arm_step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> CrankGraphic:
     d = reactions.crank
     fp = next(r for r in reactions.pairs if r.group == str(d))
     its, couples = items_on(d, {fp.name})
@@ -511,8 +546,7 @@ def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l:
     t = perp((A - O) / l)
     Fb = reactions.balancing_force[i]
     R0 = fp.on(d)[i]
-    mu_f = round_scale(max([float(np.hypot(*it.vector)) for it in its] + [abs(F_exact), float(np.hypot(*R0))]),
-                       POLYGON_MM)
+    mu_f = polygon_scale([Fb] + [it.vector for it in its] + [R0], box=box)
     Fb_read = _read_vector(F_meas * t, mu_f, step)
     close = -(Fb_read + sum((_read_vector(it.vector_r, mu_f, step) for it in its), np.zeros(2)))
     R0_read = _read_vector(close, mu_f, step)
@@ -525,9 +559,18 @@ def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l:
                         _polygon(str(d), entries, mu_f, step))
 
 
+def _arm_foot(image: np.ndarray, vector: np.ndarray) -> np.ndarray:
+    """The foot of the perpendicular from the lever's pole to a force's line (the end of its arm)."""
+    u = _unit(np.asarray(vector, float))
+    return image - float(image @ u) * u
+
+
 def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float, linkage: Linkage) -> LeverGraphic:
     imgs = [float(np.hypot(*f.image[i])) for f in lever.forces] + [float(np.hypot(*lever.crank_pin_image[i]))]
-    mu_v = round_scale(max(imgs), POLYGON_MM)
+    plan = [np.zeros(2), lever.crank_pin_image[i]] + [f.image[i] for f in lever.forces] + \
+        [turn_cw(np.asarray(m.vel[i])) for m in reactions.kin.points.values()] + \
+        [_arm_foot(f.image[i], f.vector[i]) for f in lever.forces]
+    mu_v = min(round_scale(max(imgs), POLYGON_MM), box_scale(np.array(plan), LEVER_BOX_MM))
     terms, total = [], 0.0
     for f in lever.forces:
         mag = float(np.hypot(*f.vector[i]))
