@@ -138,11 +138,36 @@ _STRING_CACHE: dict[str, dict[str, Any]] = {}
 
 
 def _load_strings(language: str) -> dict[str, Any]:
+    """The catalogue of a language: ``strings/<lang>.toml`` merged with every ``strings/<lang>/*.toml``.
+
+    One file per area (``strings/ru/crane.toml``, ``strings/ru/control.toml`` …) keeps the catalogues
+    of different documents apart; a key defined in two files is an error, never a silent override.
+    """
     if language not in _STRING_CACHE:
-        path = resources.files(__package__).joinpath("strings", f"{language}.toml")
-        _STRING_CACHE[language] = tomllib.loads(path.read_text(encoding="utf-8")) \
-            if path.is_file() else {}
+        root = resources.files(__package__).joinpath("strings")
+        files = [root.joinpath(f"{language}.toml")]
+        area_dir = root.joinpath(language)
+        if area_dir.is_dir():
+            files += sorted((f for f in area_dir.iterdir() if f.name.endswith(".toml")),
+                            key=lambda f: f.name)
+        merged: dict[str, Any] = {}
+        for path in files:
+            if path.is_file():
+                _merge_catalogue(merged, tomllib.loads(path.read_text(encoding="utf-8")),
+                                 f"{language}/{path.name}", "")
+        _STRING_CACHE[language] = merged
     return _STRING_CACHE[language]
+
+
+def _merge_catalogue(into: dict[str, Any], data: Mapping[str, Any], source: str, prefix: str) -> None:
+    for key, value in data.items():
+        dotted = f"{prefix}{key}"
+        if key in into:
+            if isinstance(into[key], dict) and isinstance(value, dict):
+                _merge_catalogue(into[key], value, source, dotted + ".")
+                continue
+            raise ValueError(f"strings catalogue: key {dotted!r} defined twice (again in {source})")
+        into[key] = value
 
 
 # --------------------------------------------------------------------------- symbols («где»)
