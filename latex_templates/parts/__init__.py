@@ -23,3 +23,9 @@ class PartContent:
     context: Mapping[str, Any]
     figures: Mapping[str, Any] = field(default_factory=dict)
     conclusions: tuple[str, ...] = ()      # sentences (plain text, escaped) for the conclusions
+
+
+def strings_of(project):
+    """The strings catalogue of the task's language (``[document] language``, default ru)."""
+    from ..render import Strings
+    return Strings(project.task.document.language or "ru")

@@ -48,7 +48,7 @@ def _omega_record(kin, i: int, k: int, seg: Var, lv: Var, mu_v) -> tuple[dict, V
     omega = float(kin.links[k].omega[i])
     wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
                   meaning=f"угловая скорость звена {k}")
-    row = {"link": k, "rec": wrec, "exact": omega, "sense": "против" if kin.links[k].omega[i] > 0 else "по"}
+    row = {"link": k, "rec": wrec, "exact": omega, "sense": "ccw" if kin.links[k].omega[i] > 0 else "cw"}
     return row, Var("w", rf"\omega_{{{k}}}", abs(omega), "рад/с")
 
 
@@ -63,7 +63,7 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
                   mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
                   meaning=f"угловое ускорение звена {k}")
     eps = {"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
-           "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"}
+           "sense": "ccw" if kin.links[k].epsilon[i] > 0 else "cw"}
     return {"rec": an, "mm": an.value / aplan.scale}, eps
 
 

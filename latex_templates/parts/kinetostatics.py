@@ -248,7 +248,7 @@ def content(project) -> PartContent:
     cycle = _cycle(project, ks, figures)
     warnings = [{"group": gk, "label": by_key[gk].label, "mu": mu} for gk, mu in ks.transmission_deg.items()
                 if mu < WARN_TRANSMISSION_DEG]
-    ctx = {"pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
+    ctx = {"has_dynamics": project.task.dynamics is not None, "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
            "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky, "disc": ks.discrepancy_percent,
@@ -310,7 +310,7 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
             ent["h_mm"] = record(f"h_{{\\text{{и}}{k}}}^{{\\text{{сх}}}}", "h / mu_l", "мм", mu_l, h=h,
                                  meaning=f"плечо переноса на схеме")
             ent["repl"] = {"measured": x.h_mm_measured, "swing": x.swing_point is not None,
-                           "sense": "против" if x.moment > 0 else "по"}
+                           "sense": "ccw" if x.moment > 0 else "cw"}
         links.append(ent)
         rows.append([k, b.mass, b.inertia, ent["G"].value if ent["G"] else 0.0, a_s,
                      ent["F"].value if ent["F"] else 0.0, eps, ent["M"].value if ent["M"] else 0.0,
@@ -538,7 +538,7 @@ def _lever(project, ks, counter, figures) -> dict:
 def _comparison(ks, crank, lever) -> dict:
     Fg = Var("F_g", "F_{\\text{ур}}", crank["F"].value, "Н", "уравновешивающая сила по планам сил")
     Fz = Var("F_z", "F_{\\text{ур}}^{\\text{Ж}}", lever["F"].value, "Н", "уравновешивающая сила по рычагу Жуковского")
-    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "\\%", Fg, Fz, meaning="расхождение методов")
+    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "%", Fg, Fz, meaning="расхождение методов")
     _check(delta, ks.graphical.discrepancy_percent, "the graphical discrepancy")
     return {"delta": delta}
 
