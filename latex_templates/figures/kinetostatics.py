@@ -7,6 +7,8 @@ computes a force. Arrow lengths on the group diagrams are schematic (a square-ro
 10 N weight stays visible beside a 10 kN resistance); the polygons are drawn at their scale μF."""
 from __future__ import annotations
 
+from ..parts import active, decimal_mark, tr
+
 import math
 import re
 
@@ -24,7 +26,8 @@ KNOWN = "tab:blue"
 
 def mathtext(name: str) -> str:
     """A solver's force name as matplotlib mathtext: ``Fи4′`` → ``$F'_{\\mathrm{и}4}$``."""
-    return "$" + symbol(name, text="\\mathrm") + "$"
+    return "$" + active().localize_latex(symbol(name, text="\\mathrm").replace("\\mathrm{", "\\text{")).replace(
+        "\\text{", "\\mathrm{") + "$"
 
 
 def symbol(name: str, text: str = "\\text") -> str:
@@ -204,7 +207,7 @@ def polygon_figure(polygon, w_cm: float = 13.0):
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
     ax.axis("off")
-    ax.text(0.01, 0.01, f"$\\mu_F$ = {polygon.scale:g} Н/мм".replace(".", ","), transform=ax.transAxes, fontsize=9)
+    ax.text(0.01, 0.01, tr("figures.kst07", v1=format(polygon.scale, "g").replace(".", decimal_mark())), transform=ax.transAxes, fontsize=9)
     return fig
 
 
@@ -275,14 +278,14 @@ def cycle_figure(phi_deg: np.ndarray, groups: np.ndarray, zhuk_phi: np.ndarray, 
     markers, the analysed position ringed."""
     fig = new_figure(w_cm, 8.0)
     ax = fig.add_axes([0.12, 0.14, 0.85, 0.8])
-    ax.plot(phi_deg, groups, "k-", lw=1.2, label="метод планов сил (группы Ассура)")
-    ax.plot(zhuk_phi, zhuk, "o", ms=5, mfc="none", mec="tab:red", label="рычаг Жуковского")
-    ax.plot([mark_deg], [mark_value], "s", ms=7, mfc="none", mec="tab:blue", label="положение силового расчёта")
+    ax.plot(phi_deg, groups, "k-", lw=1.2, label=tr("figures.kst04"))
+    ax.plot(zhuk_phi, zhuk, "o", ms=5, mfc="none", mec="tab:red", label=tr("figures.kst05"))
+    ax.plot([mark_deg], [mark_value], "s", ms=7, mfc="none", mec="tab:blue", label=tr("figures.kst06"))
     ax.axhline(0.0, color="0.4", lw=0.6)
     ax.set_xlim(0, 360)
     ax.set_xticks(range(0, 361, 45))
     ax.set_xlabel("$\\varphi_1$, °")
-    ax.set_ylabel("$M_{\\mathrm{ур}}$, Н·м")
+    ax.set_ylabel(tr("figures.kst02"))
     comma_axes(ax)
     ax.legend(fontsize=8, loc="best")
     return fig
