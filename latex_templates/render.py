@@ -27,6 +27,7 @@ import jinja2
 from markupsafe import Markup
 
 from reportgen.calc import CalcRecord, Var, unit_latex
+from reportgen.errors import BuildError
 
 from . import numbers
 
@@ -69,17 +70,18 @@ def _finalize(value: Any) -> Any:
 
 
 # --------------------------------------------------------------------------- strings catalogue
-class MissingString(KeyError):
-    """A key the strings catalogue of a language does not have (a build error: no fallback)."""
+class MissingString(BuildError, KeyError):
+    """A key the strings catalogue of a language does not have: the build stops and names the key
+    and the language (no fallback to another language)."""
 
     def __init__(self, key: str, language: str) -> None:
-        super().__init__(key)
         self.key = key
         self.language = language
+        BuildError.__init__(self, "strings", f"no string {key!r} in the {language!r} catalogue "
+                            f"(latex_templates/strings/{language}.toml or strings/{language}/*.toml)")
 
     def __str__(self) -> str:
-        return (f"no string {self.key!r} in the {self.language!r} catalogue "
-                f"(latex_templates/strings/{self.language}.toml or strings/{self.language}/*.toml)")
+        return BuildError.__str__(self)
 
 
 _SNIPPET_MARKS = ("\\VAR{", "\\BLOCK{")
@@ -303,8 +305,11 @@ def _load_strings(language: str) -> dict[str, Any]:
         merged: dict[str, Any] = {}
         for path in files:
             if path.is_file():
-                _merge_catalogue(merged, tomllib.loads(path.read_text(encoding="utf-8")),
-                                 f"{language}/{path.name}", "")
+                try:
+                    data = tomllib.loads(path.read_text(encoding="utf-8"))
+                except tomllib.TOMLDecodeError as exc:
+                    raise ValueError(f"strings catalogue {language}/{path.name}: {exc}") from None
+                _merge_catalogue(merged, data, f"{language}/{path.name}", "")
         _STRING_CACHE[language] = merged
     return _STRING_CACHE[language]
 
