@@ -192,7 +192,14 @@ class Strings:
 
         def repl(m: re.Match) -> str:
             pre, body = m.group("pre") or "", m.group("body")
-            return pre + "\\text{" + self.math_word(body, "subscripts" if pre else "units") + "}"
+            if pre:
+                word = self.math_word(body, "subscripts")
+            else:
+                try:
+                    word = self.math_word(body, "units")
+                except MissingString:      # a subscript after other letters: F^{B}_{M\text{и}2}
+                    word = self.math_word(body, "subscripts")
+            return pre + "\\text{" + word + "}"
 
         source = _TEXT_IN_MATH.sub(repl, source)
         fmt = self.raw("format")

@@ -5,6 +5,8 @@ and the table of results. Every length is the graphical replica's (``project.dyn
 so KL on the sheet is the KL of results.json."""
 from __future__ import annotations
 
+from ..words import designation, tr
+
 from drawings.layout import Rect
 from drawings.scenes import dynamics_diagrams as dd
 from drawings.scenes import dynamics_flywheel as df
@@ -12,7 +14,15 @@ from drawings.sheet import Sheet
 from reportgen.project import Project
 
 NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics")
-TITLE = "Динамический анализ машинного агрегата"
+def sheet_title() -> str:
+    """The sheet's title in the task's language (title block, graph 1)."""
+    return tr("sheets.sk301")
+
+
+def __getattr__(name: str):
+    if name == "TITLE":            # the title in the language being drawn
+        return sheet_title()
+    raise AttributeError(name)
 
 #: Clearance from the frame and from graph 26 / the title block, mm.
 CLEAR_MM = 8.0
@@ -27,7 +37,7 @@ def available(project: Project) -> bool:
 
 
 def code(number: int) -> str:
-    return f"ТММ.КП.00.00.{number:03d}"
+    return designation(number)
 
 
 def graph_labels(project: Project) -> list[str]:
@@ -43,7 +53,7 @@ def graph_labels(project: Project) -> list[str]:
 def draw(project: Project, number: int, count: int) -> Sheet:
     res = project.dynamics
     g = res.graphical
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=code(number), number=number, count=count)
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM

@@ -58,7 +58,8 @@ class Progress:
 
 
 def _designation(task) -> str:
-    return "ТММ.КП.00.00.000 ПЗ"
+    from latex_templates.render import Strings
+    return str(Strings(task.document.language or "ru").get("designation.note"))
 
 
 def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, sheets: bool = True,
@@ -124,10 +125,12 @@ def _sheets(project: Project, tmp: Path, progress: Progress) -> None:
     todo = available_sheets(project)
     if not todo:
         return
+    from drawings.words import language
+
     folder = tmp / "sheets"
     folder.mkdir()
     for i, (stem, mod) in enumerate(todo, start=1):
-        with progress.stage(f"sheet {i}: {stem}"):
+        with progress.stage(f"sheet {i}: {stem}"), language(project.task.document.language):
             sheet = mod.draw(project, i, len(todo))
             dxf = folder / f"{stem}.dxf"
             sheet.save(dxf)
