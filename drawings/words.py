@@ -22,10 +22,13 @@ def _strings():
 @contextmanager
 def language(code: str | None) -> Iterator[None]:
     """Draw the sheets inside this block in ``code`` (default Russian)."""
+    from latex_templates.parts import active_strings
     from latex_templates.render import Strings
-    _STACK.append(Strings(code or "ru"))
+    strings = Strings(code or "ru")
+    _STACK.append(strings)
     try:
-        yield
+        with active_strings(strings):       # the note's helpers that sheets reuse speak it too
+            yield
     finally:
         _STACK.pop()
 

@@ -44,11 +44,12 @@ def lever_subtitle() -> str:
 
 
 def plain(name: str) -> str:
-    """A solver's name as sheet text (the ГОСТ font has τ and Cyrillic): ``Fи4′`` → ``Fи4'``."""
+    """A solver's name as sheet text in the sheet's language (the ГОСТ font has τ and Cyrillic):
+    ``Fи4′`` → ``Fи4'`` (``Fin4'`` in English)."""
     if ":" in name:
         base, point = name.split(":", 1)
-        return f"F{base}({point})"
-    return name.replace("′", "'")
+        return symbol(f"F{base}({point})")
+    return symbol(name.replace("′", "'"))
 
 
 @dataclass
