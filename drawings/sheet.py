@@ -325,9 +325,9 @@ class Sheet:
             self._cell_text(tr(f"sheets.{key}"), tx + x, ty + y, w, h, max_height=CAPTION_HEIGHT,
                             align="left" if x == 0 and y < 30 else "center")
         fl = self.fields
-        self._cell_text("blk17", tx + 135, ty + 15, 10, 5, max_height=CAPTION_HEIGHT, align="left")
+        self._cell_text(tr("sheets.blk17"), tx + 135, ty + 15, 10, 5, max_height=CAPTION_HEIGHT, align="left")
         self._cell_text(str(fl.number), tx + 145, ty + 15, 10, 5, max_height=3.5)
-        self._cell_text("blk18", tx + 155, ty + 15, 15, 5, max_height=CAPTION_HEIGHT, align="left")
+        self._cell_text(tr("sheets.blk18"), tx + 155, ty + 15, 15, 5, max_height=CAPTION_HEIGHT, align="left")
         self._cell_text(str(fl.count), tx + 170, ty + 15, 15, 5, max_height=3.5)
         self._cell_text(fl.author, tx + 17, ty + 25, 23, 5, max_height=CAPTION_HEIGHT, align="left")
         self._cell_text(fl.supervisor, tx + 17, ty + 20, 23, 5, max_height=CAPTION_HEIGHT,
