@@ -22,6 +22,7 @@ from typing import Mapping
 
 import numpy as np
 
+from .geometry import perp as _perp
 from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .structure import Group, Structure
@@ -102,10 +103,6 @@ class Plan:
             if c.name == name:
                 return c
         raise KeyError(name)
-
-
-def _perp(v: np.ndarray) -> np.ndarray:
-    return np.array([-v[1], v[0]])
 
 
 class _Builder:

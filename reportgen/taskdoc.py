@@ -13,8 +13,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from .taskfile_values import Spec, fmt
-from .taskspec import OPTIONAL, REQUIRED, SECTION, SECTIONS, Key, Section
+from .taskfile_values import Spec
+from .taskspec import OPTIONAL, SECTION, SECTIONS, Key, Section
 
 __all__ = ["markdown", "schema", "schema_text", "write", "SCHEMA_NAME", "SCHEMA_LINE"]
 

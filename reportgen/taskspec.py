@@ -149,6 +149,8 @@ SECTIONS: tuple[Section, ...] = (
         Key("city", Str(), "city on the title page", "Белгород", _dflt(Document, "city")),
         Key("year", Int(ge=1000, le=9999, what="a year: an integer"), "year on the title page", 2026,
             OPTIONAL, "left out of the title page"),
+        Key("code", Str(nonempty=True), "the project's designation: sheet k is <code>.00k, the note "
+            "<code>.000 ПЗ (title blocks, graph 2)", "ТММ.КП.01.00", _dflt(Document, "code")),
         Key("language", Word(*LANGUAGES), "language of the note and the sheets", "ru", _dflt(Document, "language")),
     )),
     Section("mechanism", "the linkage", "The links, their pairs, the drive, masses and loads.", (

@@ -10,13 +10,12 @@ from __future__ import annotations
 import argparse
 import os
 import shutil
-import sys
 import tempfile
 import time
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..errors import BuildError, OptionError, ReportgenInputError
+from ..errors import BuildError, OptionError
 from ..project import Project
 from ..results import build_results, dumps
 from ..taskfile import load_task
@@ -58,7 +57,7 @@ class Progress:
 
 
 def _designation(task) -> str:
-    return "ТММ.КП.00.00.000 ПЗ"
+    return task.document.note_code()
 
 
 def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, sheets: bool = True,

@@ -19,7 +19,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from .cycle import TWO_PI, Cycle
+from .cycle import Cycle
 from .energy import EnergyProfile, extreme
 from .errors import DynamicsInputError
 

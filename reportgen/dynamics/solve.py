@@ -15,15 +15,10 @@ from .motion import steady_motion
 from .quadrature import DEFAULT_ORDER
 from .result import DynamicsResult, compare
 from .wittenbauer import merzalov, wittenbauer_exact
+from ..geometry import readonly as _ro
 
 #: The fewest grid positions kept in results.json (RESULTS_FORMAT.md / issue #5).
 MIN_POSITIONS = 360
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def check_delta(delta: float) -> float:
