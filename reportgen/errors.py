@@ -57,6 +57,23 @@ class OptionError(ReportgenInputError):
         super().__init__(msg)
 
 
+class OutputFolderError(OptionError):
+    """``build`` refuses its output folder: ``folder`` as given, ``problem`` why, ``expected`` what to do.
+
+    Nothing is written or deleted when this is raised (see ``reportgen/commands/outdir.py``).
+    """
+
+    def __init__(self, option: str, folder, problem: str, expected: str | None = None) -> None:
+        self.folder = str(folder)
+        self.option = option
+        self.problem = problem
+        self.expected = expected
+        msg = f"{option} {self.folder}: refused, {problem}; nothing was written or deleted"
+        if expected:
+            msg += f". Use {expected}"
+        ReportgenInputError.__init__(self, msg)
+
+
 class StructureError(ReportgenInputError):
     """The kinematic chain cannot be decomposed into a driver and Assur groups.
 
