@@ -116,6 +116,12 @@ def parse_task(data: dict, source: str = "") -> Task:
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
+    if mechanism is None and gears is None and planetary is None:
+        given = [f"[{k}]" for k in data] if data else []
+        raise TaskError("", "the task has nothing to build" + (
+            f": it gives only {', '.join(given)}" if given else ": it is empty or holds only comments"),
+            "at least one of the sections [mechanism] (a linkage: note sections 1–3, sheets 1–3), "
+            "[gears] (a gear pair: section 4, sheet 4) or [planetary] (a planetary reducer)")
     return Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
                 gears=gears, planetary=planetary, source=str(source))
 
