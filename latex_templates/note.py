@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Mapping, Sequence
 
-from markupsafe import Markup
+from .render import Tex
 
 from reportgen.calc import CalcRecord, evaluate_displayed
 from reportgen.task import Document
@@ -54,7 +54,7 @@ class Section:
 class _RenderedSection:
     key: str
     title: str
-    body: Markup
+    body: Tex
 
 
 class NoteBuilder:
@@ -124,7 +124,7 @@ from reportgen.task import Document
             introduction=self.introduction, conclusions=self.conclusions,
             references=self.references, frame=self.frame, designation=self.designation,
             bottom_margin_mm=27 if self.frame == "eskd" else 20,
-            babel_languages=babel_languages, extra_preamble=Markup(self.extra_preamble))
+            babel_languages=babel_languages, extra_preamble=Tex(self.extra_preamble))
         bad = [r for r in self.symbols.records if not evaluate_displayed(r).ok]
         if bad:
             raise ValueError("printed formulas do not reproduce their printed results: "
@@ -146,10 +146,10 @@ from reportgen.task import Document
         figures = {name: _place_figure(obj, out / "figures", f"{sec.key}-{name}", sec.key, name)
                    for name, obj in sec.figures.items()}
         if sec.body is not None:
-            body = Markup(sec.body)
+            body = Tex(sec.body)
         else:
             context = {**base, "figures": _Namespace(figures), "section": sec, **sec.context}
-            body = Markup(env.get_template(sec.template).render(context))
+            body = Tex(env.get_template(sec.template).render(context))
         return _RenderedSection(sec.key, sec.title, body)
 
 
