@@ -27,6 +27,7 @@ import jinja2
 from markupsafe import Markup
 
 from reportgen.calc import CalcRecord, Var, unit_latex
+from reportgen.errors import InternalError, OptionError
 
 from . import numbers
 
@@ -107,7 +108,7 @@ def _finalize(value: Any) -> Any:
 
 
 # --------------------------------------------------------------------------- strings catalogue
-class MissingString(KeyError):
+class MissingString(InternalError, KeyError):
     """A key the strings catalogue of a language does not have."""
 
 
@@ -120,7 +121,7 @@ class Strings:
 
     def __init__(self, language: str) -> None:
         if language not in LANGUAGES:
-            raise ValueError(f"language {language!r}: expected one of {', '.join(LANGUAGES)}")
+            raise OptionError("language", f"{language!r} has no strings catalogue", "one of " + ", ".join(LANGUAGES))
         self.language = language
         self._data = _load_strings(language)
         self._fallback = _load_strings(FALLBACK_LANGUAGE) if language != FALLBACK_LANGUAGE else {}
@@ -204,7 +205,7 @@ def _merge_catalogue(into: dict[str, Any], data: Mapping[str, Any], source: str,
             if isinstance(into[key], dict) and isinstance(value, dict):
                 _merge_catalogue(into[key], value, source, dotted + ".")
                 continue
-            raise ValueError(f"strings catalogue: key {dotted!r} defined twice (again in {source})")
+            raise InternalError("strings catalogue", f"key {dotted!r} defined twice (again in {source})")
         into[key] = value
 
 

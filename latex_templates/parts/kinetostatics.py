@@ -17,6 +17,7 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.errors import InternalError
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
 
@@ -61,7 +62,7 @@ def _canon(name: str) -> str | None:
 
 def _check(rec: CalcRecord, expected: float, what: str) -> None:
     if not math.isclose(rec.value, expected, rel_tol=1e-9, abs_tol=1e-9 * max(1.0, abs(expected))):
-        raise RuntimeError(f"kinetostatics note: {what} printed as {rec.value!r}, the replica has {expected!r}")
+        raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
 def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: list[tuple[str, dict]] = ()

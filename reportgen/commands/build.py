@@ -12,10 +12,11 @@ import argparse
 import shutil
 import tempfile
 import time
+import traceback
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..errors import BuildError
+from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
 from ..results import build_results, dumps
 from ..taskfile import load_task
@@ -34,16 +35,21 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+ERROR_LOG = "error.log"  # in OUT.failed/ when a stage other than LaTeX failed
+
+
 class Progress:
-    """Prints each stage with the time it took."""
+    """Prints each stage with the time it took; ``current`` is the stage running (for error messages)."""
 
     def __init__(self, quiet: bool):
         self.quiet = quiet
         self.times: dict[str, float] = {}
+        self.current: str | None = None
 
     @contextmanager
     def stage(self, name: str):
         t0 = time.perf_counter()
+        self.current = name
         if not self.quiet:
             print(f"  {name} …", end="", flush=True)
         try:
@@ -79,10 +85,19 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
         if sheets:
             _sheets(project, tmp, progress)
         (tmp / "results.json").write_text(dumps(results), encoding="utf-8")
+    except ReportgenInputError:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
     except BuildError as exc:
         failed = keep_failed(tmp, out)
         kept = (exc.kept or "").replace(str(tmp), str(failed)) or str(failed)
         raise BuildError(exc.stage, exc.problem.replace(str(tmp), str(failed)), kept) from None
+    except Exception as exc:  # any other failure of a stage (a ReportgenError or a bug): keep what was made
+        (tmp / ERROR_LOG).write_text(traceback.format_exc(), encoding="utf-8")
+        failed = keep_failed(tmp, out)
+        problem = str(exc) if isinstance(exc, ReportgenError) else f"{type(exc).__name__}: {exc}"
+        raise BuildError(progress.current or "build", problem,
+                         f"what was made, in {failed} ({ERROR_LOG}: the error and where it happened)") from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
