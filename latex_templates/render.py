@@ -346,6 +346,27 @@ def unit_text(unit: str) -> Tex:
     return escape_latex(unit)
 
 
+#: Letters that the math font (TeX Gyre Termes Math) does not have: Latin-1 letters with diacritics,
+#: Cyrillic (Russian, Ukrainian, Belarusian …). In math they print as the text font's italic.
+MATH_TEXT_LETTERS: tuple[str, ...] = tuple(
+    chr(c) for c in (*range(0x00C0, 0x0100), *range(0x0400, 0x0460), *range(0x0490, 0x04A0))
+    if chr(c).isalpha() and c not in (0x00D7, 0x00F7))
+
+
+def math_text_letters() -> str:
+    """The preamble's ``\\mathtextletter{А}…`` for every letter of :data:`MATH_TEXT_LETTERS`."""
+    return "".join(f"\\mathtextletter{{{ch}}}" for ch in MATH_TEXT_LETTERS)
+
+
+#: Characters the text font lacks that a point name may hold (subscript digits): DejaVu Serif prints them.
+FALLBACK_GLYPHS: tuple[str, ...] = tuple(chr(c) for c in range(0x2080, 0x208A))
+
+
+def fallback_glyph_classes() -> str:
+    """The preamble's ``\\XeTeXcharclass`₁=\\fallbackglyphclass`` lines."""
+    return "\n".join(f"\\XeTeXcharclass`{ch}=\\fallbackglyphclass" for ch in FALLBACK_GLYPHS)
+
+
 # --------------------------------------------------------------------------- environment
 def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environment:
     """The Jinja environment: the package's templates, then ``template_dirs``; LaTeX delimiters."""
@@ -374,5 +395,6 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
         e=escape_latex, escape=escape_latex, forceescape=escape_latex, join=_join, replace=_replace,
         unit_math=lambda u: Tex(unit_latex(u)),
     )
-    env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell)
+    env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell, math_text_letters=math_text_letters,
+                       fallback_glyph_classes=fallback_glyph_classes)
     return env
