@@ -179,7 +179,10 @@ SECTIONS: tuple[Section, ...] = (
             "points is a rigid triangle, or a straight bar with a point between its ends.", (
                 Key("id", LINK_ID, "the link's number 1..n", 1),
                 Key("kind", Word(*LINK_KINDS), "what the link is called in the note (wording only)",
-                    "crank"),
+                    "crank", OPTIONAL, "inferred from the structure: the driver a crank, a link "
+                    "carrying a guide a slotted link, a one-point link a slider (frame guide) or block, "
+                    "a link on a frame guide a slider, a link turning about the frame a rocker, "
+                    "any other a coupler"),
                 Key("points", Array(POINT_NAME, 1, 3, what="an array of 1 to 3 point names"),
                     "the link's points, names of [mechanism.points], each once; a slider or block has one",
                     ["O", "A"]),
