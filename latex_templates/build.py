@@ -46,6 +46,67 @@ def build_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
 
     ``strict_references``: unresolved references or citations are an error (else a warning).
     """
+    return start_pdf(tex_path, latexmk=latexmk, strict_references=strict_references,
+                     source_date_epoch=source_date_epoch).wait()
+
+
+class PendingPdf:
+    """latexmk running in the background (started by :func:`start_pdf`); :meth:`wait` joins it and
+    checks the result as :func:`build_pdf` does. Python may draw other outputs meanwhile."""
+
+    def __init__(self, tex: Path, proc: subprocess.Popen, strict_references: bool) -> None:
+        self.tex = tex
+        self.proc = proc
+        self.strict_references = strict_references
+        self.started = time.perf_counter()
+        self._report: BuildReport | None = None
+
+    def cancel(self) -> None:
+        """Stop latexmk (and its xelatex) when the build fails elsewhere."""
+        if self.proc.poll() is None:
+            try:
+                os.killpg(self.proc.pid, 15)
+            except (ProcessLookupError, PermissionError):
+                pass
+            self.proc.wait()
+
+    def wait(self) -> BuildReport:
+        if self._report is not None:
+            return self._report
+        try:
+            out, err = self.proc.communicate()
+        except BaseException:
+            self.cancel()
+            raise
+        seconds = time.perf_counter() - self.started
+        tex, work = self.tex, self.tex.parent
+        build_dir = work / BUILD_DIR
+        log = build_dir / (tex.stem + ".log")
+        log_text = log.read_text(encoding="utf-8", errors="replace") if log.is_file() else ""
+        built = build_dir / (tex.stem + ".pdf")
+        if self.proc.returncode != 0 or not built.is_file():
+            excerpt = error_excerpt(log_text) or ((out or "") + (err or ""))[-2000:]
+            raise BuildError(STAGE, f"xelatex stopped on an error:\n{excerpt}",
+                             kept=f"the LaTeX source {tex} and the log {log}")
+        undefined = sorted(set(m.group(0).strip() for m in _UNDEFINED_RE.finditer(log_text)))
+        warnings = [m.group(0).strip() for m in _MISSING_CHAR_RE.finditer(log_text)]
+        if undefined and self.strict_references:
+            raise BuildError(STAGE, "unresolved references:\n" + "\n".join(undefined),
+                             kept=f"the LaTeX source {tex}, the PDF {built} and the log {log}")
+        warnings += undefined
+        pdf = work / (tex.stem + ".pdf")
+        shutil.copyfile(built, pdf)
+        self._report = BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings))
+        return self._report
+
+
+def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_references: bool = True,
+              source_date_epoch: str | None = None) -> PendingPdf:
+    """Start compiling ``tex_path`` (latexmk + xelatex, in its own process group) and return at once.
+
+    An existing ``latex-build/`` beside the .tex (aux, toc, fdb of an earlier build of the same note)
+    is reused: latexmk then runs only the passes the changes need.
+    """
     tex = Path(tex_path).resolve()
     work = tex.parent
     exe = shutil.which(latexmk)
@@ -61,26 +122,9 @@ def build_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
     env["FORCE_SOURCE_DATE"] = "1"
     cmd = [exe, "-xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
            f"-outdir={BUILD_DIR}", tex.name]
-    start = time.perf_counter()
-    proc = subprocess.run(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL,
-                          capture_output=True, text=True, errors="replace")
-    seconds = time.perf_counter() - start
-    log = build_dir / (tex.stem + ".log")
-    log_text = log.read_text(encoding="utf-8", errors="replace") if log.is_file() else ""
-    built = build_dir / (tex.stem + ".pdf")
-    if proc.returncode != 0 or not built.is_file():
-        excerpt = error_excerpt(log_text) or (proc.stdout + proc.stderr)[-2000:]
-        raise BuildError(STAGE, f"xelatex stopped on an error:\n{excerpt}",
-                         kept=f"the LaTeX source {tex} and the log {log}")
-    undefined = sorted(set(m.group(0).strip() for m in _UNDEFINED_RE.finditer(log_text)))
-    warnings = [m.group(0).strip() for m in _MISSING_CHAR_RE.finditer(log_text)]
-    if undefined and strict_references:
-        raise BuildError(STAGE, "unresolved references:\n" + "\n".join(undefined),
-                         kept=f"the LaTeX source {tex}, the PDF {built} and the log {log}")
-    warnings += undefined
-    pdf = work / (tex.stem + ".pdf")
-    shutil.copyfile(built, pdf)
-    return BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings))
+    proc = subprocess.Popen(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
+    return PendingPdf(tex, proc, strict_references)
 
 
 def error_excerpt(log_text: str, context_lines: int = 1) -> str:
