@@ -24,7 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .cycle import Cycle
-from .energy import EnergyProfile, extreme
+from ..roots import extremes
+from .energy import EnergyProfile
 
 
 @dataclass(frozen=True)
@@ -65,14 +66,9 @@ def wittenbauer_exact(cycle: Cycle, profile: EnergyProfile, delta: float) -> Wit
     E = profile.delta_E_nodes
     J = cycle.reduced(nodes).J
 
-    def g(w: float):
-        def f(t):
-            E_t, J_t = profile.state(t)
-            return E_t - J_t * w * w / 2.0
-        return f
-
-    tK, K = extreme(g(w_hi), nodes, E - J * w_hi ** 2 / 2.0, "max")
-    tL, L = extreme(g(w_lo), nodes, E - J * w_lo ** 2 / 2.0, "min")
+    (tK, K), (tL, L) = extremes(profile.state, nodes, [
+        (lambda st: st[0] - st[1] * w_hi * w_hi / 2.0, E - J * w_hi ** 2 / 2.0, "max"),
+        (lambda st: st[0] - st[1] * w_lo * w_lo / 2.0, E - J * w_lo ** 2 / 2.0, "min")])
     (EK,), (JK,) = profile.state(tK)
     (EL,), (JL,) = profile.state(tL)
     pK, pL = (float(JK), float(EK)), (float(JL), float(EL))
@@ -84,12 +80,11 @@ def merzalov(cycle: Cycle, profile: EnergyProfile, delta: float) -> Merzalov:
     wm = cycle.omega_m
     nodes = profile.nodes
 
-    def T(t):
-        E_t, J_t = profile.state(t)
+    def T(st):
+        E_t, J_t = st
         return E_t - (J_t - cycle.J_const) * wm * wm / 2.0
 
     vals = profile.delta_E_nodes - (cycle.reduced(nodes).J - cycle.J_const) * wm * wm / 2.0
-    t_hi, T_hi = extreme(T, nodes, vals, "max")
-    t_lo, T_lo = extreme(T, nodes, vals, "min")
+    (t_hi, T_hi), (t_lo, T_lo) = extremes(profile.state, nodes, [(T, vals, "max"), (T, vals, "min")])
     J1 = (T_hi - T_lo) / (wm * wm * delta)
     return Merzalov(cycle.J_const, T_hi, T_lo, t_hi, t_lo, J1, J1 - cycle.J_const)
