@@ -116,6 +116,10 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
                                 f"{APT_INSTALL}", kept=f"the LaTeX source {tex}")
     build_dir = work / BUILD_DIR
     build_dir.mkdir(exist_ok=True)
+    if not (build_dir / (tex.stem + ".aux")).exists():
+        toc = provisional_toc(tex.read_text(encoding="utf-8"))
+        if toc.strip():
+            (build_dir / (tex.stem + ".toc")).write_text(toc, encoding="utf-8")
     env = dict(os.environ)
     env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH",
                                                              DEFAULT_SOURCE_DATE_EPOCH)
@@ -125,6 +129,54 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
     proc = subprocess.Popen(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
     return PendingPdf(tex, proc, strict_references)
+
+
+_HEADING_RE = re.compile(r"\\(notestructheading|section|subsection|subsubsection)\{")
+
+
+def provisional_toc(tex_text: str) -> str:
+    """A table of contents with the note's headings and placeholder page numbers, written before
+    the first xelatex pass of a cold build.
+
+    Without it the first pass typesets an empty contents page, every later page moves when the
+    contents appear, and latexmk needs three passes; with it the first pass already paginates
+    as the last one, so the second pass (page numbers filled in) is also the confirming one.
+    It is only a head start: latexmk still reruns until the auxiliary files stop changing, so
+    the PDF is the same whatever this guesses.
+    """
+    body = tex_text.split("\\begin{document}", 1)[-1]
+    counters = [0, 0, 0]
+    lines = []
+    for m in _HEADING_RE.finditer(body):
+        title = _braced(body, m.end() - 1)
+        if title is None:
+            continue
+        kind = m.group(1)
+        if kind == "notestructheading":
+            lines.append(f"\\contentsline {{section}}{{{title}}}{{0}}{{section*.0}}%")
+            continue
+        level = ("section", "subsection", "subsubsection").index(kind)
+        counters[level] += 1
+        counters[level + 1:] = [0] * (2 - level)
+        number = ".".join(str(c) for c in counters[:level + 1])
+        lines.append(f"\\contentsline {{{kind}}}{{\\numberline {{{number}}}{title}}}{{0}}{{{kind}.{number}}}%")
+    return "\n".join(lines) + "\n"
+
+
+def _braced(text: str, start: int) -> str | None:
+    """The contents of the brace group opening at ``text[start]`` (nested braces kept)."""
+    depth = 0
+    for i in range(start, min(len(text), start + 2000)):
+        c = text[i]
+        if c == "\\":
+            continue
+        if c == "{" and (i == 0 or text[i - 1] != "\\"):
+            depth += 1
+        elif c == "}" and text[i - 1] != "\\":
+            depth -= 1
+            if depth == 0:
+                return text[start + 1:i]
+    return None
 
 
 def error_excerpt(log_text: str, context_lines: int = 1) -> str:
