@@ -57,11 +57,17 @@ def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
 def rot(theta: np.ndarray, p: tuple[float, float]) -> np.ndarray:
     """R(θ)·p for an array of angles: shape (..., 2)."""
     c, s = np.cos(theta), np.sin(theta)
-    return np.stack((c * p[0] - s * p[1], s * p[0] + c * p[1]), axis=-1)
+    out = np.empty(np.shape(c) + (2,))
+    out[..., 0] = c * p[0] - s * p[1]
+    out[..., 1] = s * p[0] + c * p[1]
+    return out
 
 
 def perp(v: np.ndarray) -> np.ndarray:
-    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
+    out = np.empty(v.shape[:-1] + (2,))
+    out[..., 0] = -v[..., 1]
+    out[..., 1] = v[..., 0]
+    return out
 
 
 def world(q: np.ndarray, k: int, p: tuple[float, float]) -> np.ndarray:
