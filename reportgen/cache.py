@@ -3,6 +3,7 @@ and a changed one redoes only what its change reaches.
 
 Where: ``$REPORTGEN_CACHE``, else ``$XDG_CACHE_HOME/reportgen``, else ``~/.cache/reportgen`` — never
 the output folder, so ``build`` writes nothing there that the build itself did not make.
+``REPORTGEN_CACHE=off`` (or ``build --no-cache``) turns it off.
 
 What, each under a key that is a SHA-256 of everything the entry depends on:
 
@@ -34,8 +35,11 @@ _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
 
 
-def cache_root() -> Path:
+def cache_root() -> Path | None:
+    """The cache's folder; None when ``REPORTGEN_CACHE=off``."""
     env = os.environ.get("REPORTGEN_CACHE")
+    if env and env.strip().lower() in ("off", "0", "no", "false"):
+        return None
     if env:
         return Path(env)
     xdg = os.environ.get("XDG_CACHE_HOME")
@@ -168,6 +172,8 @@ def open_cache(task_path: str | os.PathLike[str], *, pdf: bool, sheets: bool,
                latexmk: str = "latexmk") -> BuildCache | None:
     """The cache for a build of ``task_path`` with these options; None when it cannot be used."""
     root = cache_root()
+    if root is None:
+        return None
     try:
         root.mkdir(parents=True, exist_ok=True)
         if not os.access(root, os.W_OK):
