@@ -9,7 +9,8 @@ than the whole solve of a variant).
   refined on both neighbouring intervals by vectorised sampling: every round samples ``SAMPLES``
   points across each current bracket in *one* call of the (vectorised) function for all searches
   at once and keeps the two samples' spacing around the best; a unimodal function's extreme stays
-  inside, and the bracket shrinks by (SAMPLES − 1)/2 per round.
+  inside, and the bracket shrinks by (SAMPLES − 1)/2 per round, until it is ``EXTREME_XTOL`` wide
+  or flat (all its samples equal to rounding, ``FLAT``).
 """
 from __future__ import annotations
 
@@ -22,6 +23,9 @@ import numpy as np
 SAMPLES = 17
 #: Absolute tolerance on the abscissa of an extreme (the value near an extreme errs by its square).
 EXTREME_XTOL = 1e-9
+#: A bracket whose samples all agree with the best to this relative spread (a few ulps) is done:
+#: the value is exact to rounding, and its abscissa cannot be resolved any further (≈ √ε·scale).
+FLAT = 8 * np.finfo(float).eps
 
 
 class RootNotBracketedError(ValueError):
@@ -119,6 +123,10 @@ def extremes(evaluate: Callable[[np.ndarray], tuple], nodes: np.ndarray,
             if signs[k] * v[jj] > signs[k] * best[k][1]:
                 best[k] = (float(t[row, jj]), float(v[jj]))
             step = (hi[row] - lo[row]) / (SAMPLES - 1)
+            if np.ptp(v) <= FLAT * max(abs(float(v[jj])), np.finfo(float).tiny):
+                # every sample equals the extreme to rounding: no narrower bracket can tell them apart
+                brackets[k][i] = (float(t[row, jj]), float(t[row, jj]))
+                continue
             a0, b0 = limits[k][i]
             brackets[k][i] = (max(a0, t[row, jj] - step), min(b0, t[row, jj] + step))
         for k, br in enumerate(brackets):
