@@ -9,7 +9,6 @@ is exact to the quadrature's precision wherever the grid falls.
 """
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np

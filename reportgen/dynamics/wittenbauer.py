@@ -21,10 +21,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
-from .cycle import Cycle
 from ..roots import extremes
+from .cycle import Cycle
 from .energy import EnergyProfile
 
 
