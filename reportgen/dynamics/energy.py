@@ -14,7 +14,7 @@ from collections.abc import Callable
 import numpy as np
 from ..roots import EXTREME_XTOL, extremes
 from .cycle import TWO_PI, Cycle
-from .quadrature import DEFAULT_ORDER, cumulative, integrate_intervals, split_at
+from .quadrature import DEFAULT_ORDER, cumulative, gauss_legendre, integrate_intervals, split_at
 
 
 class EnergyProfile:
@@ -46,7 +46,7 @@ class EnergyProfile:
         t = np.atleast_1d(np.asarray(theta, dtype=float))
         j = np.clip(np.searchsorted(self.nodes, t, side="right") - 1, 0, self.nodes.size - 1)
         pl, pr, owner = split_at(self.nodes[j], t, self.cycle.breaks)
-        x, w = np.polynomial.legendre.leggauss(self.order)
+        x, w = gauss_legendre(self.order)
         half = 0.5 * (pr - pl)
         gl = (0.5 * (pr + pl))[:, None] + half[:, None] * x[None, :]
         r = self.cycle.reduced(np.concatenate((gl.ravel(), t)))

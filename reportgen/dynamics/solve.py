@@ -14,7 +14,7 @@ from .graphical import GraphLayout, graphical_replica
 from .motion import steady_motion
 from .quadrature import DEFAULT_ORDER
 from .result import DynamicsResult, compare
-from .wittenbauer import merzalov, wittenbauer_exact
+from .wittenbauer import wittenbauer_and_merzalov
 
 #: The fewest grid positions kept in results.json (RESULTS_FORMAT.md / issue #5).
 MIN_POSITIONS = 360
@@ -47,8 +47,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
     idx = np.searchsorted(prof.nodes, theta)
     A = prof.A_nodes[idx]
     red = cycle.reduced(theta)
-    ex = wittenbauer_exact(cycle, prof, delta)
-    mz = merzalov(cycle, prof, delta)
+    ex, mz = wittenbauer_and_merzalov(cycle, prof, delta)
     gr = graphical_replica(cycle, delta, graphical_positions, layout)
     J_fly = max(ex.J_fly, 0.0)
     motion = steady_motion(cycle, prof, J_fly, theta, delta)
