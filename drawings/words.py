@@ -58,6 +58,7 @@ def decimal_mark() -> str:
     return "," if _strings().raw("format.decimal") == "{,}" else "."
 
 
-def designation(number: int) -> str:
-    """The designation of sheet ``number`` (title block graph 2 and 26), e.g. ``ТММ.КП.00.00.002``."""
-    return str(_strings().text("designation.sheet", n=number))
+def designation(document, number: int) -> str:
+    """The designation of sheet ``number`` (title block graph 2 and 26) from ``[document] code``,
+    e.g. ``ТММ.КП.00.00.002`` (``TMM.CP.00.00.002`` in English when the code is the default)."""
+    return _strings().designation(document, number)

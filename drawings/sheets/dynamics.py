@@ -36,10 +36,6 @@ def available(project: Project) -> bool:
     return project.task.mechanism is not None and project.task.dynamics is not None
 
 
-def code(number: int) -> str:
-    return designation(number)
-
-
 def graph_labels(project: Project) -> list[str]:
     """The names of the graph's positions, as the note's table prints them."""
     from latex_templates.parts.dynamics import _first_step, position_labels
@@ -53,7 +49,7 @@ def graph_labels(project: Project) -> list[str]:
 def draw(project: Project, number: int, count: int) -> Sheet:
     res = project.dynamics
     g = res.graphical
-    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM

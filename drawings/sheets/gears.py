@@ -33,7 +33,7 @@ def draw(project, number: int, count: int) -> Sheet:
     from reportgen.gears.meshing import meshing_picture
 
     task = project.task
-    sheet = Sheet.a1(task.document, title=sheet_title(), code=designation(number), number=number,
+    sheet = Sheet.a1(task.document, title=sheet_title(), code=designation(task.document, number), number=number,
                      count=count)
     fr = sheet.frame
     left = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + 395, fr.y1 - 19)

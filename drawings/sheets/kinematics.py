@@ -4,15 +4,14 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
-from ..words import designation, tr
-
-import itertools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from drawings import style
+
+from ..words import designation, tr
 from drawings.layout import Rect, Request, grow, room, spread, try_pack
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
@@ -51,10 +50,6 @@ GROW_PLANS_MM = 40.0
 
 def available(project: Project) -> bool:
     return project.task.mechanism is not None
-
-
-def code(number: int) -> str:
-    return designation(number)
 
 
 def analysed_position(project: Project) -> int:
@@ -106,7 +101,7 @@ def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
             b: tuple[float, float, float, float], k: float, scale_text: str) -> Sheet:
-    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     i = data.analysed
     scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)

@@ -28,10 +28,6 @@ def available(project: Project) -> bool:
     return project.task.mechanism is not None
 
 
-def code(number: int) -> str:
-    return designation(number)
-
-
 #: Arrangements tried in turn, each a list of (kind, corner) in packing order: ``lever``, ``bodies``
 #: (the groups and the crank cut out), ``polygons``, or ``rows`` (each body followed by its polygon).
 ARRANGEMENTS: tuple[tuple[tuple[str, str], ...], ...] = (
@@ -131,7 +127,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     ks = kinetostatics_of(project)
     lk, st = project.linkage, project.structure
     g = ks.graphical
-    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     by_key = {gr.key: gr for gr in st.groups}
     where = tr("sheets.sk203", v1=ks.position) if ks.position is not None else ""
     note = tr("sheets.sk204", where=where, v2=format(ks.phi_deg, ".2f").replace(".", decimal_mark()))

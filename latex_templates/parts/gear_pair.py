@@ -208,15 +208,15 @@ def content(project) -> PartContent:
 
 
 def _point_label(label: str):
-    from markupsafe import Markup
+    from ..render import Tex
     names = {"N1": "$N_1$", "N2": "$N_2$", "a": "$a$", "b": "$b$", "P": "$P$", "": ""}
-    return Markup(names[label])
+    return Tex(names[label])
 
 
 def _lam(v: float):
-    from markupsafe import Markup
+    from ..render import Tex
     if math.isinf(v):
-        return Markup(r"$-\infty$" if v < 0 else r"$\infty$")
+        return Tex(r"$-\infty$" if v < 0 else r"$\infty$")
     return v
 
 
@@ -230,11 +230,11 @@ def _zones(pic, pb: float) -> dict:
 
 def _conclusion(pair, failed) -> str:
     """A sentence for the conclusions (trusted LaTeX, numbers with a decimal comma)."""
-    from markupsafe import Markup
+    from ..render import Tex
     from latex_templates.numbers import mnum
     g = pair.geometry
-    text = tr("gears.m01", v1=g.z1, v2=g.z2, v3=Markup(mnum(g.m)), v4=Markup(mnum(g.x1)), v5=Markup(mnum(g.x2)),
-              v6=Markup(mnum(g.aw, places(g.aw, 3))), v7=Markup(mnum(g.eps_alpha, places(g.eps_alpha, 3))))
+    text = tr("gears.m01", v1=g.z1, v2=g.z2, v3=Tex(mnum(g.m)), v4=Tex(mnum(g.x1)), v5=Tex(mnum(g.x2)),
+              v6=Tex(mnum(g.aw, places(g.aw, 3))), v7=Tex(mnum(g.eps_alpha, places(g.eps_alpha, 3))))
     names = {"undercut1": tr("gears.m23"), "undercut2": tr("gears.m24"),
              "sharpening1": tr("gears.m25"), "sharpening2": tr("gears.m26"),
              "contact_ratio": f"$\\varepsilon_\\alpha \\ge {mnum(pair.eps_min)}$",
@@ -244,4 +244,4 @@ def _conclusion(pair, failed) -> str:
         text += tr("gears.m47") + "; ".join(names[c.name] for c in failed) + "."
     else:
         text += tr("gears.m29")
-    return Markup(text)
+    return Tex(text)
