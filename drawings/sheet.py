@@ -11,8 +11,6 @@ module asks the sheet for views; the sheet packs them into the free field and ea
 """
 from __future__ import annotations
 
-from .words import tr
-
 import os
 from dataclasses import dataclass
 from typing import Any, Sequence
@@ -23,6 +21,7 @@ from shapely.geometry import Polygon, box
 from . import style
 from .layout import Overlap, Rect, Request, find_overlaps, pack
 from .primitives import _ALIGN, _ALIGN_NAMES, Annotations, Canvas, Transform
+from .words import tr
 from reportgen.errors import InternalError, ParameterError
 
 # ---------------------------------------------------------------------------------------------

@@ -12,8 +12,6 @@ share their ΔE level and the Wittenbauer diagram and J_red(φ) share their J ax
 """
 from __future__ import annotations
 
-from ..words import tr
-
 import math
 from dataclasses import dataclass
 
@@ -23,6 +21,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.errors import BuildError
+from ..words import tr
 
 #: Room around a diagram: above (title, scale), below (position numbers), mm.
 TOP_MM = 22.0

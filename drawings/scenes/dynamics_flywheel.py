@@ -3,11 +3,10 @@ beside the front view or under it, dimensioned in real millimetres) and the tabl
 calculation's results."""
 from __future__ import annotations
 
-from ..words import tr
-
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from ..words import tr
 
 #: ГОСТ 2.302 reduction scales, largest first (sheet mm per real mm).
 GOST_REDUCTIONS = (1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20, 1 / 25, 1 / 40, 1 / 50)

@@ -4,8 +4,6 @@ steps of each replica and the curve through them, the rays from the poles P1, P2
 exact curves thin, and the scales."""
 from __future__ import annotations
 
-from ..words import tr, unit
-
 from dataclasses import dataclass
 
 import numpy as np
@@ -14,6 +12,7 @@ from drawings.primitives import format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
 from reportgen.diagrams import Diagrams
+from ..words import tr, unit
 
 #: Space above a diagram's largest ordinate (title, dimensions) and between diagrams, mm.
 TOP_MM = 32.0

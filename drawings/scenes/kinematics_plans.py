@@ -4,9 +4,6 @@ name, the absolute vectors from the pole, the plan letters, the scale caption) a
 plans of all positions in small form."""
 from __future__ import annotations
 
-from ..words import tr
-from ..words import unit as words_unit
-
 import math
 from dataclasses import dataclass
 
@@ -20,6 +17,8 @@ from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
 from reportgen.plans import Plan
+from ..words import tr
+from ..words import unit as words_unit
 
 #: Room for letters and names around a plan's points, and the caption / title strips, mm.
 PAD_LABELS, STRIP = 16.0, 12.0

@@ -4,8 +4,6 @@ extreme position of the end of the working stroke (dash-two-dots), the trajector
 of mass and of the crank pin, the stroke H of the slider and the crank angles of the strokes."""
 from __future__ import annotations
 
-from ..words import tr
-
 import math
 from dataclasses import dataclass
 
@@ -18,6 +16,7 @@ from drawings.scenes import kinematics_labels as rl
 from reportgen.kinematics import KinematicsResult
 from reportgen.kinematics.constraints import rot
 from reportgen.project import Project
+from ..words import tr
 
 #: ГОСТ 2.302 scales as (paper, real): 1:2,5 is (1, 2.5).
 GOST_SCALES: tuple[tuple[float, float], ...] = (

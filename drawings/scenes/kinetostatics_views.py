@@ -8,8 +8,6 @@ one at once. All numbers come from :class:`reportgen.kinetostatics.Kinetostatics
 solves."""
 from __future__ import annotations
 
-from ..words import symbol, tr
-
 import math
 from dataclasses import dataclass
 from typing import Callable
@@ -21,6 +19,7 @@ from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.kinetostatics.reactions import pair_name, perp
+from ..words import symbol, tr
 
 #: The longest force arrow on a group's view, mm; arrows are never shorter than MIN_ARROW_MM.
 ARROW_MM = 45.0

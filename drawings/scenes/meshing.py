@@ -5,12 +5,11 @@ same scale (and the length of ab read on the sheet) through :func:`meshing_scale
 """
 from __future__ import annotations
 
-from ..words import decimal_mark, tr
-
 import math
 from dataclasses import dataclass
 
 from reportgen.gears.meshing import GOST_SCALES, MeshingPicture, meshing_picture
+from ..words import decimal_mark, tr
 
 #: The window of the meshing picture on the left half of sheet 4, sheet mm (inside its padding).
 WINDOW_W = 375.0

@@ -12,12 +12,11 @@ carrier circle of radius k·a, the carrier arms as thick lines.
 """
 from __future__ import annotations
 
-from ..words import decimal_mark, tr
-
 import math
 from dataclasses import dataclass, field
 
 from reportgen.planetary.schemes import expand
+from ..words import decimal_mark, tr
 
 Point = tuple[float, float]
 

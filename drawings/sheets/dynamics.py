@@ -5,13 +5,12 @@ and the table of results. Every length is the graphical replica's (``project.dyn
 so KL on the sheet is the KL of results.json."""
 from __future__ import annotations
 
-from ..words import designation, tr
-
 from drawings.layout import Rect
 from drawings.scenes import dynamics_diagrams as dd
 from drawings.scenes import dynamics_flywheel as df
 from drawings.sheet import Sheet
 from reportgen.project import Project
+from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics")
 def sheet_title() -> str:

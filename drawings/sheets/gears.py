@@ -5,10 +5,9 @@ the tooth numbers. A half is left out when the task lacks its section; neither r
 solver."""
 from __future__ import annotations
 
-from ..words import designation, tr
-
 from drawings import Sheet
 from drawings.layout import Rect
+from ..words import designation, tr
 
 NEEDS = ("gears", "planetary")
 def sheet_title() -> str:

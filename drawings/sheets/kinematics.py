@@ -10,8 +10,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from drawings import style
-
-from ..words import designation, tr
 from drawings.layout import Rect, Request, grow, room, spread, try_pack
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
@@ -22,6 +20,7 @@ from reportgen.errors import BuildError
 from reportgen.diagrams import Diagrams, build_diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
+from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
 def sheet_title() -> str:

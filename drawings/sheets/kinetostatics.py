@@ -4,13 +4,12 @@ polygon of each at its μF (the note's scales and lengths), and Zhukovsky's leve
 from :func:`reportgen.kinetostatics.results.kinetostatics_of`."""
 from __future__ import annotations
 
-from ..words import decimal_mark, designation, tr
-
 import numpy as np
 
 from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
+from ..words import decimal_mark, designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "kinetostatics")
 def sheet_title() -> str:

@@ -6,13 +6,12 @@ The exact curves are drawn from the dense grid; the points and chords of the gra
 construction from ``res.graphical`` (mm × scale), so the figure shows what the sheet draws."""
 from __future__ import annotations
 
-from ..parts import tr
-
 import math
 
 import numpy as np
 from matplotlib.patches import Circle, Rectangle
 
+from ..parts import tr
 from . import comma, comma_axes, new_figure
 
 GRAPH = "tab:blue"        # the graphical construction

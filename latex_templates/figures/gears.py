@@ -3,12 +3,11 @@
 (subsection 4.2). Each function takes solver objects and returns a matplotlib figure."""
 from __future__ import annotations
 
-from ..parts import tr
-
 import math
 
 import numpy as np
 
+from ..parts import tr
 from . import comma, comma_axes, new_figure
 
 #: Russian names of the contour lines (legend), in drawing order.

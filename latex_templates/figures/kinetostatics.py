@@ -7,14 +7,13 @@ computes a force. Arrow lengths on the group diagrams are schematic (a square-ro
 10 N weight stays visible beside a 10 kN resistance); the polygons are drawn at their scale μF."""
 from __future__ import annotations
 
-from ..parts import active, decimal_mark, tr
-
 import math
 import re
 
 import numpy as np
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
+from ..parts import active, decimal_mark, tr
 from . import comma_axes, math_name, new_figure
 from .mechanism import world_points
 

@@ -1,10 +1,9 @@
 """Velocity and acceleration plans (matplotlib) from :class:`reportgen.plans.Plan`."""
 from __future__ import annotations
 
-from ..parts import decimal_mark, tr, unit
-
 import numpy as np
 
+from ..parts import decimal_mark, tr, unit
 from . import new_figure
 
 COLOURS = {"absolute": "black", "relative": "tab:blue", "normal": "tab:green", "tangential": "tab:red",
