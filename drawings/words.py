@@ -60,5 +60,5 @@ def decimal_mark() -> str:
 
 def designation(document, number: int) -> str:
     """The designation of sheet ``number`` (title block graph 2 and 26) from ``[document] code``,
-    e.g. ``ТММ.КП.00.00.002`` (``TMM.CP.00.00.002`` in English when the code is the default)."""
+    e.g. ``<code>.002`` (the default code in the language's letters: ``TMM.CP.00.00.002`` in English)."""
     return _strings().designation(document, number)

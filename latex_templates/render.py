@@ -180,7 +180,7 @@ class Strings:
         (numbers print with the language's decimal mark, plain strings escaped)."""
         value = self.raw(key)
         if not isinstance(value, str):
-            raise TypeError(f"string {key!r} ({self.language}) is not a sentence")
+            raise InternalError("strings catalogue", f"{key!r} ({self.language}) is not a sentence")
         return render_snippet(self, key, value, values)
 
     def plural(self, n: float, key: str) -> Tex:
@@ -220,7 +220,7 @@ class Strings:
     def designation(self, document: Any, number: int | None = None) -> str:
         """The ЕСКД designation (ГОСТ 2.201) of the note (``number`` None) or of sheet ``number``:
         ``[document] code`` (its default, the catalogue's ``designation.default_code``, is the
-        language's: ``ТММ.КП.00.00`` or ``TMM.CP.00.00``) + ``.000 ПЗ`` / ``.<number:03d>``."""
+        language's, Latin letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
         from reportgen.task import Document
         default = Document.__dataclass_fields__["code"].default
         code = getattr(document, "code", default) or default
@@ -324,7 +324,7 @@ def _t(ctx: Any, key: str, **values: Any) -> Tex:
     strings: Strings = ctx["s"]
     value = strings.raw(key)
     if not isinstance(value, str):
-        raise TypeError(f"string {key!r} ({strings.language}) is not a sentence")
+        raise InternalError("strings catalogue", f"{key!r} ({strings.language}) is not a sentence")
     return render_snippet(strings, key, value, {**ctx.get_all(), **values})
 
 
@@ -367,7 +367,7 @@ def _load_strings(language: str) -> dict[str, Any]:
                 try:
                     data = tomllib.loads(path.read_text(encoding="utf-8"))
                 except tomllib.TOMLDecodeError as exc:
-                    raise ValueError(f"strings catalogue {language}/{path.name}: {exc}") from None
+                    raise InternalError("strings catalogue", f"{language}/{path.name}: {exc}") from None
                 _merge_catalogue(merged, data, f"{language}/{path.name}", "")
         _STRING_CACHE[language] = merged
     return _STRING_CACHE[language]
