@@ -22,11 +22,12 @@ import numpy as np
 
 from .errors import TaskError
 from .task import Mechanism
+from .tolerances import RTOL_EQUAL
 
 Vec = tuple[float, float]
 
 #: Relative tolerance for a degenerate (straight) triangle: a bar with a point between its ends.
-COLLINEAR_REL_TOL = 1e-9
+COLLINEAR_REL_TOL = RTOL_EQUAL
 
 
 @dataclass(frozen=True)
@@ -213,11 +214,11 @@ def compile_linkage(mech: Mechanism) -> Linkage:
                              _com_local(ln, loc), float(ln.mass), float(ln.inertia))
 
     carriers: dict[str, list[int]] = {}
-    for p in ground:
-        carriers.setdefault(p, []).append(0)
+    for name in ground:
+        carriers.setdefault(name, []).append(0)
     for ln in mech.links:
-        for p in ln.points:
-            carriers.setdefault(p, []).append(ln.id)
+        for name in ln.points:
+            carriers.setdefault(name, []).append(ln.id)
     joints = tuple(Joint(p, tuple(sorted(set(b)))) for p, b in sorted(carriers.items()) if len(set(b)) >= 2)
 
     slides = []

@@ -37,7 +37,7 @@ def _clean(x: Any) -> Any:
     return x
 
 
-def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None, linkage=None) -> dict:
+def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None) -> dict:
     block: dict[str, Any] = {
         "phi_deg": np.mod(kin.phi_deg, 360.0),
         "points": {name: {"pos": m.pos, "vel": m.vel, "acc": m.acc} for name, m in kin.points.items()},
@@ -87,6 +87,7 @@ def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
     if "planetary" in sections and project.task.planetary is not None:
         from .planetary.results import planetary_block
         st = project.planetary
+        assert st is not None  # the task has [planetary]
         out["planetary"] = planetary_block(st.design, st.triangle, st.check)
     return _clean(out)
 

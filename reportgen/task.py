@@ -93,6 +93,10 @@ class MassRules:
     triangle_factor: float = 2.5
 
 
+#: A resistance constant along the stroke: (fraction of the stroke, fraction of the maximum).
+DEFAULT_LAW: tuple[tuple[float, float], ...] = ((0.0, 1.0), (1.0, 1.0))
+
+
 @dataclass(frozen=True)
 class Load:
     """A load on a link.
@@ -107,7 +111,7 @@ class Load:
     link: int
     force: float | None = None
     moment: float | None = None
-    law: tuple[tuple[float, float], ...] = ((0.0, 1.0), (1.0, 1.0))
+    law: tuple[tuple[float, float], ...] = DEFAULT_LAW
     stroke: Literal["working", "idle", "both"] = "working"
     point: str | None = None
     com: bool = False

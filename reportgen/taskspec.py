@@ -9,7 +9,7 @@ the loader and written in the key's ``doc``.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any, Literal
 
 from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
@@ -119,7 +119,7 @@ PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-ro
 
 def _dflt(cls: type, name: str) -> Any:
     """The default of field ``name`` of the task dataclass ``cls`` (the loader's default)."""
-    return cls.__dataclass_fields__[name].default
+    return {f.name: f.default for f in fields(cls)}[name]
 
 
 # ---------------------------------------------------------------------------------------- sections

@@ -2,13 +2,15 @@
 style that matches the note (Liberation Serif, the text font; decimal comma on the axes)."""
 from __future__ import annotations
 
+from typing import Any
+
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import FuncFormatter  # noqa: E402
 
-STYLE = {
+STYLE: dict[Any, Any] = {
     "font.family": "serif",
     "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],
     "font.size": 10,

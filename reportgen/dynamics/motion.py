@@ -75,7 +75,7 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
         tt = np.array([t_hi, t_lo])
         Ex, Jx = profile.state(tt)
         Jx = Jx + J_fly
-        u_new = brentq(lambda v: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
+        u_new = brentq(lambda v, Ex=Ex, Jx=Jx: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
         done = abs(u_new - u) <= 1e-13 * abs(u_new)
         u = u_new
         if done:

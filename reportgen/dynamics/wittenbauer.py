@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
 
 from .cycle import Cycle
 from .energy import EnergyProfile, extreme
@@ -72,8 +73,8 @@ def wittenbauer_exact(cycle: Cycle, profile: EnergyProfile, delta: float) -> Wit
 
     tK, K = extreme(g(w_hi), nodes, E - J * w_hi ** 2 / 2.0, "max")
     tL, L = extreme(g(w_lo), nodes, E - J * w_lo ** 2 / 2.0, "min")
-    (EK,), (JK,) = profile.state(tK)
-    (EL,), (JL,) = profile.state(tL)
+    (EK,), (JK,) = profile.state(np.asarray(tK))
+    (EL,), (JL,) = profile.state(np.asarray(tL))
     pK, pL = (float(JK), float(EK)), (float(JL), float(EL))
     return WittenbauerExact(delta, wm, w_hi, w_lo, K, L, tK, tL, pK, pL, (K - L) / (wm * wm * delta))
 

@@ -23,7 +23,7 @@ import numpy as np
 from shapely.geometry import LineString
 
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
-from ..geometry import readonly as _ro
+from ..geometry import readonly as _ro, vec2
 
 Point = tuple[float, float]
 
@@ -99,13 +99,13 @@ def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: floa
 def contact_zones(ab: float, pb: float) -> list[tuple[float, float, int]]:
     """(start, end, pairs) along ab measured from a: pairs = number of integers k with
     0 ≤ s + k pb ≤ ab, constant between the breakpoints k pb and ab − k pb."""
-    cuts = {0.0, ab}
+    cut_set = {0.0, ab}
     k = 1
     while k * pb < ab:
-        cuts.update((k * pb, ab - k * pb))
+        cut_set.update((k * pb, ab - k * pb))
         k += 1
-    cuts = sorted(cuts)
-    zones = []
+    cuts = sorted(cut_set)
+    zones: list[tuple[float, float, int]] = []
     for s0, s1 in zip(cuts[:-1], cuts[1:]):
         mid = (s0 + s1) / 2
         n = math.floor((ab - mid) / pb) + math.floor(mid / pb) + 1
@@ -163,7 +163,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
     pts = {"O1": o1, "O2": o2, "P": p, "N1": n1, "N2": n2, "a": a, "b": b}
     points = MappingProxyType({k: (float(v[0]), float(v[1])) for k, v in pts.items()})
     t = np.array([cw, sw])  # along N1N2 (unit), for zones
-    zones = tuple(Zone(tuple(map(float, a + s0 * u)), tuple(map(float, a + s1 * u)), n)
+    zones = tuple(Zone(vec2(a + s0 * u), vec2(a + s1 * u), n)
                   for s0, s1, n in contact_zones(max(ab, 0.0), g.pb))
     del t
     half_tan = 1.2 * max(g.g, 2 * g.pb)
@@ -183,7 +183,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
     dims = (
         Dimension("aw", points["O1"], points["O2"], float(g.aw), f"aw = {g.aw:.3f}"),
         Dimension("ab", points["a"], points["b"], ab, f"ab = {ab:.3f}"),
-        Dimension("pb", tuple(map(float, p)), tuple(map(float, p + g.pb * u)), float(g.pb),
+        Dimension("pb", vec2(p), vec2(p + g.pb * u), float(g.pb),
                   f"pb = {g.pb:.3f}"),
         Dimension("N1N2", points["N1"], points["N2"], float(g.g), f"N1N2 = {g.g:.3f}"),
     )

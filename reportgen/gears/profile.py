@@ -97,7 +97,8 @@ class GeneratedTooth:
         circle of ``radius`` (the edges of the solid arc that contains the tooth axis)."""
         pts = self.outline
         rr = np.hypot(pts[:, 0], pts[:, 1])
-        left, right = [], []
+        left: list[float] = []
+        right: list[float] = []
         for i in range(len(pts) - 1):
             r0, r1 = rr[i], rr[i + 1]
             if (r0 - radius) * (r1 - radius) > 0 or r0 == r1:

@@ -128,7 +128,7 @@ def blocking_contour(z1: int, z2: int, module: float = 1.0, alpha_deg: float = 2
 def _contour(ev: _Evaluator, n: int, x1_range, x2_range) -> BlockingContour:
     r1 = x1_range or _grid_range(ev, ev.z1, 1)
     r2 = x2_range or _grid_range(ev, ev.z2, 2)
-    xs1, xs2 = np.linspace(*r1, n), np.linspace(*r2, n)
+    xs1, xs2 = np.linspace(r1[0], r1[1], n), np.linspace(r2[0], r2[1], n)
     X1, X2 = np.meshgrid(xs1, xs2, indexing="ij")
     arr = ev.arrays(X1, X2)
     feasible = np.isfinite(arr["alpha_w"])

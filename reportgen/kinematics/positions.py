@@ -59,7 +59,7 @@ class Infeasible:
 class DyadSolver:
     """Closed-form position solver of a dyad; ``sigma`` is the assembly branch (+1 or −1)."""
 
-    def __init__(self, linkage: Linkage, group: Group, known: set[int]):
+    def __init__(self, linkage: Linkage, group: Group, _known: set[int]):
         self.linkage = linkage
         self.group = group
         self.kind = group.kind
@@ -73,7 +73,7 @@ class DyadSolver:
 
     # -- helpers -------------------------------------------------------------------------------
     def _local(self, k: int, point: str) -> tuple[float, float]:
-        return tuple(self.linkage.bodies[k].local[point])
+        return self.linkage.bodies[k].local[point]
 
     def _known_body(self, pair: Pair, k: int) -> int:
         return pair.bodies[0] if pair.bodies[1] == k else pair.bodies[1]
@@ -223,7 +223,7 @@ class DyadSolver:
         scale = np.prod(np.linalg.norm(A, axis=2), axis=1)
         margin = np.abs(det) / np.where(scale > 0, scale, 1.0) - 1e-9
         if strict:
-            self._fail(phi, margin, lambda i: "the two lines of the group are parallel: no intersection")
+            self._fail(phi, margin, lambda _i: "the two lines of the group are parallel: no intersection")
         ok = margin >= 0
         x = np.zeros((q.shape[0], 4))
         if ok.any():
@@ -249,7 +249,7 @@ class NewtonSolver:
     started from a prediction (the previous position advanced with the exact velocity and
     acceleration) or, at the sketch, from the sketch itself."""
 
-    def __init__(self, linkage: Linkage, group: Group, known: set[int]):
+    def __init__(self, linkage: Linkage, group: Group, _known: set[int]):
         self.linkage = linkage
         self.group = group
         self.cons = group_constraints(linkage, group)
