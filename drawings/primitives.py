@@ -23,7 +23,7 @@ from shapely.geometry.base import BaseGeometry
 
 from . import style
 
-Vec = tuple[float, float]
+from reportgen.geometry import Vec2 as Vec
 #: Coordinates as the scenes pass them: a pair (or list) of floats, or a numpy array.
 Coords = Sequence[float] | np.ndarray
 

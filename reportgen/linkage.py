@@ -24,7 +24,7 @@ from .errors import TaskError
 from .task import Mechanism
 from .tolerances import RTOL_EQUAL
 
-Vec = tuple[float, float]
+from .geometry import Vec2 as Vec, rot_vec2
 
 #: Relative tolerance for a degenerate (straight) triangle: a bar with a point between its ends.
 COLLINEAR_REL_TOL = RTOL_EQUAL
@@ -173,11 +173,6 @@ def _com_local(ln, local: Mapping[str, Vec]) -> Vec:
     return (sum(xs) / len(xs), sum(ys) / len(ys))
 
 
-def _rot(theta: float, v: Vec) -> Vec:
-    c, s = math.cos(theta), math.sin(theta)
-    return (c * v[0] - s * v[1], s * v[0] + c * v[1])
-
-
 def compile_linkage(mech: Mechanism) -> Linkage:
     """Build bodies, joints and slides from a validated :class:`Mechanism`."""
     sk = {k: (float(v[0]), float(v[1])) for k, v in mech.points.items()}
@@ -265,6 +260,6 @@ def sketch_q(linkage: Linkage) -> np.ndarray:
             continue
         x, y, th = b.sketch_pose
         p0 = b.local[b.points[0]]
-        off = _rot(th, p0)
+        off = rot_vec2(th, p0)
         q[k] = (x - off[0], y - off[1], th)
     return q

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Literal, Mapping
 
-Vec2 = tuple[float, float]
+from .geometry import Vec2
 
 LINK_KINDS = ("crank", "coupler", "rocker", "slider", "block", "slotted")
 LANGUAGES = ("ru", "uk", "en")

@@ -17,7 +17,7 @@ import math
 from types import MappingProxyType
 from typing import Any, Iterable, Mapping, Sequence
 
-Point = tuple[float, float]
+from .geometry import Vec2 as Point
 Keys = Mapping[str, Any]
 
 START_AT_ZERO: Keys = MappingProxyType({"start": 0.0})

@@ -15,6 +15,7 @@ from typing import Protocol
 import numpy as np
 from scipy.optimize import brentq
 
+from ..geometry import readonly
 from ..loads import StrokeWindow, external_loads, link_coordinate
 from .errors import DynamicsInputError
 from .reduction import constant_inertia, reduced_inertia, reduced_moment
@@ -40,8 +41,7 @@ class Cycle(Protocol):
 
 
 def _breaks(inner: list[float]) -> np.ndarray:
-    b = np.array(sorted({0.0, TWO_PI, *[t for t in inner if 0.0 < t < TWO_PI]}))
-    b.setflags(write=False)
+    b = readonly(sorted({0.0, TWO_PI, *[t for t in inner if 0.0 < t < TWO_PI]}))
     return b
 
 

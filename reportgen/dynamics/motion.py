@@ -19,6 +19,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
+from ..geometry import readonly
 from .cycle import Cycle
 from .energy import EnergyProfile, extreme
 from .errors import DynamicsInputError
@@ -83,10 +84,8 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
     w_hi, w_lo = (float(x) for x in _omega(u, Ex, Jx))
     grid = np.asarray(grid, dtype=float)
     Eg, Jg = profile.state(grid)
-    w_grid = _omega(u, Eg, Jg + J_fly)
-    w_grid.setflags(write=False)
-    g = grid.copy()
-    g.setflags(write=False)
+    w_grid = readonly(_omega(u, Eg, Jg + J_fly))
+    g = readonly(grid)
     J0 = float(cycle.reduced(np.array([0.0])).J[0]) + J_fly
     mean = 0.5 * (w_hi + w_lo)
     return SteadyMotion(g, w_grid, math.sqrt(u / J0), w_hi, w_lo, t_hi, t_lo, mean, (w_hi - w_lo) / mean,

@@ -23,9 +23,9 @@ import numpy as np
 from shapely.geometry import LineString
 
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
-from ..geometry import readonly as _ro, vec2
+from ..geometry import readonly as _ro, rot, vec2
 
-Point = tuple[float, float]
+from ..geometry import Vec2 as Point
 
 #: ГОСТ 2.302-68 scales (enlargement > 1, reduction < 1).
 GOST_SCALES = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10)
@@ -79,10 +79,9 @@ class MeshingPicture:
     view: tuple[float, float, float, float]   # xmin, ymin, xmax, ymax that holds the drawn teeth
 
 
-def _rot(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:
-    c, s = math.cos(ang), math.sin(ang)
-    out = pts @ np.array([[c, s], [-s, c]])
-    return _ro(out + np.asarray(shift))
+def _placed(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:
+    """A polyline (n, 2) turned by ``ang`` about the origin, then moved by ``shift``."""
+    return _ro(rot(ang, np.asarray(pts).T) + np.asarray(shift))
 
 
 def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: float) -> tuple[float, float]:
@@ -144,7 +143,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
 
     def teeth(tooth, base_angle, step, centre):
         line = np.asarray(LineString(tooth.outline).simplify(tol).coords) if tol > 0 else tooth.outline
-        return tuple(_rot(line, base_angle + k * step, centre) for k in ks)
+        return tuple(_placed(line, base_angle + k * step, centre) for k in ks)
 
     # gear 1 turns clockwise (teeth to the left of P follow); gear 2 counter-clockwise
     teeth1 = teeth(tooth1, psi_w1, 2 * math.pi / g.z1, (0.0, 0.0))

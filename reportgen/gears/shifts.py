@@ -139,8 +139,7 @@ def _contour(ev: _Evaluator, n: int, x1_range, x2_range) -> BlockingContour:
         curves[name] = zero_lines(xs1, xs2, margin)
     curves["eps_1"] = zero_lines(xs1, xs2, arr["eps_alpha"] - 1.0)
     curves["equal_sliding"] = zero_lines(xs1, xs2, ev.sliding_gap(arr))
-    feasible = np.array(feasible)
-    feasible.setflags(write=False)
+    feasible = _ro(feasible, dtype=bool)
     return BlockingContour(z1=ev.z1, z2=ev.z2, x1=_ro(xs1), x2=_ro(xs2), feasible=feasible,
                            curves=MappingProxyType(curves), sa_min_factor=ev.sa_min_factor,
                            eps_min=ev.eps_min)
