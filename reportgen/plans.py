@@ -27,6 +27,7 @@ from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .structure import Group, Structure
 from .tolerances import RTOL_ROUNDOFF
+from .errors import NameLookupError
 
 #: Scale factors are 1, 2, 2.5, 4 or 5 × 10^k (so the crank's vector is 50–100 mm, unless another
 #: point's vector would then stand beyond ``PLAN_MAX_MM``).
@@ -103,7 +104,7 @@ class Plan:
         for c in self.components:
             if c.name == name:
                 return c
-        raise KeyError(name)
+        raise NameLookupError("plan component", name, tuple(c.name for c in self.components))
 
 
 class _Builder:

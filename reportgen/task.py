@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Literal, Mapping
 
+from .errors import NameLookupError
 from .geometry import Vec2
 
 LINK_KINDS = ("crank", "coupler", "rocker", "slider", "block", "slotted")
@@ -135,7 +136,7 @@ class Mechanism:
         for ln in self.links:
             if ln.id == link_id:
                 return ln
-        raise KeyError(link_id)
+        raise NameLookupError("link", link_id, tuple(ln.id for ln in self.links))
 
 
 @dataclass(frozen=True)

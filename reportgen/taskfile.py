@@ -115,6 +115,12 @@ def parse_task(data: dict, source: str = "") -> Task:
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
+    if mechanism is None and gears is None and planetary is None:
+        given = [f"[{k}]" for k in data] if data else []
+        raise TaskError("", "the task has nothing to build" + (
+            f": it gives only {', '.join(given)}" if given else ": it is empty or holds only comments"),
+            "at least one of the sections [mechanism] (a linkage: note sections 1–3, sheets 1–3), "
+            "[gears] (a gear pair: section 4, sheet 4) or [planetary] (a planetary reducer)")
     return Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
                 gears=gears, planetary=planetary, source=str(source))
 
@@ -132,7 +138,7 @@ class _RawLink:
     pos: int
     path: str
     id: int
-    kind: str
+    kind: str | None
     points: tuple[str, ...]
     given: dict[frozenset, tuple[str, str, float, str]]  # {p, q} → (p, q, metres, TOML path)
     mass: float | None
@@ -155,6 +161,10 @@ def _mechanism(value: Any, path: str) -> Mechanism:
     by_id = _check_ids(raw_links)
 
     drive = _drive(t.get("drive", _ANY_TABLE), t.at("drive"), by_id, ground)
+    slide_pairs = _slide_pairs(t.raw("slide", []))
+    for ln in raw_links:
+        if ln.kind is None:
+            ln.kind = infer_kind(ln.id, ln.points, drive.link, ground, slide_pairs)
     rules = _mass_rules(t.raw("mass_rules", {}), t.at("mass_rules"))
     links = _resolve_links(raw_links, by_id, drive.link, rules, points)
     links_by_id = {ln.id: ln for ln in links}
@@ -172,6 +182,42 @@ def _mechanism(value: Any, path: str) -> Mechanism:
 
     return Mechanism(name=name, ground=ground, points=frozen_mapping(points), links=tuple(links),
                      drive=drive, slides=tuple(slides), loads=tuple(loads), mass_rules=rules, g=g)
+
+
+def _slide_pairs(raw: Any) -> tuple[tuple[int, int], ...]:
+    """(link, guide) of every [[mechanism.slide]] that names both as integers (the slides are
+    validated later, by ``_slide``); used only to infer the kind of a link."""
+    pairs = []
+    for v in raw if isinstance(raw, list) else []:
+        if isinstance(v, dict):
+            lk, gd = v.get("link"), v.get("guide")
+            if isinstance(lk, int) and isinstance(gd, int) and not isinstance(lk, bool) and not isinstance(gd, bool):
+                pairs.append((lk, gd))
+    return tuple(pairs)
+
+
+def infer_kind(link_id: int, points: tuple[str, ...], drive_link: int, ground: tuple[str, ...],
+               slides: tuple[tuple[int, int], ...]) -> str:
+    """The kind of a link that the task leaves out, from the structure (the kind is wording and the
+    mass rule of a slider; the solvers never read it):
+
+    the driving link is a crank; a link that carries another link's guide is a slotted link
+    (кулиса); a link that slides on a guide of the frame is a slider if it has one point, and so is
+    a one-point link on any guide a block (камень) when the guide is a link; a link turning about a
+    frame point is a rocker; any other a coupler.
+    """
+    guides = {g for lk, g in slides if lk == link_id}
+    if link_id == drive_link:
+        return "crank"
+    if any(g == link_id for _, g in slides):
+        return "slotted"
+    if len(points) == 1:
+        return "slider" if 0 in guides or not guides else "block"
+    if 0 in guides:
+        return "slider"
+    if any(p in ground for p in points):
+        return "rocker"
+    return "coupler"
 
 
 class _AnyValue(Spec):
@@ -233,7 +279,7 @@ def _split_pair(key: str, pts: tuple[str, ...]) -> list[tuple[str, str]]:
 def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _RawLink:
     t = Table(value, path, LINK_KEYS)
     lid = _get(t, "mechanism.link", "id")
-    kind = _get(t, "mechanism.link", "kind")
+    kind = _get(t, "mechanism.link", "kind")   # None: inferred from the structure (infer_kind)
     pts = _get(t, "mechanism.link", "points")
     pp = t.at("points")
     for j, p in enumerate(pts):
@@ -416,6 +462,7 @@ def _resolve_links(raw_links: list[_RawLink], by_id: dict[int, _RawLink], drive_
                 raise TaskError(join(ln.path, what), f"the mass rules give a {what} that is not finite",
                                 f"a smaller [mechanism.mass_rules], or {what} given explicitly")
         lengths = tuple((p, q, l) for p, q, l, _ in ln.given.values())
+        assert ln.kind is not None  # given, or inferred in _mechanism before the mass rules
         out.append(Link(id=ln.id, kind=ln.kind, points=ln.points, lengths=lengths, mass=m, inertia=j,
                         com=ln.com, mass_given=ln.mass is not None, inertia_given=ln.inertia is not None))
     return out

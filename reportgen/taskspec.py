@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 from typing import Any, Literal
 
+from .errors import NameLookupError
 from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
                    Mechanism, Planetary)
 from .taskfile_values import REQUIRED, Array, Bool, Int, NameMap, Number, OneOf, Spec, Str, Word, vec2
@@ -83,7 +84,7 @@ class Section:
         for k in self.keys:
             if k.name == name:
                 return k
-        raise KeyError(name)
+        raise NameLookupError(f"key of [{self.path}]", name, self.names)
 
     def default(self, name: str) -> Any:
         """The loader's default for ``name`` (``REQUIRED`` if it must be given)."""
@@ -179,7 +180,10 @@ SECTIONS: tuple[Section, ...] = (
             "points is a rigid triangle, or a straight bar with a point between its ends.", (
                 Key("id", LINK_ID, "the link's number 1..n", 1),
                 Key("kind", Word(*LINK_KINDS), "what the link is called in the note (wording only)",
-                    "crank"),
+                    "crank", OPTIONAL, "inferred from the structure: the driver a crank, a link "
+                    "carrying a guide a slotted link, a one-point link a slider (frame guide) or block, "
+                    "a link on a frame guide a slider, a link turning about the frame a rocker, "
+                    "any other a coupler"),
                 Key("points", Array(POINT_NAME, 1, 3, what="an array of 1 to 3 point names"),
                     "the link's points, names of [mechanism.points], each once; a slider or block has one",
                     ["O", "A"]),

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, strategies as st
+from hypothesis import HealthCheck, given, settings, strategies as st
 
 from reportgen.geometry import cross, dot, perp, readonly, rot, rot_vec2, vec2
 
@@ -17,6 +17,7 @@ finite = st.floats(-1e6, 1e6, allow_nan=False)
 angle = st.floats(-20.0, 20.0, allow_nan=False)
 
 
+@settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(angle, finite, finite)
 def test_rotation_keeps_length_and_turns_by_the_angle(theta: float, x: float, y: float) -> None:
     p = np.array([x, y])
@@ -27,6 +28,7 @@ def test_rotation_keeps_length_and_turns_by_the_angle(theta: float, x: float, y:
     assert math.isclose(float(cross(p, r)), n * n * math.sin(theta), rel_tol=1e-9, abs_tol=1e-6 * max(n * n, 1))
 
 
+@settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(angle, angle, finite, finite)
 def test_rotations_compose(a: float, b: float, x: float, y: float) -> None:
     assert np.allclose(rot(a, rot(b, (x, y))), rot(a + b, (x, y)), rtol=1e-9, atol=1e-6)
@@ -38,6 +40,7 @@ def test_rotation_broadcasts_over_angles() -> None:
     assert rot_vec2(math.pi / 2, (2.0, 0.0)) == pytest.approx((0.0, 2.0), abs=1e-15)
 
 
+@settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(finite, finite)
 def test_perp_is_a_quarter_turn_counter_clockwise(x: float, y: float) -> None:
     v = np.array([x, y])

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import cast
 
-from markupsafe import Markup
+from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var
 from reportgen.planetary.schemes import expand
@@ -162,7 +162,7 @@ def content(project) -> PartContent:
         crank = {"omega": w, "dev": dev}
     z = expand(d.scheme, d.z)
     labels = d.scheme.labels
-    z_row = [(Markup(f"$z_{{{lab.replace('′', chr(39))}}}$"), zz) for lab, zz in zip(labels, d.z)]
+    z_row = [(Tex(f"$z_{{{lab.replace('′', chr(39))}}}$"), zz) for lab, zz in zip(labels, d.z)]
     alternatives = []
     for cand in d.alternatives:
         alternatives.append(("/".join(str(v) for v in cand.z), cand.satellites, abs(cand.ratio),
@@ -174,11 +174,11 @@ def content(project) -> PartContent:
         what = it.what.replace("′", "'")
         if it.kind == "internal mesh":
             a_, b_ = what.split("−")
-            sym = Markup(f"z_{{{a_}}} - z_{{{b_}}}")
+            sym = Tex(f"z_{{{a_}}} - z_{{{b_}}}")
         else:
-            sym = Markup(f"z_{{{what}}}")
+            sym = Tex(f"z_{{{what}}}")
         undercut.append({"sym": sym, "value": it.value, "limit": it.limit, "holds": it.holds,
-                         "kind": Markup(kinds[it.kind])})
+                         "kind": Tex(kinds[it.kind])})
     figures = {}
     if stage.triangle is not None:
         figures["planetary_scheme"] = planetary_figure(stage)
@@ -200,8 +200,8 @@ def _coax_text(d) -> dict:
     left_num = f"{z1} {s1} {z2}"
     right_sym = f"z_3 {s2} {p_sym}"
     right_num = f"{z3} {s2} {p_val}"
-    return {"left_sym": Markup(left_sym), "left_num": Markup(left_num), "left": d.coaxial.left,
-            "right_sym": Markup(right_sym), "right_num": Markup(right_num), "right": d.coaxial.right,
+    return {"left_sym": Tex(left_sym), "left_num": Tex(left_num), "left": d.coaxial.left,
+            "right_sym": Tex(right_sym), "right_num": Tex(right_num), "right": d.coaxial.right,
             "holds": d.coaxial.holds}
 
 
@@ -215,4 +215,4 @@ def _conclusion(stage, tr) -> str:
     if tr is not None:
         text += (f" По~треугольнику скоростей $u_\\text{{гр}} = {mnum(tr['u_graph'].value, 5)}$ "
                  f"(расхождение ${tr['diff'].result_number_latex()}$~\\%).")
-    return Markup(text)
+    return Tex(text)

@@ -3,28 +3,31 @@ results.json.
 
 Everything is written into a temporary folder beside OUT and moved into place at the end, so a
 failure never leaves a half-written OUT. A failed LaTeX run keeps its folder as ``OUT.failed/`` (the
-.tex and the log) and says where; bad input (exit 2) leaves nothing behind.
+.tex and the log) and says where; bad input (exit 2) leaves nothing behind. Which folders OUT may
+be (new, empty or an earlier reportgen output with its manifest) is ``outdir.py``'s rule.
 """
 from __future__ import annotations
 
 import argparse
-import os
 import shutil
 import tempfile
 import time
+import traceback
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..errors import BuildError, OptionError
+from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
 from ..results import build_results, dumps
 from ..taskfile import load_task
+from .outdir import check_output_folder, keep_failed, replace_folder
 
 
 def register(sub) -> None:
     p = sub.add_parser("build", help="build the note (PDF), the sheets (DXF + PNG) and results.json")
     p.add_argument("task", help="the task file (TOML)")
-    p.add_argument("-o", "--out", required=True, metavar="OUT", help="output folder (replaced as a whole)")
+    p.add_argument("-o", "--out", required=True, metavar="OUT",
+                   help="output folder: new, empty or an earlier reportgen output (replaced as a whole)")
     p.add_argument("--quiet", action="store_true", help="no progress on stdout")
     p.add_argument("--no-pdf", action="store_true", help="write report.tex and figures but do not run LaTeX")
     p.add_argument("--no-sheets", action="store_true", help="do not draw the DXF sheets")
@@ -32,16 +35,21 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+ERROR_LOG = "error.log"  # in OUT.failed/ when a stage other than LaTeX failed
+
+
 class Progress:
-    """Prints each stage with the time it took."""
+    """Prints each stage with the time it took; ``current`` is the stage running (for error messages)."""
 
     def __init__(self, quiet: bool):
         self.quiet = quiet
         self.times: dict[str, float] = {}
+        self.current: str | None = None
 
     @contextmanager
     def stage(self, name: str):
         t0 = time.perf_counter()
+        self.current = name
         if not self.quiet:
             print(f"  {name} …", end="", flush=True)
         try:
@@ -67,11 +75,8 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
     with progress.stage("task"):
         task = load_task(task_path)
     project = Project(task)
-    out = out.resolve()
-    parent = out.parent
-    if not parent.is_dir():
-        raise OptionError("--out", f"the folder {parent} does not exist", "a path in an existing folder")
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=parent))
+    out = check_output_folder(out, Path(task_path))
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
     try:
         with progress.stage("solve"):
             results = build_results(project)
@@ -80,16 +85,23 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
         if sheets:
             _sheets(project, tmp, progress)
         (tmp / "results.json").write_text(dumps(results), encoding="utf-8")
+    except ReportgenInputError:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
     except BuildError as exc:
-        failed = out.with_name(out.name + ".failed")
-        shutil.rmtree(failed, ignore_errors=True)
-        tmp.rename(failed)
+        failed = keep_failed(tmp, out)
         kept = (exc.kept or "").replace(str(tmp), str(failed)) or str(failed)
         raise BuildError(exc.stage, exc.problem.replace(str(tmp), str(failed)), kept) from None
+    except Exception as exc:  # any other failure of a stage (a ReportgenError or a bug): keep what was made
+        (tmp / ERROR_LOG).write_text(traceback.format_exc(), encoding="utf-8")
+        failed = keep_failed(tmp, out)
+        problem = str(exc) if isinstance(exc, ReportgenError) else f"{type(exc).__name__}: {exc}"
+        raise BuildError(progress.current or "build", problem,
+                         f"what was made, in {failed} ({ERROR_LOG}: the error and where it happened)") from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    _replace_dir(tmp, out)
+    replace_folder(tmp, out)
     return progress.times
 
 
@@ -131,17 +143,6 @@ def _sheets(project: Project, tmp: Path, progress: Progress) -> None:
             dxf = folder / f"{stem}.dxf"
             sheet.save(dxf)
             render_png(dxf, folder / f"{stem}.png", dpi=60)
-
-
-def _replace_dir(tmp: Path, out: Path) -> None:
-    """Move ``tmp`` to ``out``, replacing an old ``out`` only once the new one is complete."""
-    old = None
-    if out.exists():
-        old = out.with_name(f".{out.name}.old-{os.getpid()}")
-        out.rename(old)
-    tmp.rename(out)
-    if old is not None:
-        shutil.rmtree(old, ignore_errors=True)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -17,6 +17,7 @@ from scipy.optimize import minimize_scalar
 
 from .cycle import TWO_PI, Cycle
 from .quadrature import DEFAULT_ORDER, cumulative, integrate_intervals, split_at
+from ..errors import ComputationError
 
 #: Absolute tolerance on θ (rad) when an extreme between grid nodes is refined (the value near an
 #: extreme errs by the square of it).
@@ -90,5 +91,5 @@ def extreme(g: Callable[[np.ndarray], np.ndarray], nodes: np.ndarray, values: np
         if s * v > s * best_v:
             best_t, best_v = float(r.x), v
     if not math.isfinite(best_v):
-        raise ArithmeticError("a non-finite value in the search for an extreme")
+        raise ComputationError("the search for an extreme of ΔE", "a non-finite value")
     return best_t, best_v

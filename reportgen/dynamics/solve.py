@@ -16,6 +16,7 @@ from .quadrature import DEFAULT_ORDER
 from .result import DynamicsResult, compare
 from .wittenbauer import merzalov, wittenbauer_exact
 from ..geometry import readonly as _ro
+from ..errors import ParameterError
 
 #: The fewest grid positions kept in results.json (RESULTS_FORMAT.md / issue #5).
 MIN_POSITIONS = 360
@@ -39,7 +40,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
     """The flywheel calculation of any cycle (a project's or an analytic one)."""
     delta = check_delta(delta)
     if n < 8:
-        raise ValueError("n must be at least 8")
+        raise ParameterError("n", n, "at least 8 crank positions")
     theta = np.arange(n) * TWO_PI / n
     prof = EnergyProfile(cycle, theta, order)
     idx = np.searchsorted(prof.nodes, theta)

@@ -24,6 +24,7 @@ from shapely.geometry import LineString
 
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
 from ..geometry import readonly as _ro, rot, vec2
+from ..errors import GeometryError, ParameterError
 
 from ..geometry import Vec2 as Point
 
@@ -90,7 +91,7 @@ def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: floa
     b = w @ u
     disc = b * b - (w @ w - radius * radius)
     if disc < 0:
-        raise ValueError("the line misses the circle")
+        raise GeometryError("the line", f"misses the circle r = {radius}")
     root = math.sqrt(disc)
     return -b - root, -b + root
 
@@ -131,7 +132,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
     (≥ 3, odd numbers centre the pair at P) teeth of each gear. ``simplify``: a tolerance in mm
     for the tooth polylines (default 2e-4·m)."""
     if n_teeth < 1:
-        raise ValueError("n_teeth must be ≥ 1")
+        raise ParameterError("n_teeth", n_teeth, "≥ 1")
     g = pair.geometry
     tooth1, tooth2 = pair_teeth(pair, positions)
     tol = simplify if simplify is not None else 2e-4 * g.m

@@ -25,6 +25,7 @@ from shapely.geometry import Polygon
 
 from .involute import inv
 from ..geometry import readonly as _ro
+from ..errors import GeometryError
 
 DEFAULT_POSITIONS = 481
 
@@ -116,7 +117,7 @@ class GeneratedTooth:
                     th = math.atan2(q[1], q[0])
                     (left if th > math.pi / 2 else right).append(th)
         if not left or not right:
-            raise ValueError(f"the circle r = {radius} does not cross both flanks")
+            raise GeometryError(f"the circle r = {radius}", "does not cross both flanks of the tooth")
         return min(left), max(right)
 
     def thickness(self, radius: float) -> float:

@@ -15,13 +15,14 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from ..errors import ReportgenError
 from .constraints import rot, world
 from .solve import KinematicModel
 
 GRID = 720
 
 
-class NoExtremesError(ValueError):
+class NoExtremesError(ReportgenError, ValueError):
     """The output link turns fully: it has no extreme positions."""
 ROOT_XTOL = 1e-13
 

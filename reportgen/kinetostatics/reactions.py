@@ -27,7 +27,7 @@ import math
 from dataclasses import dataclass
 import numpy as np
 
-from ..errors import SingularPositionError
+from ..errors import InternalError, NameLookupError, SingularPositionError
 from ..kinematics import KinematicsResult
 from ..kinematics.constraints import rot, world
 from ..linkage import Linkage
@@ -76,7 +76,7 @@ class PairReaction:
             return self.vector
         if k == self.lo:
             return -self.vector
-        raise KeyError(k)
+        raise NameLookupError(f"link of the pair {self.name}", k, (self.lo, self.hi))
 
     def other(self, k: int) -> int:
         return self.lo if k == self.hi else self.hi
@@ -101,7 +101,7 @@ class Reactions:
         for p in self.pairs:
             if p.name == name:
                 return p
-        raise KeyError(name)
+        raise NameLookupError("pair", name, tuple(p.name for p in self.pairs))
 
     def pairs_of(self, k: int) -> tuple[PairReaction, ...]:
         return tuple(p for p in self.pairs if k in (p.lo, p.hi))
@@ -200,7 +200,7 @@ def solve_group(linkage: Linkage, group: Group, q: np.ndarray, known: _Known, L:
     row = {k: 3 * i for i, k in enumerate(links)}
     n_unk = 2 * len(group.pairs)
     if n_unk != 3 * len(links):
-        raise ValueError(f"group {group.label} is not statically determinate ({n_unk} unknowns)")
+        raise InternalError(f"group {group.label}", f"not statically determinate ({n_unk} unknowns, {3 * len(links)} equations)")
     geo = [_pair_geometry(linkage, q, p) for p in group.pairs]
     O = np.mean([g[0] for g in geo], axis=0)
     A = np.zeros((N, 3 * len(links), n_unk))

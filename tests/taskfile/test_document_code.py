@@ -8,16 +8,19 @@ from reportgen.commands.build import _designation
 from reportgen.errors import TaskError
 from reportgen.taskfile import parse_task
 
+#: the smallest task that has something to build (an empty task is refused)
+GEARS = {"gears": {"z1": 13, "z2": 26, "module": 9}}
+
 
 def test_default_is_todays_designation() -> None:
-    task = parse_task({})
+    task = parse_task(dict(GEARS))
     assert task.document.sheet_code(1) == "ТММ.КП.00.00.001"
     assert task.document.note_code() == "ТММ.КП.00.00.000 ПЗ"
     assert _designation(task) == "ТММ.КП.00.00.000 ПЗ"
 
 
 def test_code_from_the_task_reaches_note_and_sheets() -> None:
-    task = parse_task({"document": {"code": "ТММ.КП.12.05"}})
+    task = parse_task({**GEARS, "document": {"code": "ТММ.КП.12.05"}})
     assert task.document.sheet_code(3) == "ТММ.КП.12.05.003"
     assert _designation(task) == "ТММ.КП.12.05.000 ПЗ"
 
@@ -25,7 +28,7 @@ def test_code_from_the_task_reaches_note_and_sheets() -> None:
 @pytest.mark.parametrize("bad", ["", "  ", 5, True])
 def test_bad_code_names_the_key(bad: object) -> None:
     with pytest.raises(TaskError) as err:
-        parse_task({"document": {"code": bad}})
+        parse_task({**GEARS, "document": {"code": bad}})
     assert err.value.path == "document.code"
 
 
