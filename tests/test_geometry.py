@@ -82,3 +82,10 @@ def test_one_home_for_each_helper(pattern: str, home: str) -> None:
     rx = re.compile(pattern, re.M)
     found = [str(p.relative_to(ROOT)) for p in _sources() if rx.search(p.read_text(encoding="utf-8"))]
     assert found == [home], f"{pattern} defined outside {home}: {found}"
+
+
+def test_the_core_keeps_no_bare_division_floor() -> None:
+    """reportgen/ (the pure core) writes its division floor as tolerances.TINY, not 1e-300."""
+    found = [str(p.relative_to(ROOT)) for p in (ROOT / "reportgen").rglob("*.py")
+             if p.name != "tolerances.py" and re.search(r"(?<![\w.])1e-300", p.read_text(encoding="utf-8"))]
+    assert not found, found

@@ -24,6 +24,7 @@ from ..errors import AssemblyError
 from ..geometry import cross as _cross, dot as _dot
 from ..linkage import Linkage
 from ..structure import Group, Pair
+from ..tolerances import RTOL_EQUAL
 from .constraints import Constraint, RevoluteC, SlideC, assemble, perp, residual, revolute, rot, world
 
 #: Newton on class III+ groups: relative step tolerance and iteration cap.
@@ -221,7 +222,7 @@ class DyadSolver:
         rhs = -F[:, pos_rows]
         det = np.linalg.det(A)
         scale = np.prod(np.linalg.norm(A, axis=2), axis=1)
-        margin = np.abs(det) / np.where(scale > 0, scale, 1.0) - 1e-9
+        margin = np.abs(det) / np.where(scale > 0, scale, 1.0) - RTOL_EQUAL
         if strict:
             self._fail(phi, margin, lambda _i: "the two lines of the group are parallel: no intersection")
         ok = margin >= 0

@@ -327,7 +327,7 @@ def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, ar
             P2 = world(q, k, linkage.bodies[k].local[pts[1]])[0]
             d = P2 - P1
             den = float(_cross(F, d))
-            if abs(den) > 1e-12 * mag * float(np.hypot(*d)):
+            if abs(den) > RTOL_ROUNDOFF * mag * float(np.hypot(*d)):
                 t = float(_cross(P1 - point, d)) / den
                 swing = _ro(point + t * F)
         m_meas = math.copysign(mag * h_meas * mu_l, M)
