@@ -33,7 +33,10 @@ def readonly(a: Any, dtype: Any = float) -> np.ndarray:
 def rot(theta: Any, p: Vec2 | np.ndarray) -> np.ndarray:
     """R(θ)·p for an angle or an array of angles θ (rad): shape ``θ.shape + (2,)``."""
     c, s = np.cos(theta), np.sin(theta)
-    return np.stack((c * p[0] - s * p[1], s * p[0] + c * p[1]), axis=-1)
+    out = np.empty(np.shape(c) + (2,))      # filled in place: faster than np.stack, same bits
+    out[..., 0] = c * p[0] - s * p[1]
+    out[..., 1] = s * p[0] + c * p[1]
+    return out
 
 
 def rot_vec2(theta: float, p: Vec2) -> Vec2:
@@ -44,7 +47,10 @@ def rot_vec2(theta: float, p: Vec2) -> Vec2:
 def perp(v: np.ndarray) -> np.ndarray:
     """v turned by +90° (counter-clockwise): (x, y) → (−y, x), over the last axis."""
     v = np.asarray(v, dtype=float)
-    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
+    out = np.empty(v.shape[:-1] + (2,))
+    out[..., 0] = -v[..., 1]
+    out[..., 1] = v[..., 0]
+    return out
 
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
