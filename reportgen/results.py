@@ -1,4 +1,4 @@
-"""results.json (``../shared/RESULTS_FORMAT.md``): the numbers the note prints and the sheets draw.
+"""results.json (``docs/results.md``): the numbers the note prints and the sheets draw.
 
 Vectors are [x, y] in SI units, angles in degrees, angular speeds in rad/s (positive =
 counter-clockwise); position-wise lists follow ``kinematics.phi_deg``. Keys beyond the contract are

@@ -1,4 +1,4 @@
-"""The task (задание) as frozen dataclasses: the contract of ``../shared/TASK_FORMAT.md``.
+"""The task (задание) as frozen dataclasses: the format of ``docs/task-format.md`` (generated from ``reportgen/taskspec.py``).
 
 ``reportgen.taskfile.load_task(path)`` reads a TOML file into a :class:`Task`, validating every key
 (errors carry the TOML path). Units are SI here (m, kg, s, N, rad), except that gear sizes stay in

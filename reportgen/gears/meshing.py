@@ -23,7 +23,7 @@ import numpy as np
 from shapely.geometry import LineString
 
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
-from ..geometry import readonly as _ro, rot, vec2
+from ..geometry import readonly as _ro, vec2
 from ..errors import GeometryError, ParameterError
 
 from ..geometry import Vec2 as Point
@@ -82,7 +82,8 @@ class MeshingPicture:
 
 def _placed(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:
     """A polyline (n, 2) turned by ``ang`` about the origin, then moved by ``shift``."""
-    return _ro(rot(ang, np.asarray(pts).T) + np.asarray(shift))
+    c, s = math.cos(ang), math.sin(ang)
+    return _ro(np.asarray(pts) @ np.array([[c, s], [-s, c]]) + np.asarray(shift))
 
 
 def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: float) -> tuple[float, float]:
