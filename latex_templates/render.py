@@ -221,14 +221,16 @@ class Strings:
         """The ЕСКД designation (ГОСТ 2.201) of the note (``number`` None) or of sheet ``number``:
         ``[document] code`` (its default, the catalogue's ``designation.default_code``, is the
         language's, Latin letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
+        from dataclasses import replace
+
         from reportgen.task import Document
-        default = Document.__dataclass_fields__["code"].default
-        code = getattr(document, "code", default) or default
-        if code == default:
-            code = str(self.get("designation.default_code"))
+        if document is None:
+            document = Document()
+        if document.code == Document().code:          # not given: the language's default letters
+            document = replace(document, code=str(self.get("designation.default_code")))
         if number is None:
-            return code + str(self.get("designation.note_suffix"))
-        return f"{code}.{number:03d}"
+            return str(document.code) + str(self.get("designation.note_suffix"))
+        return str(document.sheet_code(number))
 
     def symbol(self, name: str) -> str:
         """A solver's load name or a sheet label (``Fур``, ``Mи2``, ``Адв``) in this language:

@@ -66,8 +66,8 @@ def positions_figure(linkage, q_all: np.ndarray, bold: tuple[int, ...], traces: 
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
     allpts = np.concatenate([np.array(list(world_points(linkage, q).values())) for q in q_all])
     L = float(max(np.ptp(allpts[:, 0]), np.ptp(allpts[:, 1])))
-    for tr in traces.values():
-        ax.plot(tr[:, 0], tr[:, 1], color="0.55", lw=0.6, ls="-.")
+    for trace in traces.values():
+        ax.plot(trace[:, 0], trace[:, 1], color="0.55", lw=0.6, ls="-.")
     for i, q in enumerate(q_all):
         if i in bold:
             continue
