@@ -133,10 +133,12 @@ def extremes(evaluate: Callable[[np.ndarray], tuple], nodes: np.ndarray,
             # after the first round only the bracket around the best sample so far is searched on:
             # the function is unimodal around its extreme, across the node between the intervals
             if len(br) > 1:
+                # (a best sample on the node shared by both brackets keeps both sides, as one bracket:
+                # the extreme may lie just beyond the node, closer than one sample spacing)
                 keep = [i for i, (a, b) in enumerate(br) if a - 1e-15 <= best[k][0] <= b + 1e-15]
                 if keep:
-                    brackets[k] = [br[keep[0]]]
-                    limits[k] = [limits[k][keep[0]]]
+                    brackets[k] = [(min(br[i][0] for i in keep), max(br[i][1] for i in keep))]
+                    limits[k] = [(min(limits[k][i][0] for i in keep), max(limits[k][i][1] for i in keep))]
     for t_best, v_best in best:
         if not math.isfinite(v_best):
             raise ArithmeticError("a non-finite value in the search for an extreme")

@@ -3,25 +3,28 @@ results.json.
 
 Everything is written into a temporary folder beside OUT and moved into place at the end, so a
 failure never leaves a half-written OUT. A failed LaTeX run keeps its folder as ``OUT.failed/`` (the
-.tex and the log) and says where; bad input (exit 2) leaves nothing behind.
+.tex and the log) and says where; bad input (exit 2) leaves nothing behind. Which folders OUT may
+be (new, empty or an earlier reportgen output with its manifest) is ``outdir.py``'s rule.
 """
 from __future__ import annotations
 
 import argparse
-import os
 import shutil
-import sys
 import tempfile
 import time
+import traceback
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..errors import BuildError, OptionError, ReportgenInputError
+from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
 from ..taskfile import load_task
+from .outdir import check_output_folder, keep_failed, replace_folder
 
 if TYPE_CHECKING:
     from .pipeline import Timeline
+
+ERROR_LOG = "error.log"  # in OUT.failed/ when a stage other than LaTeX failed
 
 
 def register(sub) -> None:
@@ -39,11 +42,19 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+def _designation(task) -> str:
+    """The designation of the note: [document] code with « ПЗ» (reportgen.task.Document.note_code)."""
+    return task.document.note_code()
+
+
 def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, sheets: bool = True,
           latexmk: str = "latexmk", cache: bool = False, timeline: "Timeline | None" = None) -> dict[str, float]:
     """Build everything into ``out``; returns the time of each stage (``timeline`` gets the spans:
     what ran in parallel, see :mod:`reportgen.commands.pipeline`); ``cache``: read and write the
-    build cache (:mod:`reportgen.cache`; the command line's default)."""
+    build cache (:mod:`reportgen.cache`; the command line's default).
+
+    ``out`` must pass the output-folder rule (:mod:`reportgen.commands.outdir`) before anything is
+    written."""
     from .. import cache as build_cache
     from . import pipeline
 
@@ -51,12 +62,9 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
     with progress.stage("task"):
         task = load_task(task_path)
     project = Project(task)
-    out = out.resolve()
-    parent = out.parent
-    if not parent.is_dir():
-        raise OptionError("--out", f"the folder {parent} does not exist", "a path in an existing folder")
+    out = check_output_folder(out, Path(task_path))
     store = build_cache.open_cache(task_path, pdf=pdf, sheets=sheets, latexmk=latexmk) if cache else None
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=parent))
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
     try:
         if store is not None and store.restore_build(tmp):
             progress.spans.append(pipeline.Span("from the cache", pipeline.MAIN, progress.origin, time.perf_counter()))
@@ -66,28 +74,24 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
             pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
             if store is not None:
                 store.store_build(tmp)
+    except ReportgenInputError:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
     except BuildError as exc:
-        failed = out.with_name(out.name + ".failed")
-        shutil.rmtree(failed, ignore_errors=True)
-        tmp.rename(failed)
+        failed = keep_failed(tmp, out)
         kept = (exc.kept or "").replace(str(tmp), str(failed)) or str(failed)
         raise BuildError(exc.stage, exc.problem.replace(str(tmp), str(failed)), kept) from None
+    except Exception as exc:  # any other failure of a stage (a ReportgenError or a bug): keep what was made
+        (tmp / ERROR_LOG).write_text(traceback.format_exc(), encoding="utf-8")
+        failed = keep_failed(tmp, out)
+        problem = str(exc) if isinstance(exc, ReportgenError) else f"{type(exc).__name__}: {exc}"
+        raise BuildError(progress.current or "build", problem,
+                         f"what was made, in {failed} ({ERROR_LOG}: the error and where it happened)") from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    _replace_dir(tmp, out)
+    replace_folder(tmp, out)
     return progress.times
-
-
-def _replace_dir(tmp: Path, out: Path) -> None:
-    """Move ``tmp`` to ``out``, replacing an old ``out`` only once the new one is complete."""
-    old = None
-    if out.exists():
-        old = out.with_name(f".{out.name}.old-{os.getpid()}")
-        out.rename(old)
-    tmp.rename(out)
-    if old is not None:
-        shutil.rmtree(old, ignore_errors=True)
 
 
 def run(args: argparse.Namespace) -> int:

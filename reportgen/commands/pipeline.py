@@ -47,10 +47,13 @@ class Timeline:
     quiet: bool = False
     spans: list[Span] = field(default_factory=list)
     origin: float = field(default_factory=time.perf_counter)
+    current: str | None = None   # the main-lane stage running (named when it fails)
 
     @contextmanager
     def stage(self, name: str, lane: str = MAIN) -> Iterator[None]:
         t0 = time.perf_counter()
+        if lane == MAIN:
+            self.current = name
         if not self.quiet:
             print(f"  {name} …", end="", flush=True)
         try:
@@ -150,7 +153,7 @@ def _note(project: Any, tmp: Path, timeline: Timeline) -> Path:
 
     with timeline.stage("note: sections and figures"):
         sections, left_out = compose(project, Strings(project.task.document.language or "ru"))
-        note = NoteBuilder(project.task.document, designation="ТММ.КП.00.00.000 ПЗ",
+        note = NoteBuilder(project.task.document, designation=project.task.document.note_code(),
                            introduction=introduction_paragraphs(project, left_out),
                            conclusions=[c for s in sections for c in s.conclusions],
                            assignment=assignment_section(project))

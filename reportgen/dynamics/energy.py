@@ -61,7 +61,7 @@ class EnergyProfile:
 
 
 def extreme(g: Callable[[np.ndarray], np.ndarray], nodes: np.ndarray, values: np.ndarray,
-            kind: str) -> tuple[float, float]:
+             kind: str) -> tuple[float, float]:
     """(θ, g(θ)) of the largest (``kind`` = "max") or smallest value of a continuous periodic g:
     the best node, then a vectorised search on each neighbouring interval (g is smooth inside an
     interval between nodes, since the break angles are nodes; see :func:`reportgen.roots.extremes`,

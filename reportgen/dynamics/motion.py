@@ -17,10 +17,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .cycle import TWO_PI, Cycle
+from .cycle import Cycle
 from ..roots import brent_root, extremes
 from .energy import EnergyProfile
 from .errors import DynamicsInputError
+from ..errors import ComputationError
 
 
 @dataclass(frozen=True)
@@ -110,7 +111,7 @@ def integrate_ivp(cycle: Cycle, M_drive: float, J_fly: float, omega0: float, the
         t_eval = np.union1d(theta_out[inside], [b])
         sol = solve_ivp(rhs, (a, b), [w], method="DOP853", rtol=rtol, atol=rtol * abs(omega0), t_eval=t_eval)
         if not sol.success:
-            raise ArithmeticError(f"solve_ivp failed on θ ∈ [{a}, {b}]: {sol.message}")
+            raise ComputationError("the equation of motion (solve_ivp)", f"failed on θ ∈ [{a}, {b}]: {sol.message}")
         out[inside] = np.interp(theta_out[inside], sol.t, sol.y[0])   # exact: the same points
         w = float(sol.y[0, -1])
     return out

@@ -15,15 +15,11 @@ from .motion import steady_motion
 from .quadrature import DEFAULT_ORDER
 from .result import DynamicsResult, compare
 from .wittenbauer import wittenbauer_and_merzalov
+from ..errors import ParameterError
+from ..geometry import readonly as _ro
 
 #: The fewest grid positions kept in results.json (RESULTS_FORMAT.md / issue #5).
 MIN_POSITIONS = 360
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def check_delta(delta: float) -> float:
@@ -41,7 +37,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
     this cycle on the same grid, when the caller has it already."""
     delta = check_delta(delta)
     if n < 8:
-        raise ValueError("n must be at least 8")
+        raise ParameterError("n", n, "at least 8 crank positions")
     theta = np.arange(n) * TWO_PI / n
     prof = profile if profile is not None else EnergyProfile(cycle, theta, order)
     idx = np.searchsorted(prof.nodes, theta)

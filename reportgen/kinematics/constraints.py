@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..geometry import perp, rot
 from ..linkage import Linkage, SlidePair
 
 
@@ -52,22 +53,6 @@ def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
         cons.extend(revolute(linkage, jt.name, b0, b) for b in jt.bodies[1:])
     cons.extend(SlideC(s) for s in linkage.slides)
     return cons
-
-
-def rot(theta: np.ndarray, p: tuple[float, float]) -> np.ndarray:
-    """R(θ)·p for an array of angles: shape (..., 2)."""
-    c, s = np.cos(theta), np.sin(theta)
-    out = np.empty(np.shape(c) + (2,))
-    out[..., 0] = c * p[0] - s * p[1]
-    out[..., 1] = s * p[0] + c * p[1]
-    return out
-
-
-def perp(v: np.ndarray) -> np.ndarray:
-    out = np.empty(v.shape[:-1] + (2,))
-    out[..., 0] = -v[..., 1]
-    out[..., 1] = v[..., 0]
-    return out
 
 
 def world(q: np.ndarray, k: int, p: tuple[float, float]) -> np.ndarray:

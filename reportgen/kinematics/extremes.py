@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import ReportgenError
 from ..roots import brent_root
 from .constraints import rot, world
 from .solve import KinematicModel
@@ -21,7 +22,7 @@ from .solve import KinematicModel
 GRID = 720
 
 
-class NoExtremesError(ValueError):
+class NoExtremesError(ReportgenError, ValueError):
     """The output link turns fully: it has no extreme positions."""
 ROOT_XTOL = 1e-13
 

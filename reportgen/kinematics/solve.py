@@ -18,18 +18,13 @@ from ..errors import AssemblyError, SingularPositionError
 from ..linkage import Linkage, compile_linkage, sketch_q
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
-from .constraints import assemble, gamma, jacobian_rows, known_terms, perp, rot, world
+from .constraints import assemble, gamma, known_terms, perp, rot, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
+from ..geometry import readonly as _ro
 
 #: Largest crank step when following a class III+ group by continuation, rad.
 CONTINUATION_STEP = math.radians(5.0)
-
-
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a)
-    a.setflags(write=False)
-    return a
 
 
 @dataclass(frozen=True)
