@@ -150,9 +150,9 @@ def solver_table(task_path: Path, quick: bool) -> Table:
     def gear_stages():
         p = Project(task)
         if task.gears is not None:
-            p.gears
+            _ = p.gears
         if task.planetary is not None:
-            p.planetary
+            _ = p.planetary
         return p
 
     rows = []
@@ -173,7 +173,7 @@ def solver_table(task_path: Path, quick: bool) -> Table:
     env = dict(os.environ, REPORTGEN_CACHE="off")
     ps = []
     with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
-        for i in range(2 if quick else 5):
+        for _ in range(2 if quick else 5):
             try:
                 ps.append(_run(["solve", str(task_path.resolve()), "--json", str(Path(tmp) / "r.json"), "--quiet"], env,
                                Path(tmp)))
