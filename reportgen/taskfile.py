@@ -24,11 +24,14 @@ from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Drive, Dynamics, F
 from .taskfile_values import (Array, Bool, Int, Number, OneOf, Spec, Str, Table, Word, array_of_tables,
                               check_keys, fmt, index, join, show, suggest, vec2)
 
-__all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "COLLINEAR_RTOL"]
+__all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "MIN_LENGTH", "COLLINEAR_RTOL"]
 
 #: Largest coordinate magnitude and link length accepted, m (catches gross unit slips; solver
 #: scale tests go up to ~400 m).
 MAX_LENGTH = 1000.0
+#: Smallest link length accepted, m: 1 µm. Between the two, reportgen.gost_scales draws every
+#: mechanism within a sheet (1:50000 … (100·n):1).
+MIN_LENGTH = 1e-6
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
 COLLINEAR_RTOL = 1e-9
 
@@ -57,7 +60,7 @@ PLANETARY_KEYS = ("scheme", "motor_rpm", "ratio", "tolerance", "satellites", "mo
 PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-row-int-int")
 
 # Value specs shared by several keys.
-_LENGTH = Number(gt=0, le=MAX_LENGTH, unit="m")
+_LENGTH = Number(ge=MIN_LENGTH, le=MAX_LENGTH, unit="m")
 _MASS = Number(gt=0, unit="kg")
 _INERTIA = Number(ge=0, unit="kg·m²")  # > 0 is checked afterwards, except for slider-rule links
 _INERTIA.expected = "a number > 0, in kg·m² (0 allowed for a slider or block)"
