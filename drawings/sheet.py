@@ -275,6 +275,7 @@ class Sheet:
     def save(self, path: str | os.PathLike[str]) -> Drawing:
         """Write the DXF (reproducibly: fixed dates and GUIDs) and return the document."""
         with style.reproducible():
+            style.fix_classes_order(self.doc)
             self.doc.saveas(os.fspath(path))
         return self.doc
 

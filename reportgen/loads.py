@@ -23,16 +23,11 @@ import numpy as np
 
 from .errors import TaskError
 from .kinematics import KinematicsResult
-from .kinematics.constraints import rot, world
+from .kinematics.constraints import world
 from .kinematics.extremes import Strokes
 from .linkage import Linkage
-from .task import Load, Mechanism
-
-
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
+from .task import Mechanism
+from .geometry import readonly as _ro
 
 
 @dataclass(frozen=True)

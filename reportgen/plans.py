@@ -22,6 +22,7 @@ from typing import Mapping
 
 import numpy as np
 
+from .geometry import perp as _perp
 from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .structure import Group, Structure
@@ -103,10 +104,6 @@ class Plan:
             if c.name == name:
                 return c
         raise NameLookupError("plan component", name, tuple(c.name for c in self.components))
-
-
-def _perp(v: np.ndarray) -> np.ndarray:
-    return np.array([-v[1], v[0]])
 
 
 class _Builder:

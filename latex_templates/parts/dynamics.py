@@ -311,9 +311,14 @@ def method_rows(project, res) -> tuple[list[MethodRow], dict[str, np.ndarray]]:
     """J_fly by each method, its difference from the exact one, and the δ it gives (the steady
     motion with that flywheel, by the solver's ``steady_motion``); also ω(θ) of each."""
     from reportgen.dynamics import EnergyProfile, ProjectCycle, steady_motion
+    from reportgen.dynamics.solve import energy_of
 
-    cycle = ProjectCycle(project, res.crank_inertia)
-    profile = EnergyProfile(cycle, np.asarray(res.theta))
+    dyn = project.task.dynamics
+    if dyn is not None and res.crank_inertia == dyn.crank_inertia:
+        cycle, profile = energy_of(project, len(res.theta))     # the solver's own, computed once
+    else:
+        cycle = ProjectCycle(project, res.crank_inertia)
+        profile = EnergyProfile(cycle, np.asarray(res.theta))
     rows, omegas = [], {}
     for c in res.comparison:
         if c.method == "exact":

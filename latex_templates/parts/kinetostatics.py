@@ -309,7 +309,7 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
                        meaning=f"плечо переноса силы инерции звена {k}")
             ent["h"] = h
             ent["h_mm"] = record(f"h_{{\\text{{и}}{k}}}^{{\\text{{сх}}}}", "h / mu_l", "мм", mu_l, h=h,
-                                 meaning=f"плечо переноса на схеме")
+                                 meaning="плечо переноса на схеме")
             ent["repl"] = {"measured": x.h_mm_measured, "swing": x.swing_point is not None,
                            "sense": "против" if x.moment > 0 else "по"}
         links.append(ent)

@@ -7,11 +7,10 @@ through calculation records or filters.
 """
 from __future__ import annotations
 
-import math
 
 from ..render import Tex
 
-from reportgen.calc import CalcRecord, Var, record
+from reportgen.calc import CalcRecord, Var
 from reportgen.planetary.schemes import expand
 
 from . import PartContent
@@ -88,7 +87,7 @@ def planetary_records(stage) -> dict[str, object]:
     if sch.two_row:
         sign = "+" if asm.sign == "+" else "-"
         g = Var("g", r"\text{НОД}(z_2, z_{2'})", asm.g, "", "наибольший общий делитель чисел зубьев венцов сателлита")
-        expr = f"(z1 * z2p {sign} z3 * z2) / (K * g)" if sign == "+" else f"abs(z1 * z2p - z3 * z2) / (K * g)"
+        expr = f"(z1 * z2p {sign} z3 * z2) / (K * g)" if sign == "+" else "abs(z1 * z2p - z3 * z2) / (K * g)"
         r["assembly"] = _rec("C", expr, "", 4, "", z1=zv["z1"], z2p=zv["z2p"], z3=zv["z3"], z2=zv["z2"], K=K, g=g)
     else:
         r["assembly"] = _rec("C", "(z1 + z3) / K", "", 4, "", z1=zv["z1"], z3=zv["z3"], K=K)

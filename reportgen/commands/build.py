@@ -13,78 +13,67 @@ import shutil
 import tempfile
 import time
 import traceback
-from contextlib import contextmanager
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
-from ..results import build_results, dumps
 from ..taskfile import load_task
 from .outdir import check_output_folder, keep_failed, replace_folder
+
+if TYPE_CHECKING:
+    from .pipeline import Timeline
+
+ERROR_LOG = "error.log"  # in OUT.failed/ when a stage other than LaTeX failed
 
 
 def register(sub) -> None:
     p = sub.add_parser("build", help="build the note (PDF), the sheets (DXF + PNG) and results.json")
     p.add_argument("task", help="the task file (TOML)")
-    p.add_argument("-o", "--out", required=True, metavar="OUT",
-                   help="output folder: new, empty or an earlier reportgen output (replaced as a whole)")
+    p.add_argument("-o", "--out", required=True, metavar="OUT", help="output folder (replaced as a whole)")
     p.add_argument("--quiet", action="store_true", help="no progress on stdout")
     p.add_argument("--no-pdf", action="store_true", help="write report.tex and figures but do not run LaTeX")
     p.add_argument("--no-sheets", action="store_true", help="do not draw the DXF sheets")
     p.add_argument("--latexmk", default="latexmk", help="the latexmk program (default: latexmk)")
+    p.add_argument("--no-cache", action="store_true",
+                   help="neither read nor write the build cache (default: $XDG_CACHE_HOME/reportgen)")
+    p.add_argument("--watch", action="store_true",
+                   help="build, then rebuild whenever the task file changes (Ctrl-C ends)")
     p.set_defaults(func=run)
 
 
-ERROR_LOG = "error.log"  # in OUT.failed/ when a stage other than LaTeX failed
-
-
-class Progress:
-    """Prints each stage with the time it took; ``current`` is the stage running (for error messages)."""
-
-    def __init__(self, quiet: bool):
-        self.quiet = quiet
-        self.times: dict[str, float] = {}
-        self.current: str | None = None
-
-    @contextmanager
-    def stage(self, name: str):
-        t0 = time.perf_counter()
-        self.current = name
-        if not self.quiet:
-            print(f"  {name} …", end="", flush=True)
-        try:
-            yield
-        except BaseException:
-            if not self.quiet:
-                print(" failed", flush=True)
-            raise
-        dt = time.perf_counter() - t0
-        self.times[name] = dt
-        if not self.quiet:
-            print(f" {dt:.2f} s", flush=True)
-
-
 def _designation(task) -> str:
-    return "ТММ.КП.00.00.000 ПЗ"
+    """The designation of the note: [document] code with « ПЗ» (reportgen.task.Document.note_code)."""
+    return task.document.note_code()
 
 
 def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, sheets: bool = True,
-          latexmk: str = "latexmk") -> dict[str, float]:
-    """Build everything into ``out``; returns the time of each stage."""
-    progress = Progress(quiet)
+          latexmk: str = "latexmk", cache: bool = False, timeline: "Timeline | None" = None) -> dict[str, float]:
+    """Build everything into ``out``; returns the time of each stage (``timeline`` gets the spans:
+    what ran in parallel, see :mod:`reportgen.commands.pipeline`); ``cache``: read and write the
+    build cache (:mod:`reportgen.cache`; the command line's default).
+
+    ``out`` must pass the output-folder rule (:mod:`reportgen.commands.outdir`) before anything is
+    written."""
+    from .. import cache as build_cache
+    from . import pipeline
+
+    progress = timeline if timeline is not None else pipeline.Timeline(quiet)
     with progress.stage("task"):
         task = load_task(task_path)
     project = Project(task)
     out = check_output_folder(out, Path(task_path))
+    store = build_cache.open_cache(task_path, pdf=pdf, sheets=sheets, latexmk=latexmk) if cache else None
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
     try:
-        with progress.stage("solve"):
-            results = build_results(project)
-        if task.mechanism is not None or task.gears is not None or task.planetary is not None:
-            _note(project, tmp, progress, pdf, latexmk)
-        if sheets:
-            _sheets(project, tmp, progress)
-        (tmp / "results.json").write_text(dumps(results), encoding="utf-8")
+        if store is not None and store.restore_build(tmp):
+            progress.spans.append(pipeline.Span("from the cache", pipeline.MAIN, progress.origin, time.perf_counter()))
+            if not quiet:
+                print("  unchanged task: outputs from the cache", flush=True)
+        else:
+            pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
+            if store is not None:
+                store.store_build(tmp)
     except ReportgenInputError:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
@@ -105,52 +94,16 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
     return progress.times
 
 
-def _note(project: Project, tmp: Path, progress: Progress, pdf: bool, latexmk: str) -> None:
-    from latex_templates import NoteBuilder
-    from latex_templates.assignment import assignment_section, introduction_paragraphs
-    from latex_templates.compose import compose
-
-    with progress.stage("note: sections and figures"):
-        from latex_templates.render import Strings
-        sections, left_out = compose(project, Strings(project.task.document.language or "ru"))
-        note = NoteBuilder(project.task.document, designation=_designation(project.task),
-                           introduction=introduction_paragraphs(project, left_out),
-                           conclusions=[c for s in sections for c in s.conclusions],
-                           assignment=assignment_section(project))
-        for s in sections:
-            note.add_section(s.section)
-        note.render(tmp)
-    if pdf:
-        with progress.stage("note: LaTeX"):
-            try:
-                note.build(tmp, latexmk=latexmk)
-            except BuildError as exc:
-                raise BuildError("LaTeX", exc.problem, exc.kept) from None
-
-
-def _sheets(project: Project, tmp: Path, progress: Progress) -> None:
-    from drawings.preview import render_png
-    from drawings.sheets import available_sheets
-
-    todo = available_sheets(project)
-    if not todo:
-        return
-    folder = tmp / "sheets"
-    folder.mkdir()
-    for i, (stem, mod) in enumerate(todo, start=1):
-        with progress.stage(f"sheet {i}: {stem}"):
-            sheet = mod.draw(project, i, len(todo))
-            dxf = folder / f"{stem}.dxf"
-            sheet.save(dxf)
-            render_png(dxf, folder / f"{stem}.png", dpi=60)
-
-
 def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     if not args.quiet:
         print(f"reportgen build {args.task} → {out}/")
     t0 = time.perf_counter()
-    build(args.task, out, quiet=args.quiet, pdf=not args.no_pdf, sheets=not args.no_sheets, latexmk=args.latexmk)
+    if args.watch:
+        from .watch import watch
+        return watch(args, build)
+    build(args.task, out, quiet=args.quiet, pdf=not args.no_pdf, sheets=not args.no_sheets, latexmk=args.latexmk,
+          cache=not args.no_cache)
     if not args.quiet:
         made = (["report.pdf"] if not args.no_pdf else ["report.tex"]) + ([] if args.no_sheets else ["sheets/"])
         print(f"done in {time.perf_counter() - t0:.1f} s: " + ", ".join(f"{out}/{m}" for m in made + ["results.json"]))

@@ -24,6 +24,7 @@ from shapely.geometry import LineString
 
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
 from .. import gost_scales
+from ..geometry import readonly as _ro
 from ..errors import GeometryError, ParameterError
 
 Point = tuple[float, float]
@@ -78,12 +79,6 @@ class MeshingPicture:
     ab_drawn: float                      # |ab| measured between the constructed points a and b
     eps_alpha_drawn: float               # ab_drawn / pb
     view: tuple[float, float, float, float]   # xmin, ymin, xmax, ymax that holds the drawn teeth
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def _rot(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:

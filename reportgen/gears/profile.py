@@ -24,15 +24,10 @@ import shapely
 from shapely.geometry import Polygon
 
 from .involute import inv
+from ..geometry import readonly as _ro
 from ..errors import GeometryError
 
 DEFAULT_POSITIONS = 481
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def half_thickness_angle(r, rb: float, s: float, d: float, alpha: float):

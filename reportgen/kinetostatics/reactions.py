@@ -33,25 +33,11 @@ from ..kinematics.constraints import rot, world
 from ..linkage import Linkage
 from ..loads import Force, LoadSet, Moment
 from ..structure import Group, Pair, Structure
+from ..geometry import cross as _cross, perp, readonly as _ro
 
 #: A prismatic pair whose point of action would lie farther than this many mechanism lengths from
 #: its sliding point (normal force ≈ 0) reports its couple as a moment instead.
 PRISMATIC_OFFSET_LIMIT = 100.0
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def perp(v: np.ndarray) -> np.ndarray:
-    """v turned by +90° (counter-clockwise)."""
-    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
 
 
 def pair_name(i: int, j: int, prefix: str = "R") -> str:
