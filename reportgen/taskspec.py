@@ -9,7 +9,7 @@ the loader and written in the key's ``doc``.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any, Literal
 
 from .errors import NameLookupError
@@ -87,7 +87,7 @@ class Section:
         for k in self.keys:
             if k.name == name:
                 return k
-        raise NameLookupError(f"key of [{self.path}]", name, tuple(k.name for k in self.keys))
+        raise NameLookupError(f"key of [{self.path}]", name, self.names)
 
     def default(self, name: str) -> Any:
         """The loader's default for ``name`` (``REQUIRED`` if it must be given)."""
@@ -123,7 +123,7 @@ PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-ro
 
 def _dflt(cls: type, name: str) -> Any:
     """The default of field ``name`` of the task dataclass ``cls`` (the loader's default)."""
-    return cls.__dataclass_fields__[name].default
+    return {f.name: f.default for f in fields(cls)}[name]
 
 
 # ---------------------------------------------------------------------------------------- sections

@@ -49,7 +49,7 @@ def similar_press(k: float) -> str:
     t = re.sub(r"through = \[([-\d.e]+), ([-\d.e]+)\]",
                lambda m: f"through = [{sc(m.group(1), 1)}, {sc(m.group(2), 1)}]", t)
     for key, p in (("length", 1), ("mass", 3), ("inertia", 5), ("crank_inertia", 5), ("force", 4), ("q", 2)):
-        t, n = re.subn(rf"^{key} = ([\d.e]+)", lambda m: f"{key} = {sc(m.group(1), p)}", t, flags=re.M)
+        t, n = re.subn(rf"^{key} = ([\d.e]+)", lambda m, key=key, p=p: f"{key} = {sc(m.group(1), p)}", t, flags=re.M)
         assert n, key
     return re.sub(r"^g = [\d.]+", "g = 0.0", t, flags=re.M)
 

@@ -16,7 +16,6 @@ from latex_templates import NoteBuilder
 from latex_templates.compose import compose
 from latex_templates.parts import gear_pair as gear_part
 from latex_templates.render import Strings
-from reportgen import zoo
 from reportgen.calc import evaluate_displayed
 from reportgen.project import Project
 from reportgen.results import build_results
@@ -25,9 +24,6 @@ from reportgen.taskfile import load_task
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = [p.parent.name for p in sorted((ROOT / "examples").glob("*/task.toml"))
             if re.search(r"^\[(gears|planetary)\]", p.read_text(encoding="utf-8"), re.M)]
-
-# a linkage of its own (a slider-crank), for a task without [gears] and [planetary]
-SC_MECHANISM = "\n" + zoo.slider_crank(0.1, 0.3, phi_deg=30.0, omega=10.0)
 
 GEAR_ONLY = """
 [document]
@@ -203,6 +199,7 @@ def test_sheet_halves_follow_the_task(tmp_path):
     sheet = gear_sheet.draw(project, 1, 1)
     assert "reducer_side" in sheet.views and "meshing" not in sheet.views
     assert not sheet.overlaps(), sheet.overlaps()
-    nothing = tmp_path / "n.toml"   # a task without [gears] and [planetary] (a task with neither
-    nothing.write_text(GEAR_ONLY.split("[gears]")[0] + SC_MECHANISM, encoding="utf-8")  # nor a linkage is refused)
+    from reportgen.zoo import four_bar  # a linkage only: no gear sheet
+    nothing = tmp_path / "n.toml"
+    nothing.write_text(four_bar(0.1, 0.3, 0.25, 0.3, phi_deg=30, omega=10), encoding="utf-8")
     assert not gear_sheet.available(Project(load_task(str(nothing))))
