@@ -22,6 +22,11 @@ Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right", "center
 CORNERS: tuple[str, ...] = ("top-left", "top-right", "bottom-left", "bottom-right", "center")
 
 
+#: What a layout failure tells the user: no option sets a sheet's scales, so nothing for them to change.
+LAYOUT_LIMIT = ("a limit of reportgen's sheet layout, not an error in the task (no option sets the "
+                "sheets' scales); please report it with the task file, or build with --no-sheets")
+
+
 @dataclass(frozen=True)
 class Rect:
     """An axis-parallel rectangle in sheet millimetres."""
@@ -127,8 +132,7 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
             raise BuildError(
                 "sheet layout",
                 f"view '{req.name}' ({req.width:.0f}×{req.height:.0f} mm) does not fit in the free "
-                f"field of the sheet (about {free:.0f} mm² left); reduce its scale or move views "
-                f"to another sheet")
+                f"field of the sheet (about {free:.0f} mm² left) at any scale tried; " + LAYOUT_LIMIT)
         done.append(best[1])
         out.append(best[1])
     return out

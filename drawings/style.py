@@ -253,5 +253,8 @@ def _setup_header(doc: Drawing, paper_width: float, paper_height: float) -> None
 
 def dxf_literal(text: str) -> str:
     """Text as the DXF TEXT entity must hold it to print literally: ``%%d``, ``%%c``, ``%%p`` are
-    control codes (°, ⌀, ±), so every ``%`` of a ``%%`` run is written ``%%%``."""
-    return text.replace("%%", "%%%%%%") if "%%" in text else text
+    control codes (°, ⌀, ±), so every ``%`` of a ``%%`` run is written ``%%%``; ``^`` followed by a
+    character is a control character (``^I`` a tab), so ``^`` is written ``^ `` (caret-space prints
+    a caret; a user's "x ^ y" keeps its spaces)."""
+    text = text.replace("%%", "%%%%%%") if "%%" in text else text
+    return text.replace("^", "^ ")

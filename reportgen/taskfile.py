@@ -23,10 +23,11 @@ from .task import (DEFAULT_LAW, Analysis, Document, Drive, Dynamics, Flywheel, G
                    Link, Load, MassRules, Mechanism, Planetary, Slide, Task, Vec2, frozen_mapping)
 from .taskfile_values import (Array, Int, OneOf, Spec, Table, Word, array_of_tables, check_keys, fmt,
                               index, join, show, suggest)
-from .taskspec import (INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, POINT_NAME, POINT_XY, SECTION)
+from .taskspec import (INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, MIN_LENGTH, POINT_NAME, POINT_XY,
+                       SECTION)
 from .tolerances import RTOL_EQUAL
 
-__all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "COLLINEAR_RTOL"]
+__all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "MIN_LENGTH", "COLLINEAR_RTOL"]
 
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
 COLLINEAR_RTOL = RTOL_EQUAL

@@ -17,11 +17,14 @@ from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel
                    Mechanism, Planetary)
 from .taskfile_values import REQUIRED, Array, Bool, Int, NameMap, Number, OneOf, Spec, Str, Word, vec2
 
-__all__ = ["Key", "Section", "SECTIONS", "SECTION", "MAX_LENGTH", "REQUIRED", "OPTIONAL"]
+__all__ = ["Key", "Section", "SECTIONS", "SECTION", "MAX_LENGTH", "MIN_LENGTH", "REQUIRED", "OPTIONAL"]
 
 #: Largest coordinate magnitude and link length accepted, m (catches gross unit slips; solver
 #: scale tests go up to ~400 m).
 MAX_LENGTH = 1000.0
+#: Smallest link length accepted, m: 1 µm. Between the two, reportgen.gost_scales draws every
+#: mechanism within a sheet (1:50000 … (100·n):1).
+MIN_LENGTH = 1e-6
 
 
 class _Optional:
@@ -93,7 +96,7 @@ class Section:
 
 
 # ------------------------------------------------------------------------------- shared value specs
-LENGTH = Number(gt=0, le=MAX_LENGTH, unit="m")
+LENGTH = Number(ge=MIN_LENGTH, le=MAX_LENGTH, unit="m")
 MASS = Number(gt=0, unit="kg")
 INERTIA = Number(ge=0, unit="kg·m²")  # > 0 is checked afterwards, except for slider-rule links
 INERTIA.expected = "a number > 0, in kg·m² (0 allowed for a slider or block)"

@@ -6,10 +6,9 @@ from __future__ import annotations
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from reportgen import gost_scales
 from ..words import tr
 
-#: ГОСТ 2.302 reduction scales, largest first (sheet mm per real mm).
-GOST_REDUCTIONS = (1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20, 1 / 25, 1 / 40, 1 / 50)
 #: Room of the sketch around the two views (dimensions, title), mm.
 PAD_MM = 24.0
 BETWEEN_MM = 30.0
@@ -19,7 +18,8 @@ DIAMETER_MM = 14.0
 
 
 def scale_text(k: float) -> str:
-    return "1:1" if k >= 1 else f"1:{format_number(1 / k, 1)}"
+    """«1:2,5», «1:1», «2:1» for a factor k (sheet mm per real mm) of the ГОСТ 2.302 list."""
+    return gost_scales.label((k, 1.0) if k >= 1 else (1.0, round(1 / k, 6)))
 
 
 def sketch_size(fw, k: float, stacked: bool = False) -> tuple[float, float]:
@@ -34,12 +34,14 @@ def sketch_size(fw, k: float, stacked: bool = False) -> tuple[float, float]:
 def sketch_fit(fw, width: float, height: float) -> tuple[float, bool]:
     """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` and its arrangement
     (section beside the front view where both give the same scale, else under it)."""
-    for k in GOST_REDUCTIONS:
+    D, b = 2000 * fw.radius, 1000 * fw.width
+    candidates = [gost_scales.factor(c) for c in gost_scales.fitting(min(width, height) / max(D, b, 1e-9))]
+    for k in candidates:
         for stacked in (False, True):
             w, h = sketch_size(fw, k, stacked)
             if w <= width and h <= height:
                 return k, stacked
-    return GOST_REDUCTIONS[-1], False
+    return candidates[-1], False
 
 
 def sketch_scale(fw, width: float, height: float) -> float:

@@ -10,19 +10,16 @@ from dataclasses import dataclass
 import numpy as np
 from shapely.geometry import Polygon
 
-from drawings.primitives import format_number
+from drawings.primitives import format_number, format_significant
 from drawings.sheet import View
 from drawings.scenes import kinematics_labels as rl
+from reportgen import gost_scales
 from reportgen.geometry import vec2
 from reportgen.kinematics import KinematicsResult
 from reportgen.kinematics.constraints import rot
 from reportgen.project import Project
 from ..words import tr
 
-#: ГОСТ 2.302 scales as (paper, real): 1:2,5 is (1, 2.5).
-GOST_SCALES: tuple[tuple[float, float], ...] = (
-    (10, 1), (5, 1), (4, 1), (2.5, 1), (2, 1), (1, 1), (1, 2), (1, 2.5), (1, 4), (1, 5), (1, 10),
-    (1, 15), (1, 20), (1, 25), (1, 40), (1, 50), (1, 75), (1, 100))
 #: Positions of the dense trajectories.
 DENSE = 144
 HINGE_MM = 2.0
@@ -54,13 +51,21 @@ def scheme_data(project: Project, analysed: int) -> SchemeData:
 
 
 def gost_scale(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> tuple[float, str]:
-    """The largest ГОСТ 2.302 scale that fits; returns (sheet mm per metre, «1:2,5»)."""
-    for paper, real in GOST_SCALES:
-        k = 1000.0 * paper / real
-        if width_m * k <= max_w_mm and height_m * k <= max_h_mm:
-            return k, f"{format_number(paper, 1)}:{format_number(real, 1)}"
-    paper, real = GOST_SCALES[-1]
-    return 1000.0 * paper / real, f"{format_number(paper, 1)}:{format_number(real, 1)}"
+    """The largest ГОСТ 2.302 scale that fits (``reportgen.gost_scales``); returns (sheet mm per metre, «1:2,5»)."""
+    s = gost_scales.largest_fitting(_needed(width_m, height_m, max_w_mm, max_h_mm))
+    return 1000.0 * gost_scales.factor(s), gost_scales.label(s)
+
+
+def _needed(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> float:
+    """The largest factor (drawing per real) with which a width × height (m) fits max_w × max_h (mm)."""
+    fits = [m / (1000.0 * e) for e, m in ((width_m, max_w_mm), (height_m, max_h_mm)) if e > 0]
+    return min(fits) if fits else math.inf
+
+
+def gost_scales_to_try(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> list[tuple[float, str]]:
+    """The largest ГОСТ 2.302 scale that fits and every smaller one, as (sheet mm per metre, label)."""
+    return [(1000.0 * gost_scales.factor(s), gost_scales.label(s))
+            for s in gost_scales.fitting(_needed(width_m, height_m, max_w_mm, max_h_mm))]
 
 
 def _pts(kin: KinematicsResult, i: int) -> dict[str, np.ndarray]:
@@ -106,7 +111,7 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_numbers(view, project, data)
     _draw_link_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
-                 tr("sheets.ks01", v1=format_number(mu_l, 5), scale_text=scale_text), 5.0, "bottom-center")
+                 tr("sheets.ks01", v1=format_significant(mu_l, 4), scale_text=scale_text), 5.0, "bottom-center")
     view.title(tr("sheets.ks02", v1=len(data.kin.phi)))
 
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from drawings import style
-from drawings.layout import Rect, Request, grow, room, spread, try_pack
+from drawings.layout import LAYOUT_LIMIT, Rect, Request, grow, room, spread, try_pack
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_diagrams as kd
@@ -92,10 +92,8 @@ def draw(project: Project, number: int, count: int) -> Sheet:
 def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str]]:
     """ГОСТ 2.302 scales to try for the scheme, the largest that fits ``SCHEME_MAX_MM`` first."""
     width, height = b[2] - b[0], b[3] - b[1]
-    k, _ = ks.gost_scale(width, height, SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
-                         SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
-    out = [(1000.0 * p / r, f"{format_number(p, 1)}:{format_number(r, 1)}") for p, r in ks.GOST_SCALES]
-    return [c for c in out if c[0] <= k * (1 + 1e-9)]
+    return ks.gost_scales_to_try(width, height, SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
+                                 SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
 
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
@@ -188,7 +186,7 @@ def arrange(sheet: Sheet, plan_sizes: list[tuple[float, float]], small_of) -> Ar
         if best is not None:
             return best
     raise BuildError("sheet layout", "the plans of the analysed position do not fit in the free field "
-                                     "of the sheet; reduce the scheme's scale")
+                                     "of the sheet; " + LAYOUT_LIMIT)
 
 
 def _best(region, placed: list[Rect], options: list[list[Block]], max_width: float, small_of

@@ -27,6 +27,10 @@ from typing import Any
 from ..errors import OutputFolderError
 
 MANIFEST_NAME = ".reportgen-manifest.json"
+#: LaTeX's working folder: its files (aux, log: they name the build folder) are listed without a
+#: hash, so that the manifest is the same bytes for the same outputs (issue 16's reproducibility).
+WORK_DIRS = ("latex-build",)
+WORK = "work"
 MANIFEST_FORMAT = "reportgen-output/1"
 _SHOWN = 5  # foreign entries named in a refusal
 
@@ -69,7 +73,10 @@ def write_manifest(folder: Path) -> Path:
         if rel == MANIFEST_NAME:
             continue
         if p.is_symlink() or not p.is_dir():
-            files[rel] = _sha256(p) if p.is_file() and not p.is_symlink() else "link"
+            if rel.split("/", 1)[0] in WORK_DIRS and "/" in rel:
+                files[rel] = WORK
+            else:
+                files[rel] = _sha256(p) if p.is_file() and not p.is_symlink() else "link"
         else:
             dirs.append(rel)
     data = {"format": MANIFEST_FORMAT, "written_by": "reportgen build",
@@ -105,6 +112,8 @@ def judge_folder(folder: Path) -> Verdict:
             continue
         if rel in files:
             want = files[rel]
+            if want == WORK:
+                continue
             if p.is_symlink() or not p.is_file():
                 same = want == "link" and p.is_symlink()
             else:

@@ -23,13 +23,14 @@ import numpy as np
 from shapely.geometry import LineString
 
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
+from .. import gost_scales
 from ..geometry import readonly as _ro, vec2
 from ..errors import GeometryError, ParameterError
 
 from ..geometry import Vec2 as Point
 
 #: ГОСТ 2.302-68 scales (enlargement > 1, reduction < 1).
-GOST_SCALES = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10)
+GOST_SCALES = tuple(gost_scales.factor(s) for s in gost_scales.scales(largest=10.0, smallest=1 / 10))
 
 
 @dataclass(frozen=True)

@@ -19,18 +19,16 @@ import math
 from dataclasses import dataclass
 from numbers import Real
 
+from .. import gost_scales
 from ..errors import TaskError
 from .search import PlanetaryDesign
 from .schemes import expand
 
 from ..geometry import Vec2 as Point
 
-# ГОСТ 2.302 scales (drawing : real), largest first.
-GOST_SCALES: tuple[tuple[str, float], ...] = (
-    ("10:1", 10.0), ("5:1", 5.0), ("4:1", 4.0), ("2.5:1", 2.5), ("2:1", 2.0), ("1:1", 1.0),
-    ("1:2", 1 / 2), ("1:2.5", 1 / 2.5), ("1:4", 1 / 4), ("1:5", 1 / 5), ("1:10", 1 / 10),
-    ("1:15", 1 / 15), ("1:20", 1 / 20), ("1:25", 1 / 25), ("1:40", 1 / 40), ("1:50", 1 / 50),
-    ("1:75", 1 / 75), ("1:100", 1 / 100))
+# ГОСТ 2.302 scales (drawing : real), largest first: the one list of reportgen.gost_scales, 10:1 … 1:100.
+GOST_SCALES: tuple[tuple[str, float], ...] = tuple(
+    (gost_scales.label(s, decimal="."), gost_scales.factor(s)) for s in gost_scales.scales(largest=10.0, smallest=1 / 100))
 
 
 @dataclass(frozen=True)

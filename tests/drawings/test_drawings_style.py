@@ -73,5 +73,5 @@ def test_percent_codes_print_literally():
     """A user's «%%d» must not become «°» on a sheet (DXF TEXT control codes)."""
     from ezdxf.tools.text import plain_text
     from drawings.style import dxf_literal
-    for s in ("Иванов %%d", "50 %", "%%c%%p", "a%%%b"):
+    for s in ("Иванов %%d", "50 %", "%%c%%p", "a%%%b", "x ^ y", "a^b^^c"):
         assert plain_text(dxf_literal(s)) == s

@@ -10,6 +10,8 @@ import ezdxf
 import numpy as np
 import pytest
 
+from reportgen import gost_scales
+
 from drawings.librecad import check_sheet, missing_tools
 from drawings.primitives import format_number, format_significant
 from drawings.sheets import available_sheets, kinematics
@@ -130,7 +132,7 @@ def test_scale_captions_come_from_the_results(name, sheets):
 def test_scheme_scale_is_gost_and_positions_are_numbered(name, sheets):
     project, sheet = sheets[name]
     k = sheet.views["scheme"].transform.scale
-    assert any(math.isclose(k, 1000.0 * p / r) for p, r in kinematics.ks.GOST_SCALES)
+    assert any(math.isclose(k, 1000.0 * gost_scales.factor(s)) for s in gost_scales.GOST_2_302)
     texts = _texts(sheet)
     for j in range(len(project.phi)):
         assert str(j) in texts

@@ -14,8 +14,8 @@ L = (M, "link")
 # (edit path, new value or DELETE, expected TaskError.path, fragments of the message)
 CASES = [
     # lengths, masses, inertias: zero, negative, wrong types
-    (L + (0, "length"), 0, "mechanism.link[0].length", ["got 0", "(0, 1000]", "in m"]),
-    (L + (0, "length"), -0.11, "mechanism.link[0].length", ["got the float -0.11", "(0, 1000]"]),
+    (L + (0, "length"), 0, "mechanism.link[0].length", ["got 0", "[1e-06, 1000]", "in m"]),
+    (L + (0, "length"), -0.11, "mechanism.link[0].length", ["got the float -0.11", "[1e-06, 1000]"]),
     (L + (0, "length"), "0.11", "mechanism.link[0].length", ['the string "0.11"', "a number"]),
     (L + (0, "length"), True, "mechanism.link[0].length", ["got true", "a number"]),
     (L + (0, "length"), 1100, "mechanism.link[0].length", ["got 1100", "1000]"]),
@@ -175,7 +175,7 @@ def test_lengths_keys_must_name_two_points_of_the_link():
     data["mechanism"]["link"][2]["lengths"] = {"CE": 0.58, "EC": 0.58}
     expect_error(data, "mechanism.link[2].lengths.EC", "given twice")
     data["mechanism"]["link"][2]["lengths"] = {"CE": 0}
-    expect_error(data, "mechanism.link[2].lengths.CE", "(0, 1000]")
+    expect_error(data, "mechanism.link[2].lengths.CE", "[1e-06, 1000]")
     data["mechanism"]["link"][2]["lengths"] = 0.58
     expect_error(data, "mechanism.link[2].lengths", "an inline table", "CE = …")
 
