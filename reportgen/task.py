@@ -27,6 +27,7 @@ class Document:
     city: str = ""
     year: int | None = None
     language: str = "ru"
+    kind: str = ""          # "" = by the sections (crane if [crane]), "course-project", "crane", …
 
 
 @dataclass(frozen=True)
@@ -176,7 +177,16 @@ class Task:
     dynamics: Dynamics | None = None
     gears: Gears | None = None
     planetary: Planetary | None = None
+    crane: object | None = None     # reportgen.crane.spec.Crane (hoist and trolley of a bridge crane)
     source: str = ""
+
+    @property
+    def kind(self) -> str:
+        """The kind of document: [document] kind if given, else "crane" for a task with [crane],
+        else "course-project" (the ТММ note)."""
+        if self.document.kind:
+            return self.document.kind
+        return "crane" if self.crane is not None else "course-project"
 
 
 def frozen_mapping(d: Mapping) -> Mapping:

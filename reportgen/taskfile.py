@@ -32,8 +32,10 @@ MAX_LENGTH = 1000.0
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
 COLLINEAR_RTOL = 1e-9
 
-TOP_KEYS = ("document", "mechanism", "analysis", "dynamics", "gears", "planetary")
-DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "organization", "city", "year", "language")
+TOP_KEYS = ("document", "mechanism", "analysis", "dynamics", "gears", "planetary", "crane")
+DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "organization", "city", "year", "language", "kind")
+#: Kinds of document: the ТММ course project and the crane note (docs/task-format-notes.md).
+DOCUMENT_KINDS = ("course-project", "crane")
 MECHANISM_KEYS = ("name", "g", "ground", "points", "link", "slide", "drive", "mass_rules", "load")
 LINK_KEYS = ("id", "kind", "points", "length", "lengths", "mass", "inertia", "com")
 SLIDE_KEYS = ("link", "point", "guide", "line", "along")
@@ -116,8 +118,14 @@ def parse_task(data: dict, source: str = "") -> Task:
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
+    crane = None
+    if "crane" in top:
+        from .crane.taskfile import read_crane
+        crane = read_crane(top.raw("crane"), "crane")
+    if document.kind == "crane" and crane is None:
+        raise TaskError("crane", 'is missing; [document] kind = "crane" needs it', "a [crane] section")
     return Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
-                gears=gears, planetary=planetary, source=str(source))
+                gears=gears, planetary=planetary, crane=crane, source=str(source))
 
 
 # ========================================================================================= document
@@ -133,6 +141,7 @@ def _document(value: Any, path: str) -> Document:
         city=t.get("city", Str(), d.city),
         year=t.get("year", Int(ge=1000, le=9999, what="a year: an integer"), d.year),
         language=t.get("language", Word(*LANGUAGES), d.language),
+        kind=t.get("kind", Word(*DOCUMENT_KINDS), d.kind),
     )
 
 

@@ -1,0 +1,102 @@
+"""Building blocks of the crane calculations: a collector of calculation records and the checks.
+
+Every number of the crane note is a :class:`reportgen.calc.CalcRecord` (formula = numbers = result)
+made once here; the note, ``reportgen crane`` and results.json all read the same records. A
+variable or record is named by a key that means one quantity everywhere (``S_max``, ``D_c``); the
+note's «где» list finds its words by that key in the strings catalogue (``crane.where.<key>``), so the
+core carries no sentences. ``meaning`` of each Var/record is that key.
+"""
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Mapping
+
+from ..calc import CalcRecord, Var, record
+
+
+@dataclass(frozen=True)
+class Check:
+    """One check: ``value relation limit`` (relation "≥" or "≤"), passed or not.
+
+    ``records`` are the keys of the records that show its numbers; a failed check carries
+    ``advice`` (a key of ``crane.advice``) and ``advice_value`` (the least/greatest value the next
+    catalogue item must have, in ``advice_unit``).
+    """
+    key: str
+    value: float
+    limit: float
+    relation: str
+    unit: str
+    passed: bool
+    records: tuple[str, ...] = ()
+    advice: str = ""
+    advice_value: float | None = None
+    advice_unit: str = ""
+
+
+def check(key: str, value: float, relation: str, limit: float, unit: str = "", *,
+          records: tuple[str, ...] = (), advice: str = "", advice_value: float | None = None,
+          advice_unit: str = "") -> Check:
+    """A check of ``value relation limit`` with a small relative tolerance for rounding (1e-9)."""
+    tol = 1e-9 * max(abs(value), abs(limit), 1e-300)
+    if relation == "≥":
+        ok = value >= limit - tol
+    elif relation == "≤":
+        ok = value <= limit + tol
+    else:
+        raise ValueError(f"relation {relation!r}")
+    return Check(key, value, limit, relation, unit, ok, records, advice if not ok else "",
+                 advice_value if not ok else None, advice_unit if not ok else "")
+
+
+def _expr_names(expr: str) -> list[str]:
+    out: list[str] = []
+    for node in ast.walk(ast.parse(expr, mode="eval")):
+        if isinstance(node, ast.Name) and node.id not in out:
+            out.append(node.id)
+    return out
+
+
+_FUNCS = {"sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "hypot", "abs", "radians",
+          "degrees", "pi"}
+
+
+class Steps:
+    """Collects the inputs (``var``) and records (``rec``) of one mechanism in order."""
+
+    def __init__(self) -> None:
+        self.vars: dict[str, Var] = {}
+        self.recs: dict[str, CalcRecord] = {}
+        self.checks: list[Check] = []
+
+    def var(self, key: str, latex: str, value: float, unit: str = "") -> Var:
+        v = Var(key, latex, float(value), unit, key)
+        self.vars[key] = v
+        return v
+
+    def rec(self, key: str, symbol: str, expr: str, unit: str = "", digits: int = 4) -> CalcRecord:
+        named: dict[str, Var | CalcRecord] = {}
+        for n in _expr_names(expr):
+            if n in _FUNCS:
+                continue
+            named[n] = self.recs[n] if n in self.recs else self.vars[n]
+        r = record(symbol, expr, unit, digits=digits, meaning=key, **named)
+        self.recs[key] = r
+        return r
+
+    def value(self, key: str) -> float:
+        return self.recs[key].value if key in self.recs else self.vars[key].value
+
+    def add(self, c: Check) -> Check:
+        self.checks.append(c)
+        return c
+
+    def frozen(self) -> tuple[Mapping[str, Var], Mapping[str, CalcRecord], tuple[Check, ...]]:
+        return MappingProxyType(dict(self.vars)), MappingProxyType(dict(self.recs)), tuple(self.checks)
+
+
+def product(*keys: str) -> str:
+    """``a * b * c`` of the keys that are not None (an optional factor is left out)."""
+    return " * ".join(k for k in keys if k)
