@@ -76,7 +76,9 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
     try:
         with progress.stage("solve"):
             results = build_results(project)
-        if task.mechanism is not None or task.gears is not None or task.planetary is not None:
+        if task.kind == "crane":
+            _crane_note(project, tmp, progress, pdf, latexmk)
+        elif task.mechanism is not None or task.gears is not None or task.planetary is not None:
             _note(project, tmp, progress, pdf, latexmk)
         if sheets:
             _sheets(project, tmp, progress)
@@ -108,6 +110,21 @@ def _note(project: Project, tmp: Path, progress: Progress, pdf: bool, latexmk: s
                            assignment=assignment_section(project))
         for s in sections:
             note.add_section(s.section)
+        note.render(tmp)
+    if pdf:
+        with progress.stage("note: LaTeX"):
+            try:
+                note.build(tmp, latexmk=latexmk)
+            except BuildError as exc:
+                raise BuildError("LaTeX", exc.problem, exc.kept) from None
+
+
+def _crane_note(project: Project, tmp: Path, progress: Progress, pdf: bool, latexmk: str) -> None:
+    """The crane note (docs/crane.md): its own sections, assignment and strings overlay."""
+    from latex_templates.parts.crane_document import note_builder
+
+    with progress.stage("note: sections and figures"):
+        note = note_builder(project)
         note.render(tmp)
     if pdf:
         with progress.stage("note: LaTeX"):
