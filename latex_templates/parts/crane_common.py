@@ -16,6 +16,7 @@ from dataclasses import replace
 from markupsafe import Markup
 
 from reportgen.calc import CalcRecord, format_decimal, unit_latex
+from reportgen.crane.steps import upright_cyrillic_in_math
 
 from ..render import Strings, _StringTable, escape_latex
 
@@ -74,7 +75,7 @@ def fmt(template, **values) -> Markup:
             out[k] = Markup(m(v))
         else:
             out[k] = escape_latex(v)
-    return Markup(str(template).format(**out))
+    return Markup(upright_cyrillic_in_math(str(template).format(**out)))
 
 
 class Blocks:
@@ -145,7 +146,7 @@ def check_sentence(c, calc, strings: Strings) -> Markup:
     right = f"{b} = {m(c.limit)}" if b else m(c.limit)
     unit_tex = f"~{unit_latex(c.unit)}" if c.unit else ""
     verdict = strings.get("crane.text.pass" if c.passed else "crane.text.fail")
-    text = fmt(strings.get("crane.text.check_line"), name=strings.get(f"crane.checks.{c.key}"),
+    text = fmt(strings.get("crane.text.check_line"), name=Markup(upright_cyrillic_in_math(strings.get(f"crane.checks.{c.key}"))),
                a=Markup(left), rel=Markup(rel), b=Markup(right), unit=Markup(unit_tex), verdict=verdict)
     if not c.passed and c.advice:
         value = c.advice_value

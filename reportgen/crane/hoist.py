@@ -111,7 +111,7 @@ def hoist_calc(crane: Crane, rules: DutyRules) -> MechanismCalc:
     st.var("d", r"d_{к}", h.rope.diameter_mm, "мм")
     old = rules.rules == "1969"
     st.var("h_bl", "e" if old else r"h_{2}", rules.block_ratio)
-    st.rec("D_bl_min", r"D_{бл.min}", "h_bl * d", "мм")
+    st.rec("D_bl_min", r"D_{бл\min}", "h_bl * d", "мм")
     st.var("D_bl0", r"D_{бл.0}", p.hook_block_diameter_mm, "мм")
     st.rec("D_bl", r"D_{бл}", "D_bl0 + d", "мм")
     st.add(check("block", st.value("D_bl"), "≥", st.value("D_bl_min"), "мм", records=("D_bl_min", "D_bl"),
@@ -122,7 +122,7 @@ def hoist_calc(crane: Crane, rules: DutyRules) -> MechanismCalc:
         st.rec("h_dr", r"e_{б}", "k_dr * h_bl")
     else:
         st.var("h_dr", r"h_{1}", rules.drum_ratio)
-    st.rec("D_dr_min", r"D_{б.min}", "h_dr * d", "мм")
+    st.rec("D_dr_min", r"D_{б\min}", "h_dr * d", "мм")
     st.var("D_dr0", r"D_{б.0}", h.drum.diameter_mm, "мм")
     st.rec("D_c", r"D_{б}", "D_dr0 + d", "мм")
     st.add(check("drum", st.value("D_c"), "≥", st.value("D_dr_min"), "мм", records=("D_dr_min", "D_c"),

@@ -9,6 +9,8 @@ core carries no sentences. ``meaning`` of each Var/record is that key.
 from __future__ import annotations
 
 import ast
+import math
+import re
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Mapping
@@ -51,6 +53,28 @@ def check(key: str, value: float, relation: str, limit: float, unit: str = "", *
                  advice_value if not ok else None, advice_unit if not ok else "")
 
 
+_CYRILLIC_RUN = re.compile(r"(\\text\{[^}]*\})|([А-Яа-яЁё]+(?:\.[А-Яа-яЁё]+)*\.?)")
+
+
+def upright_cyrillic(latex: str) -> str:
+    """Cyrillic letters in a math formula set upright in ``\\text{}`` (the math font has none):
+    ``m_{гр}`` → ``m_{\\text{гр}}``; an existing ``\\text{…}`` is kept."""
+    return _CYRILLIC_RUN.sub(lambda mt: mt.group(1) or "\\text{" + mt.group(2) + "}", latex)
+
+
+def upright_cyrillic_in_math(tex: str) -> str:
+    """:func:`upright_cyrillic` applied to every ``$…$`` piece of a text (words outside math stay)."""
+    parts = tex.split("$")
+    return "$".join(upright_cyrillic(p) if i % 2 else p for i, p in enumerate(parts))
+
+
+def decimals_digits(value: float, decimals: int) -> int:
+    """Significant digits that show ``value`` with ``decimals`` places (its integer part kept)."""
+    if value == 0 or not math.isfinite(value):
+        return decimals + 1
+    return max(1, math.floor(math.log10(abs(value))) + 1) + decimals
+
+
 def _expr_names(expr: str) -> list[str]:
     out: list[str] = []
     for node in ast.walk(ast.parse(expr, mode="eval")):
@@ -72,17 +96,26 @@ class Steps:
         self.checks: list[Check] = []
 
     def var(self, key: str, latex: str, value: float, unit: str = "") -> Var:
-        v = Var(key, latex, float(value), unit, key)
+        v = Var(key, upright_cyrillic(latex), float(value), unit, key)
         self.vars[key] = v
         return v
 
-    def rec(self, key: str, symbol: str, expr: str, unit: str = "", digits: int = 4) -> CalcRecord:
+    def rec(self, key: str, symbol: str, expr: str, unit: str = "", digits: int = 4,
+            decimals: int | None = None) -> CalcRecord:
+        """A record of ``expr``; ``decimals`` (default: 1 for a length in mm) fixes the places shown
+        instead of ``digits`` significant digits."""
+        symbol = upright_cyrillic(symbol)
+        if decimals is None and unit == "мм":
+            decimals = 1
         named: dict[str, Var | CalcRecord] = {}
         for n in _expr_names(expr):
             if n in _FUNCS:
                 continue
             named[n] = self.recs[n] if n in self.recs else self.vars[n]
         r = record(symbol, expr, unit, digits=digits, meaning=key, **named)
+        if decimals is not None:
+            r = record(symbol, expr, unit, digits=max(digits, decimals_digits(r.value, decimals)),
+                       meaning=key, **named)
         self.recs[key] = r
         return r
 
