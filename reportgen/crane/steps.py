@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Mapping
 
-from ..calc import CalcRecord, Var, record
+from ..calc import CalcRecord, Var, format_decimal, record
 
 
 @dataclass(frozen=True)
@@ -73,6 +73,19 @@ def decimals_digits(value: float, decimals: int) -> int:
     if value == 0 or not math.isfinite(value):
         return decimals + 1
     return max(1, math.floor(math.log10(abs(value))) + 1) + decimals
+
+
+def plain_number(value: float, digits: int = 4) -> str:
+    """The number as the note prints it (same rounding, :func:`reportgen.calc.format_decimal`) in
+    plain text for the terminal and the sheets: ``1130,5``, ``2 061 922``, ``0,9657``."""
+    text = format_decimal(value, digits)
+    text = text.replace("{,}", ",").replace("\\,", " ").replace(" \\cdot 10^", "·10^")
+    return text.replace("{", "").replace("}", "").replace("-", "−")
+
+
+def shown(rec: CalcRecord) -> str:
+    """A record's result exactly as the note prints it, in plain text."""
+    return plain_number(rec.value, rec.digits)
 
 
 def _expr_names(expr: str) -> list[str]:
