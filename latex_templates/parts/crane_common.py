@@ -157,12 +157,13 @@ def check_sentence(c, calc, strings: Strings) -> Markup:
 
 
 def summary_rows(calc, strings: Strings) -> list[tuple]:
+    """One row a check: its name, the condition with its numbers, the verdict."""
     rows = []
     for c in calc.checks:
         rel = r"\ge" if c.relation == "≥" else r"\le"
-        unit = f" {c.unit}" if c.unit else ""
-        rows.append((strings.get(f"crane.checks.{c.key}"), Markup("$" + m(c.value) + "$"),
-                     Markup("$" + rel + "\\ " + m(c.limit) + "$") + escape_latex(unit),
+        unit = f"~{unit_latex(c.unit)}" if c.unit else ""
+        rows.append((strings.get(f"crane.checks.{c.key}"),
+                     Markup("$" + m(c.value) + " " + rel + " " + m(c.limit) + unit + "$"),
                      strings.get("crane.text.ok" if c.passed else "crane.text.no")))
     return rows
 
@@ -171,8 +172,8 @@ def summary(b: Blocks) -> None:
     s = b.s
     b.sub("summary")
     b.text("summary_intro")
-    b.table(s.get("crane.sub.summary"), [s.get("crane.text.head_check"), s.get("crane.text.head_value"),
-                                         s.get("crane.text.head_limit"), s.get("crane.text.head_result")],
+    b.table(s.get("crane.sub.summary"), [s.get("crane.text.head_check"), s.get("crane.text.head_condition"),
+                                         s.get("crane.text.head_result")],
             summary_rows(b.calc, s))
 
 

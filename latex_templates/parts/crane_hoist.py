@@ -146,9 +146,9 @@ def motor_checks(b: Blocks, mst_key: str) -> None:
         b.check("start_torque")
     b.text("heating" if b.mech == "hoist" else "heating_trolley")
     if b.mech == "hoist":
-        b.rec("t_m", "M_lo", "G_0", "M_st0", "M_lo0", "M_eq")
+        b.rec("t_m", "M_lo", "G_0", "M_st0", "M_lo0", "M_sq", "M_eq")
     else:
-        b.rec("t_m", "G_t", "W_0", "M_st0", "M_eq")
+        b.rec("t_m", "G_t", "W_0", "M_st0", "M_sq", "M_eq")
     b.text("heating_pv")
     b.rec("M_eq_pv")
     b.check("heating")

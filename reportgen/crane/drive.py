@@ -79,9 +79,21 @@ def overload_check(st: Steps, st_key: str = "M_st") -> None:
                  advice="motor_power", advice_value=need, advice_unit="кВт"))
 
 
-def heating_check(st: Steps, expr: str) -> None:
-    """The equivalent torque ``expr`` (record M_eq), reduced to the motor's ПВ, against M_ном."""
-    st.rec("M_eq", r"M_{э}", expr, "Н·м")
+def heating_check(st: Steps, squares: str, moves: int, started: bool) -> None:
+    """The equivalent torque over a cycle of ``moves`` movements, each a start at M_п for t_п and a
+    steady run at its static torque for t_у − t_п (``squares`` = the sum of the static torques
+    squared), reduced to the motor's ПВ and compared with M_ном::
+
+        M_ск = √(ΣM_i²/n),   M_э = √((M_п²·t_п + M_ск²·(t_у − t_п))/t_у),   M_э' = M_э·√(ПВ/ПВ_дв)
+
+    (the mean of the n movements' M² over time, written with the root mean square static torque).
+    """
+    st.var("n_mv", r"n_{д}", moves)
+    st.rec("M_sq", r"M_{ск}", f"sqrt(({squares}) / n_mv)", "Н·м")
+    if started:
+        st.rec("M_eq", r"M_{э}", "sqrt((M_p**2 * t_p + M_sq**2 * (t_m - t_p)) / t_m)", "Н·м")
+    else:
+        st.recs["M_eq"] = st.recs["M_sq"]
     st.rec("M_eq_pv", r"M_{э}'", "M_eq * sqrt(PV / PV_m)", "Н·м")
     need = st.value("M_eq_pv") * st.value("omega_m") / 1000
     st.add(check("heating", st.value("M_nom"), "≥", st.value("M_eq_pv"), "Н·м",

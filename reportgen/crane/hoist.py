@@ -204,11 +204,7 @@ def hoist_calc(crane: Crane, rules: DutyRules) -> MechanismCalc:
     st.rec("G_0", r"G_{0}", "m_h * g", "Н")
     st.rec("M_st0", r"M_{ст0}", "G_0 * D_c / (2000 * u_mech * eta)", "Н·м")
     st.rec("M_lo0", r"M_{оп0}", "G_0 * D_c * eta / (2000 * u_mech)", "Н·м")
-    if started:
-        drive.heating_check(st, "sqrt((4 * M_p**2 * t_p + (M_st**2 + M_lo**2 + M_st0**2 + M_lo0**2)"
-                                " * (t_m - t_p)) / (4 * t_m))")
-    else:
-        drive.heating_check(st, "sqrt((M_st**2 + M_lo**2 + M_st0**2 + M_lo0**2) / 4)")
+    drive.heating_check(st, "M_st**2 + M_lo**2 + M_st0**2 + M_lo0**2", 4, started)
     # --- transmission, couplings, brake
     drive.reducer_torque_check(st)
     drive.coupling_checks(st, h.couplings, HOIST_K1, K2_OF_REGIME[rules.regime])

@@ -97,10 +97,7 @@ def trolley_calc(crane: Crane, rules: DutyRules) -> MechanismCalc:
     st.rec("G_t", r"G_{т}", "m_t * g", "Н")
     st.rec("W_0", r"W_{0}", "G_t * ((2 * mu + f * d_j) / D_w * k_fl + alpha_s)", "Н")
     st.rec("M_st0", r"M_{ст0}", "W_0 * D_w / (2000 * u_r * eta)", "Н·м")
-    if started:
-        drive.heating_check(st, "sqrt((2 * M_p**2 * t_p + (M_st**2 + M_st0**2) * (t_m - t_p)) / (2 * t_m))")
-    else:
-        drive.heating_check(st, "sqrt((M_st**2 + M_st0**2) / 2)")
+    drive.heating_check(st, "M_st**2 + M_st0**2", 2, started)
     drive.reducer_torque_check(st)
     drive.coupling_checks(st, t.couplings, TRAVEL_K1, K2_OF_REGIME[rules.regime])
     # --- brake

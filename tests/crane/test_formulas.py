@@ -234,3 +234,17 @@ def test_every_record_reproduces_its_printed_result():
     for _, mech in calc.mechanisms:
         for key, rec in mech.records.items():
             assert evaluate_displayed(rec).ok, key
+
+
+def test_equivalent_torque_by_hand():
+    """Александров: M_э = √(ΣM_i²t_i/Σt_i) over lift and lower with the load and with the empty
+    hook, each a start at M_п for t_п and a steady run; reduced to the motor's ПВ by √(ПВ/ПВ_дв)."""
+    calc = crane_calc(example_crane())
+    h = calc.hoist
+    m_p, t_p, t = h.value("M_p"), h.value("t_p"), 14 / (2.22 / 60)
+    statics = [h.value(k) for k in ("M_st", "M_lo", "M_st0", "M_lo0")]
+    hand = math.sqrt(sum(m_p ** 2 * t_p + m ** 2 * (t - t_p) for m in statics) / (4 * t))
+    assert h.value("M_eq") == pytest.approx(hand)
+    assert h.value("M_eq_pv") == pytest.approx(hand * math.sqrt(15 / 25))
+    eta = h.value("eta")
+    assert h.value("M_lo") == pytest.approx(h.value("M_st") * eta ** 2)   # lowering: η helps
