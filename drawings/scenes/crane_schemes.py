@@ -7,7 +7,6 @@ Kinematic schemes are not to scale (ГОСТ 2.703): every size here is in sheet
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from drawings.layout import Rect

@@ -6,7 +6,7 @@ from __future__ import annotations
 from markupsafe import Markup
 
 from ..note import NoteBuilder, Section
-from .crane_common import fmt, strings_of
+from .crane_common import strings_of
 
 #: The designation of the crane note (ГОСТ 2.201 style, course code ГПМ).
 DESIGNATION = "ГПМ.КП.00.00.000 ПЗ"

@@ -105,7 +105,6 @@ def blocks(project) -> Blocks:
 
 
 def transmission(b: Blocks, project) -> None:
-    calc = b.calc
     h = project.crane.crane.hoist
     b.sub("transmission")
     b.text("drum_speed")
@@ -168,7 +167,6 @@ def couplings(b: Blocks, items, reducer) -> None:
 
 def content(project) -> PartContent:
     b = blocks(project)
-    calc = project.crane
     return PartContent("sections/crane_blocks.tex.j2", {"blocks": b.items}, {}, (conclusion(project),))
 
 

@@ -142,7 +142,3 @@ class Steps:
     def frozen(self) -> tuple[Mapping[str, Var], Mapping[str, CalcRecord], tuple[Check, ...]]:
         return MappingProxyType(dict(self.vars)), MappingProxyType(dict(self.recs)), tuple(self.checks)
 
-
-def product(*keys: str) -> str:
-    """``a * b * c`` of the keys that are not None (an optional factor is left out)."""
-    return " * ".join(k for k in keys if k)
