@@ -6,7 +6,7 @@ from __future__ import annotations
 from markupsafe import Markup
 
 from ..note import NoteBuilder, Section
-from .crane_common import strings_of
+from .crane_common import fmt, strings_of
 
 #: The designation of the crane note (ГОСТ 2.201 style, course code ГПМ).
 DESIGNATION = "ГПМ.КП.00.00.000 ПЗ"
@@ -17,26 +17,32 @@ def assignment_section(project) -> Section:
     s = strings_of(project)
     cr = project.task.crane
     h, t = cr.hoist, cr.trolley
+    words = s.get("crane.assignment")
     data = [
-        ("$Q$", "грузоподъёмность", h.capacity_t, "т"),
-        ("$m_{п}$", "масса крюковой подвески", h.hook_mass_kg, "кг"),
-        ("$H$", "высота подъёма", h.lifting_height_m, "м"),
-        ("$v_{п}$", "скорость подъёма", h.lifting_speed_m_min, "м/мин"),
-        ("$v_{т}$", "скорость передвижения тележки", t.speed_m_min, "м/мин"),
-        ("$m_{т}$", "масса тележки", t.mass_t, "т"),
-        ("$L$", "пролёт крана", cr.span_m, "м"),
-        ("$b_{т}$", "база тележки", t.wheel_base_m, "м"),
-        ("$k_{т}$", "колея тележки", t.gauge_m, "м"),
-        ("$u_{п}$", "кратность полиспаста", h.polyspast.ratio, ""),
+        ("$Q$", "capacity", h.capacity_t, "т"),
+        ("$m_{\\text{п}}$", "hook_mass", h.hook_mass_kg, "кг"),
+        ("$H$", "height", h.lifting_height_m, "м"),
+        ("$v_{\\text{п}}$", "lifting_speed", h.lifting_speed_m_min, "м/мин"),
+        ("$v_{\\text{т}}$", "trolley_speed", t.speed_m_min, "м/мин"),
+        ("$m_{\\text{т}}$", "trolley_mass", t.mass_t, "т"),
+        ("$L$", "span", cr.span_m, "м"),
+        ("$b_{\\text{т}}$", "wheel_base", t.wheel_base_m, "м"),
+        ("$k_{\\text{т}}$", "gauge", t.gauge_m, "м"),
+        ("$u_{\\text{п}}$", "ratio", h.polyspast.ratio, ""),
     ]
-    items = [("канат", h.rope.designation), ("двигатель подъёма", h.motor.designation),
-             ("редуктор подъёма", h.reducer.designation), ("тормоз подъёма", h.brake.designation)]
-    items += [("муфта подъёма", c.designation) for c in h.couplings]
-    items += [("колесо тележки", t.wheel.designation), ("рельс", t.rail.designation),
-              ("двигатель тележки", t.motor.designation), ("редуктор тележки", t.reducer.designation),
-              ("тормоз тележки", t.brake.designation)]
-    items += [("муфта тележки", c.designation) for c in t.couplings]
-    ctx = {"crane": cr, "data": [(Markup(a), b, c, d) for a, b, c, d in data], "items": items,
+    data = [(Markup(sym), getattr(words, key), value, unit) for sym, key, value, unit in data]
+    items = [("rope", h.rope.designation), ("hoist_motor", h.motor.designation),
+             ("hoist_reducer", h.reducer.designation), ("hoist_brake", h.brake.designation)]
+    items += [("hoist_coupling", c.designation) for c in h.couplings]
+    items += [("wheel", t.wheel.designation), ("rail", t.rail.designation),
+              ("trolley_motor", t.motor.designation), ("trolley_reducer", t.reducer.designation),
+              ("trolley_brake", t.brake.designation)]
+    items += [("trolley_coupling", c.designation) for c in t.couplings]
+    items = [(getattr(words, key), name) for key, name in items]
+    classes = (fmt(s.get("crane.assignment_text.classes"), use=cr.use_class, load=cr.load_class or "—")
+               if cr.use_class else Markup(""))
+    intro = fmt(s.get("crane.assignment_text.intro"), group=cr.group, classes=classes, g=cr.g)
+    ctx = {"crane": cr, "data": data, "items": items, "intro": intro,
            "rules": project.crane.rules}
     return Section(key="assignment", title=s.get("headings.assignment"), template="crane_assignment.tex.j2",
                    context=ctx)
