@@ -283,9 +283,8 @@ def draw_trolley_drive(view: View, driven: int, wheels: int, gauge_mm: float = 3
     n_axles = max(wheels // 2, 2)
     ys = [(i - (n_axles - 1) / 2) * base_mm / (n_axles - 1) for i in range(n_axles)]
     drive_axles = min(max(driven // 2, 1), 2)
-    if drive_axles == 1:                               # the driven axle on the slow shaft's line
-        k = min(range(n_axles), key=lambda i: abs(ys[i]))
-        ys = [y - ys[k] for y in ys]
+    if drive_axles == 1:                               # the driven axle on the slow shaft's line,
+        ys = [0.6 * base_mm * k / (n_axles - 1) for k in range(n_axles)]   # the idle ones above it
         driven_ys = [0.0]
         x_end = half + 16.0
     else:                                              # two driven axles: a spur train on each side

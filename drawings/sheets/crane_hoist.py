@@ -90,7 +90,7 @@ def draw(project, number: int, count: int) -> Sheet:
                                                          (left.x0 + w / 2, left.y0 + 55.0)))
     view.title("Схема запасовки каната")
     anchors = cs.draw_reeving(view, rv, height)
-    lab = [("drum", "Барабан", (25.0, 14.0)), ("hook_block", "Крюковая подвеска", (25.0, -22.0))]
+    lab = [("drum", "Барабан", (25.0, 0.0)), ("hook_block", "Крюковая подвеска", (25.0, -22.0))]
     if "equalizer" in anchors:
         lab.append(("equalizer", "Уравнительный блок", (40.0, 16.0)))
     for key, text, (dx, dy) in lab:
