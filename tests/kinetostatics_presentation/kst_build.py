@@ -11,7 +11,9 @@ from reportgen.project import Project
 from reportgen.taskfile import load_task
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml"))
+#: The examples with a linkage (examples/crane-hoist is another kind of document, docs/crane.md).
+EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
+                  if "\n[mechanism]" in "\n" + p.read_text(encoding="utf-8"))
 
 
 def project_of(example: str) -> Project:
