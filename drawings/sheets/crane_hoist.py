@@ -8,6 +8,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform
 from drawings.scenes import crane_schemes as cs
 from drawings.sheet import Sheet
+from reportgen.crane import crane_code
 from reportgen.crane.steps import plain_number, shown
 
 NEEDS = ("crane",)
@@ -19,8 +20,9 @@ def available(project) -> bool:
     return getattr(project.task, "crane", None) is not None
 
 
-def code(number: int) -> str:
-    return f"ГПМ.КП.00.00.{number:03d}"
+def code(project, number: int) -> str:
+    """The sheet's designation: [document] code (ГПМ.КП.00.00 by default) and the sheet's number."""
+    return f"{crane_code(project.task.document)}.{number:03d}"
 
 
 def reeving_rows(project) -> list[tuple[str, str]]:
@@ -78,7 +80,7 @@ def drive_rows(project) -> list[tuple[str, str, str]]:
 def draw(project, number: int, count: int) -> Sheet:
     calc = project.crane
     h = calc.crane.hoist
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(project, number), number=number, count=count)
     fr = sheet.frame
     top = sheet.extra_rect.y0 - CLEAR_MM
     # --- left: reeving scheme and its table

@@ -54,7 +54,7 @@ def rows(project) -> list[tuple[str, str, str]]:
 
 def draw(project, number: int, count: int) -> Sheet:
     t = project.crane.crane.trolley
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(project, number), number=number, count=count)
     fr = sheet.frame
     top = sheet.extra_rect.y0 - CLEAR_MM
     gauge, base = 340.0, 300.0

@@ -5,11 +5,11 @@ from __future__ import annotations
 
 from markupsafe import Markup
 
+from reportgen.crane import crane_code
+
 from ..note import NoteBuilder, Section
 from .crane_common import fmt, strings_of
 
-#: The designation of the crane note (ГОСТ 2.201 style, course code ГПМ).
-DESIGNATION = "ГПМ.КП.00.00.000 ПЗ"
 
 
 def assignment_section(project) -> Section:
@@ -53,7 +53,7 @@ def note_builder(project) -> NoteBuilder:
     s = strings_of(project)
     sections, _ = compose(project, s)
     intro = []
-    note = NoteBuilder(project.task.document, designation=DESIGNATION, introduction=intro,
+    note = NoteBuilder(project.task.document, designation=f"{crane_code(project.task.document)}.000 ПЗ", introduction=intro,
                        conclusions=[c for sec in sections for c in sec.conclusions],
                        assignment=assignment_section(project), strings=s)
     for sec in sections:

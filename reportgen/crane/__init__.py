@@ -14,7 +14,7 @@ from .rules import DutyRules, duty_rules
 from .spec import Crane
 from .trolley import trolley_calc
 
-__all__ = ["CraneCalc", "crane_calc", "MechanismCalc", "DutyRules"]
+__all__ = ["CraneCalc", "crane_calc", "crane_code", "CRANE_CODE", "MechanismCalc", "DutyRules"]
 
 
 @dataclass(frozen=True)
@@ -31,6 +31,16 @@ class CraneCalc:
     @property
     def passed(self) -> bool:
         return self.hoist.passed and self.trolley.passed
+
+
+#: The designation of a crane project when [document] code is left at the ТММ default (ГОСТ 2.201).
+CRANE_CODE = "ГПМ.КП.00.00"
+
+
+def crane_code(document) -> str:
+    """[document] code, or ``CRANE_CODE`` if the task left it at the ТММ default."""
+    from ..task import Document
+    return CRANE_CODE if document.code == Document().code else document.code
 
 
 def crane_calc(crane: Crane) -> CraneCalc:

@@ -7,7 +7,7 @@ they never take it on trust.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 
 @dataclass(frozen=True)
@@ -165,4 +165,3 @@ class Crane:
     load_class: str = ""               # В1 … В4 (informative)
     g: float = 9.81
     name: str = ""
-    notes: tuple[str, ...] = field(default_factory=tuple)
