@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from .errors import ParameterError
 from .taskfile_values import Spec
 from .taskspec import OPTIONAL, SECTION, SECTIONS, Key, Section
 
@@ -98,7 +99,7 @@ def _toml(value: Any) -> str:
         return "[" + ", ".join(_toml(v) for v in value) + "]"
     if isinstance(value, dict):
         return "{ " + ", ".join(f"{k} = {_toml(v)}" for k, v in value.items()) + " }"
-    raise TypeError(f"no TOML form for {value!r}")
+    raise ParameterError("value", value, "a TOML value (bool, number, string, list or table)")
 
 
 def _cell(text: str) -> str:

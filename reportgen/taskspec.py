@@ -15,6 +15,7 @@ from typing import Any, Literal
 from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
                    Mechanism, Planetary)
 from .crane.taskspec import crane_sections
+from .errors import NameLookupError
 from .taskfile_values import REQUIRED, Array, Bool, Int, NameMap, Number, OneOf, Spec, Str, Word, vec2
 
 __all__ = ["Key", "Section", "SECTIONS", "SECTION", "MAX_LENGTH", "REQUIRED", "OPTIONAL"]
@@ -87,7 +88,7 @@ class Section:
         for k in self.keys:
             if k.name == name:
                 return k
-        raise KeyError(name)
+        raise NameLookupError(f"key of [{self.path}]", name, tuple(k.name for k in self.keys))
 
     def default(self, name: str) -> Any:
         """The loader's default for ``name`` (``REQUIRED`` if it must be given)."""

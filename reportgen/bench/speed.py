@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..errors import ComputationError
 from .tables import Table, ms, rel, sec
 
 
@@ -38,7 +39,7 @@ def _run(args: list[str], env: dict[str, str], cwd: Path) -> float:
                        capture_output=True, text=True, timeout=1800)
     dt = time.perf_counter() - t0
     if r.returncode != 0:
-        raise RuntimeError((r.stderr or r.stdout).strip().splitlines()[-1][:300])
+        raise ComputationError("reportgen " + " ".join(args[:1]), (r.stderr or r.stdout).strip().splitlines()[-1][:300])
     return dt
 
 
