@@ -17,6 +17,7 @@ from markupsafe import Markup
 
 from reportgen.calc import CalcRecord, format_decimal, unit_latex
 from reportgen.crane.steps import upright_cyrillic_in_math
+from reportgen.errors import NameLookupError
 
 from ..render import Strings, _StringTable, escape_latex
 
@@ -51,7 +52,7 @@ def where_word(strings: Strings, mechanism: str, key: str) -> str:
             continue
         if isinstance(value, str):
             return value
-    raise KeyError(f"no «где» words for {key!r} (crane.where.{key} in strings/ru/crane.toml)")
+    raise NameLookupError("«где» words (crane.where.<key> in strings/ru/crane.toml)", key)
 
 
 def localize(rec: CalcRecord, strings: Strings, mechanism: str) -> CalcRecord:

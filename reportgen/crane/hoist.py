@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from typing import Mapping
 
 from ..calc import CalcRecord, Var
+from ..errors import NameLookupError
 from . import drive
 from .rules import DutyRules, brake_factor_each
 from .spec import Crane
@@ -52,7 +53,7 @@ class MechanismCalc:
         for c in self.checks:
             if c.key == key:
                 return c
-        raise KeyError(key)
+        raise NameLookupError("check", key, tuple(c.key for c in self.checks))
 
     @property
     def passed(self) -> bool:

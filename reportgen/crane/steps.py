@@ -16,6 +16,7 @@ from types import MappingProxyType
 from typing import Mapping
 
 from ..calc import CalcRecord, Var, format_decimal, record
+from ..errors import ParameterError
 
 
 @dataclass(frozen=True)
@@ -48,7 +49,7 @@ def check(key: str, value: float, relation: str, limit: float, unit: str = "", *
     elif relation == "≤":
         ok = value <= limit + tol
     else:
-        raise ValueError(f"relation {relation!r}")
+        raise ParameterError("relation", relation, "≥ or ≤")
     return Check(key, value, limit, relation, unit, ok, records, advice if not ok else "",
                  advice_value if not ok else None, advice_unit if not ok else "")
 
