@@ -141,7 +141,7 @@ def extremes(evaluate: Callable[[np.ndarray], tuple], nodes: np.ndarray,
                 if keep:
                     brackets[k] = [(min(br[i][0] for i in keep), max(br[i][1] for i in keep))]
                     limits[k] = [(min(limits[k][i][0] for i in keep), max(limits[k][i][1] for i in keep))]
-    for t_best, v_best in best:
+    for _t, v_best in best:
         if not math.isfinite(v_best):
             raise ComputationError("the search for an extreme", "a non-finite value")
     return best

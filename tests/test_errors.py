@@ -71,7 +71,7 @@ def test_every_exception_class_has_the_one_root():
 def test_cli_maps_every_error_to_an_exit_status(monkeypatch, capsys, exc, code):
     import reportgen.commands.gear as gear
 
-    def boom(args):
+    def boom(_args):
         raise exc
     monkeypatch.setattr(gear, "run", boom)
     rc = main(["gear", "--z1", "13", "--z2", "26", "--module", "9"])
