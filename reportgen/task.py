@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Literal, Mapping
+from typing import TYPE_CHECKING, Literal, Mapping
+
+if TYPE_CHECKING:
+    from .crane.spec import Crane
 
 from .errors import NameLookupError
 from .geometry import Vec2
@@ -193,7 +196,7 @@ class Task:
     dynamics: Dynamics | None = None
     gears: Gears | None = None
     planetary: Planetary | None = None
-    crane: object | None = None     # reportgen.crane.spec.Crane (hoist and trolley of a bridge crane)
+    crane: "Crane | None" = None    # the hoist and trolley travel of a bridge crane (docs/crane.md)
     source: str = ""
 
     @property

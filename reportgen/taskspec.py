@@ -12,11 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 from typing import Any, Literal
 
+from .crane.taskspec import crane_sections
 from .errors import NameLookupError
 from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
                    Mechanism, Planetary)
-from .crane.taskspec import crane_sections
-from .errors import NameLookupError
 from .taskfile_values import REQUIRED, Array, Bool, Int, NameMap, Number, OneOf, Spec, Str, Word, vec2
 
 __all__ = ["Key", "Section", "SECTIONS", "SECTION", "MAX_LENGTH", "REQUIRED", "OPTIONAL"]

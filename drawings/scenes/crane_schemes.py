@@ -8,6 +8,7 @@ Kinematic schemes are not to scale (ГОСТ 2.703): every size here is in sheet
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Sequence
 
 from drawings.layout import Rect
 from drawings.primitives import Transform
@@ -23,7 +24,7 @@ BRANCH_MM = 13.0      # distance between rope branches in the reeving scheme
 LINE_PITCH = 1.6      # of a wrapped cell, × text height
 
 
-def _row_lines(row: tuple[str, ...], widths: tuple[float, ...]) -> list[list[str]]:
+def _row_lines(row: Sequence[str], widths: tuple[float, ...]) -> list[list[str]]:
     from drawings.sheet import _wrap        # the sheet's word wrap (one home for it)
     return [_wrap(cell, TEXT_MM, w - 4.0, 1.0) for cell, w in zip(row, widths)]
 
@@ -33,12 +34,12 @@ def _row_height(lines: list[list[str]]) -> float:
     return ROW_MM + (n - 1) * TEXT_MM * LINE_PITCH
 
 
-def table_size(rows: list[tuple[str, ...]], widths: tuple[float, ...]) -> tuple[float, float]:
+def table_size(rows: Sequence[Sequence[str]], widths: tuple[float, ...]) -> tuple[float, float]:
     """Width and height of :func:`draw_table`'s table with its title, mm."""
     return sum(widths), sum(_row_height(_row_lines(r, widths)) for r in rows) + TITLE_MM + 5.0
 
 
-def draw_table(sheet: Sheet, name: str, rect: Rect, title: str, rows: list[tuple[str, ...]],
+def draw_table(sheet: Sheet, name: str, rect: Rect, title: str, rows: Sequence[Sequence[str]],
                widths: tuple[float, ...]) -> View:
     """A table (first row = header, centred) under its title, in ``rect`` from its top; long cells
     wrap onto more lines (the row grows)."""

@@ -52,7 +52,7 @@ def note_builder(project) -> NoteBuilder:
     from ..compose import compose
     s = strings_of(project)
     sections, _ = compose(project, s)
-    intro = []
+    intro: list = []
     note = NoteBuilder(project.task.document, designation=f"{crane_code(project.task.document)}.000 ПЗ", introduction=intro,
                        conclusions=[c for sec in sections for c in sec.conclusions],
                        assignment=assignment_section(project), strings=s)

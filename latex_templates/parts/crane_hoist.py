@@ -88,7 +88,7 @@ def blocks(project) -> Blocks:
            j=mo.rotor_inertia, psi=mo.max_torque_ratio, group=r.group, pvd=r.pv_percent)
     transmission(b, project)
     motor_checks(b, "mst")
-    couplings(b, h.couplings, h.reducer)
+    couplings(b, h.couplings)
     b.sub("brake")
     b.text("brake_eta")
     b.rec("eta_t")
@@ -156,7 +156,7 @@ def motor_checks(b: Blocks, mst_key: str) -> None:
     b.check("reducer_torque")
 
 
-def couplings(b: Blocks, items, reducer) -> None:
+def couplings(b: Blocks, items) -> None:
     b.sub("couplings")
     b.text("coupling_intro")
     b.rec("T_c")

@@ -57,7 +57,7 @@ def blocks(project) -> Blocks:
     b.rec("v_act", "dv")
     b.check("speed")
     motor_checks(b, "mst_trolley")
-    couplings(b, t.couplings, t.reducer)
+    couplings(b, t.couplings)
     b.sub("brake")
     b.text("trolley_brake")
     b.rec("W_f0", "W_in", "T_br")

@@ -13,7 +13,7 @@ import math
 import re
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Mapping
+from typing import Any, Mapping
 
 from ..calc import CalcRecord, Var, format_decimal, record
 from ..errors import ParameterError
@@ -121,7 +121,7 @@ class Steps:
         symbol = upright_cyrillic(symbol)
         if decimals is None and unit == "мм":
             decimals = 1
-        named: dict[str, Var | CalcRecord] = {}
+        named: dict[str, Any] = {}
         for n in _expr_names(expr):
             if n in _FUNCS:
                 continue

@@ -11,7 +11,7 @@ from .rules import GROUPS, RULES
 from .spec import Brake, Drum, Hoist, Motor, OpenGear, Polyspast, Rail, Trolley, Wheel
 
 
-def _d(cls: type, name: str) -> Any:
+def _d(cls: Any, name: str) -> Any:
     return cls.__dataclass_fields__[name].default
 
 
