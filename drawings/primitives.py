@@ -33,7 +33,8 @@ Coords = Sequence[float] | np.ndarray
 
 
 def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str:
-    """``value`` with a decimal comma: ``format_number(0.0200) == "0,02"``; ``-0`` becomes ``0``.
+    """``value`` with the sheet language's decimal mark: ``format_number(0.0200) == "0,02"`` (ru/uk);
+    ``-0`` becomes ``0``.
 
     ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept.
     """
@@ -46,7 +47,8 @@ def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str
         s = "0"
     if s.startswith("-") and float(s) == 0.0:
         s = s[1:]
-    return s.replace(".", ",")
+    from .words import decimal_mark
+    return s.replace(".", decimal_mark())
 
 
 def format_significant(value: float, digits: int = 3) -> str:

@@ -21,6 +21,7 @@ from shapely.geometry import Polygon, box
 from . import style
 from .layout import Overlap, Rect, Request, find_overlaps, pack
 from .primitives import _ALIGN, _ALIGN_NAMES, Annotations, Canvas, Transform
+from .words import tr
 from reportgen.errors import InternalError, ParameterError
 
 # ---------------------------------------------------------------------------------------------
@@ -66,13 +67,13 @@ TITLE_LINES: tuple[tuple[float, float, float, float, bool], ...] = (
     (150, 20, 150, 40, True), (167, 20, 167, 40, True), (155, 15, 155, 20, True),
 )
 
-#: Fixed captions: (text, x, y of the cell's lower-left, cell width, cell height).
+#: Fixed captions: (catalogue key ``sheets.<key>``, x, y of the cell's lower-left, cell width, cell height).
 TITLE_CAPTIONS: tuple[tuple[str, float, float, float, float], ...] = (
-    ("Изм.", 0, 30, 7, 5), ("Лист", 7, 30, 10, 5), ("№ докум.", 17, 30, 23, 5),
-    ("Подп.", 40, 30, 15, 5), ("Дата", 55, 30, 10, 5),
-    ("Разраб.", 0, 25, 17, 5), ("Пров.", 0, 20, 17, 5), ("Т.контр.", 0, 15, 17, 5),
-    ("Н.контр.", 0, 5, 17, 5), ("Утв.", 0, 0, 17, 5),
-    ("Лит.", 135, 35, 15, 5), ("Масса", 150, 35, 17, 5), ("Масштаб", 167, 35, 18, 5),
+    ("blk02", 0, 30, 7, 5), ("blk03", 7, 30, 10, 5), ("blk04", 17, 30, 23, 5),
+    ("blk05", 40, 30, 15, 5), ("blk06", 55, 30, 10, 5),
+    ("blk07", 0, 25, 17, 5), ("blk08", 0, 20, 17, 5), ("blk09", 0, 15, 17, 5),
+    ("blk10", 0, 5, 17, 5), ("blk11", 0, 0, 17, 5),
+    ("blk12", 135, 35, 15, 5), ("blk13", 150, 35, 17, 5), ("blk14", 167, 35, 18, 5),
 )
 CAPTION_HEIGHT = 2.5
 
@@ -81,7 +82,7 @@ CAPTION_HEIGHT = 2.5
 class TitleBlock:
     """What goes into the title block. ``title`` → graph 1, ``code`` → graph 2 and graph 26,
     ``organization``/``group`` → graph 8 (two lines), ``author``/``supervisor`` → Разраб./Пров.
-    ``letter`` → Лит. (``У`` = учебный), ``scale`` → Масштаб (blank when views have several)."""
+    ``letter`` → Лит. (empty: the student letter of the language, ``У`` = учебный), ``scale`` → Масштаб (blank when views have several)."""
     title: str
     code: str
     number: int = 1
@@ -91,7 +92,7 @@ class TitleBlock:
     organization: str = ""
     group: str = ""
     scale: str = ""
-    letter: str = "У"
+    letter: str = ""
     mass: str = ""
 
     def __post_init__(self) -> None:
@@ -100,7 +101,7 @@ class TitleBlock:
 
     @classmethod
     def from_document(cls, document: Any, *, title: str, code: str, number: int = 1,
-                      count: int = 1, scale: str = "", letter: str = "У") -> "TitleBlock":
+                      count: int = 1, scale: str = "", letter: str = "") -> "TitleBlock":
         """From a ``reportgen.task.Document``-like object (author, supervisor, organization, group)."""
         return cls(title=title, code=code, number=number, count=count,
                    author=getattr(document, "author", "") or "",
@@ -200,7 +201,7 @@ class Sheet:
 
     @classmethod
     def a1(cls, document: Any, *, title: str, code: str, number: int = 1, count: int = 1,
-           scale: str = "", letter: str = "У") -> "Sheet":
+           scale: str = "", letter: str = "") -> "Sheet":
         """An A1 landscape sheet whose title block is filled from a ``Document``."""
         return cls(A1, TitleBlock.from_document(document, title=title, code=code, number=number,
                                                 count=count, scale=scale, letter=letter))
@@ -321,23 +322,23 @@ class Sheet:
         self._line((tx, ty + TITLE_H), (tx + TITLE_W, ty + TITLE_H), True)
         for x0, y0, x1, y1, thick in TITLE_LINES:
             self._line((tx + x0, ty + y0), (tx + x1, ty + y1), thick)
-        for text, x, y, w, h in TITLE_CAPTIONS:
-            self._cell_text(text, tx + x, ty + y, w, h, max_height=CAPTION_HEIGHT,
+        for key, x, y, w, h in TITLE_CAPTIONS:
+            self._cell_text(tr(f"sheets.{key}"), tx + x, ty + y, w, h, max_height=CAPTION_HEIGHT,
                             align="left" if x == 0 and y < 30 else "center")
         fl = self.fields
-        self._cell_text("Лист", tx + 135, ty + 15, 10, 5, max_height=CAPTION_HEIGHT, align="left")
+        self._cell_text(tr("sheets.blk17"), tx + 135, ty + 15, 10, 5, max_height=CAPTION_HEIGHT, align="left")
         self._cell_text(str(fl.number), tx + 145, ty + 15, 10, 5, max_height=3.5)
-        self._cell_text("Листов", tx + 155, ty + 15, 15, 5, max_height=CAPTION_HEIGHT, align="left")
+        self._cell_text(tr("sheets.blk18"), tx + 155, ty + 15, 15, 5, max_height=CAPTION_HEIGHT, align="left")
         self._cell_text(str(fl.count), tx + 170, ty + 15, 15, 5, max_height=3.5)
         self._cell_text(fl.author, tx + 17, ty + 25, 23, 5, max_height=CAPTION_HEIGHT, align="left")
         self._cell_text(fl.supervisor, tx + 17, ty + 20, 23, 5, max_height=CAPTION_HEIGHT,
                         align="left")
         self._cell_text(fl.code, tx + 65, ty + 40, 120, 15, max_height=7.0)
         self._cell_text(fl.title, tx + 65, ty + 15, 70, 25, max_height=5.0, max_lines=3)
-        self._cell_text(fl.letter, tx + 135, ty + 20, 5, 15, max_height=3.5)
+        self._cell_text(fl.letter or tr("sheets.blk01"), tx + 135, ty + 20, 5, 15, max_height=3.5)
         self._cell_text(fl.mass, tx + 150, ty + 20, 17, 15, max_height=3.5)
         self._cell_text(fl.scale, tx + 167, ty + 20, 18, 15, max_height=3.5)
-        org = "\n".join(s for s in (fl.organization, f"гр. {fl.group}" if fl.group else "") if s)
+        org = "\n".join(s for s in (fl.organization, tr("sheets.blk19", v1=fl.group) if fl.group else "") if s)
         self._cell_text(org, tx + 135, ty, 50, 15, max_height=3.5, max_lines=3)
         # graph 26: the designation turned by 180° in the upper-left corner
         er = self.extra_rect

@@ -11,7 +11,7 @@ from types import ModuleType
 from reportgen.modules import optional_module
 
 from .note import Section
-from .parts import PartContent
+from .parts import PartContent, active_strings
 
 #: (section key, part modules) in the order of the note; the titles are strings ``sections.<key>``.
 SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
@@ -56,7 +56,8 @@ def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list
             mod = part_module(name)
             if mod is None or not mod.available(project):
                 continue
-            contents.append((name, mod.content(project)))
+            with active_strings(strings):
+                contents.append((name, mod.content(project)))
         if not contents:
             left_out.append(title)
             continue

@@ -128,6 +128,7 @@ from reportgen.task import Document
         if bad:
             raise InternalError("note", "printed formulas do not reproduce their printed results: "
                              + "; ".join(f"{r.symbol} = {r.expr}" for r in bad))
+        text = self.strings.localize_latex(text)
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")
         return tex_path

@@ -109,14 +109,49 @@ def _finalize(value: Any) -> Any:
 
 # --------------------------------------------------------------------------- strings catalogue
 class MissingString(InternalError, KeyError):
-    """A key the strings catalogue of a language does not have."""
+    """A key the strings catalogue of a language does not have (reportgen's own defect: every key
+    exists in every language, tests/lang checks it): the build stops and names the key and the
+    language; there is no fallback to another language."""
+
+    def __init__(self, key: str, language: str) -> None:
+        self.key = key
+        self.language = language
+        InternalError.__init__(self, "strings catalogue", f"no string {key!r} in the {language!r} catalogue "
+                               f"(latex_templates/strings/{language}.toml or strings/{language}/*.toml)")
+
+    def __str__(self) -> str:
+        return RuntimeError.__str__(self)
+
+
+_SNIPPET_MARKS = ("\\VAR{", "\\BLOCK{")
+_CYRILLIC_RUN = re.compile(r"[А-Яа-яЁёІіЇїЄєҐґ]+")
+_TEXT_IN_MATH = re.compile(r"(?P<pre>[_^]\{?)?\\text\{(?P<body>[^{}]*)\}")
+
+
+def plural_index(language: str, n: float) -> int:
+    """Which plural form a count takes: ru/uk 1 участок / 2 участка / 5 участков (0, 1, 2),
+    a fraction takes the second form (2,5 участка); en 1 interval / 5 intervals (0, 1)."""
+    if language == "en":
+        return 0 if n == 1 else 1
+    if float(n) != int(n):
+        return 1
+    k = abs(int(n))
+    if k % 10 == 1 and k % 100 != 11:
+        return 0
+    if 2 <= k % 10 <= 4 and not 12 <= k % 100 <= 14:
+        return 1
+    return 2
 
 
 class Strings:
-    """The sentences of the framework's templates in one language (``strings/<lang>.toml``).
+    """The words of the note and the sheets in one language (``strings/<lang>.toml`` +
+    ``strings/<lang>/*.toml``).
 
-    In templates: ``\\VAR{s.headings.contents}``; a list stays a list (of ``Tex``). Keys missing in
-    the language fall back to Russian and are listed in :attr:`fallbacks`.
+    In templates: ``\\VAR{s.headings.contents}`` or ``\\VAR{t("kinematics.plan_intro")}`` (a string
+    holding ``\\VAR{}``/``\\BLOCK{}`` is a Jinja snippet rendered with the caller's context and the
+    keyword arguments); a list stays a list (of ``Tex``). From Python: :meth:`text` renders a
+    snippet with keyword arguments. A key missing in the language is a :class:`MissingString`
+    naming the key and the language (no fallback to another language).
     """
 
     def __init__(self, language: str) -> None:
@@ -124,18 +159,109 @@ class Strings:
             raise OptionError("language", f"{language!r} has no strings catalogue", "one of " + ", ".join(LANGUAGES))
         self.language = language
         self._data = _load_strings(language)
-        self._fallback = _load_strings(FALLBACK_LANGUAGE) if language != FALLBACK_LANGUAGE else {}
-        self.fallbacks: set[str] = set()
+        self.fallbacks: set[str] = set()     # always empty: kept for callers that report it
+
+    def raw(self, key: str) -> Any:
+        """The catalogue value at a dotted key (str, list or dict), unrendered."""
+        found = _lookup(self._data, key)
+        if found is None:
+            raise MissingString(key, self.language)
+        return found
+
+    def has(self, key: str) -> bool:
+        return _lookup(self._data, key) is not None
 
     def get(self, key: str) -> Any:
         """The string (or list, or table) at a dotted key, as ``Tex``."""
-        found = _lookup(self._data, key)
-        if found is None:
-            found = _lookup(self._fallback, key)
-            if found is None:
-                raise MissingString(f"no string {key!r} for language {self.language!r}")
-            self.fallbacks.add(key)
-        return _as_tex(found, key, self)
+        return _as_tex(self.raw(key), key, self)
+
+    def text(self, key: str, **values: Any) -> Tex:
+        """The string at ``key`` with its ``\\VAR{name}`` placeholders filled from ``values``
+        (numbers print with the language's decimal mark, plain strings escaped)."""
+        value = self.raw(key)
+        if not isinstance(value, str):
+            raise InternalError("strings catalogue", f"{key!r} ({self.language}) is not a sentence")
+        return render_snippet(self, key, value, values)
+
+    def plural(self, n: float, key: str) -> Tex:
+        """The form of the word at ``key`` (a list of forms) that agrees with the count ``n``."""
+        forms = self.raw(key)
+        if isinstance(forms, str):
+            forms = [forms]
+        i = plural_index(self.language, n)
+        return Tex(forms[min(i, len(forms) - 1)])
+
+    def count(self, n: float, key: str) -> Tex:
+        """``n`` and the agreeing form of the word: «24~участка», «5~ділянок», «1~interval»."""
+        from . import numbers as _numbers
+        number = str(n) if isinstance(n, int) else _numbers.num(n)
+        return Tex(number) + Tex("~") + self.plural(n, key)
+
+    def math_word(self, word: str, table: str = "units") -> str:
+        """A Russian word of a unit (table ``units``: ``м/с`` → ``m/s``) or of a symbol's subscript
+        (table ``subscripts``: ``ур`` → ``b``) in this language; Russian keeps it. The whole word
+        is looked up first, then each run of Cyrillic letters."""
+        if self.language == FALLBACK_LANGUAGE or not _CYRILLIC_RUN.search(word):
+            return word
+        words = self.raw(table)
+        if word in words:
+            return words[word]
+        out = []
+        pos = 0
+        for m in _CYRILLIC_RUN.finditer(word):
+            out.append(word[pos:m.start()])
+            if m.group(0) not in words:
+                raise MissingString(f"{table}.{m.group(0)}", self.language)
+            out.append(words[m.group(0)])
+            pos = m.end()
+        out.append(word[pos:])
+        return "".join(out)
+
+    def designation(self, document: Any, number: int | None = None) -> str:
+        """The ЕСКД designation (ГОСТ 2.201) of the note (``number`` None) or of sheet ``number``:
+        ``[document] code`` (its default, the catalogue's ``designation.default_code``, is the
+        language's, Latin letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
+        from dataclasses import replace
+
+        from reportgen.task import Document
+        if document is None:
+            document = Document()
+        if document.code == Document().code:          # not given: the language's default letters
+            document = replace(document, code=str(self.get("designation.default_code")))
+        if number is None:
+            return str(document.code) + str(self.get("designation.note_suffix"))
+        return str(document.sheet_code(number))
+
+    def symbol(self, name: str) -> str:
+        """A solver's load name or a sheet label (``Fур``, ``Mи2``, ``Адв``) in this language:
+        the Cyrillic runs through the ``subscripts`` table (``Fур`` → ``Fb``)."""
+        return self.math_word(name, "subscripts")
+
+    def localize_latex(self, source: str) -> str:
+        """The rendered LaTeX in this language's conventions: ``\\text{}`` after ``_``/``^``
+        through the ``subscripts`` table, other ``\\text{}`` (units) through ``units``; the decimal
+        mark and the function names of the ``format`` table."""
+        if self.language == FALLBACK_LANGUAGE:
+            return source
+
+        def repl(m: re.Match) -> str:
+            pre, body = m.group("pre") or "", m.group("body")
+            if pre:
+                word = self.math_word(body, "subscripts")
+            else:
+                try:
+                    word = self.math_word(body, "units")
+                except MissingString:      # a subscript after other letters: F^{B}_{M\text{и}2}
+                    word = self.math_word(body, "subscripts")
+            return pre + "\\text{" + word + "}"
+
+        source = _TEXT_IN_MATH.sub(repl, source)
+        fmt = self.raw("format")
+        if fmt.get("decimal", "{,}") != "{,}":
+            source = source.replace("{,}", fmt["decimal"])
+        for name, value in fmt.get("functions", {}).items():
+            source = source.replace("\\operatorname{" + name + "}", value)
+        return source
 
     def __getattr__(self, name: str) -> Any:
         if name.startswith("_"):
@@ -155,6 +281,9 @@ class _StringTable:
             raise AttributeError(name)
         return self._strings.get(f"{self._prefix}.{name}")
 
+    def __getitem__(self, name: str) -> Any:
+        return self._strings.get(f"{self._prefix}.{name}")
+
 
 def _as_tex(found: Any, key: str, strings: Strings) -> Any:
     if isinstance(found, dict):
@@ -171,6 +300,51 @@ def _lookup(data: Mapping[str, Any], key: str) -> Any:
             return None
         node = node[part]
     return node
+
+
+_SNIPPETS: dict[tuple[str, str], Any] = {}
+_SNIPPET_ENV: list[Any] = []
+
+
+def render_snippet(strings: Strings, key: str, value: str, context: Mapping[str, Any]) -> Tex:
+    """Render a catalogue string: plain text as is, a Jinja snippet with ``context`` (+ ``s``)."""
+    if not any(mark in value for mark in _SNIPPET_MARKS):
+        return Tex(value)
+    cache_key = (strings.language, key)
+    if cache_key not in _SNIPPETS:
+        if not _SNIPPET_ENV:
+            _SNIPPET_ENV.append(make_environment())
+        _SNIPPETS[cache_key] = _SNIPPET_ENV[0].from_string(value)
+    ctx = {"s": strings, **context}
+    return Tex(_SNIPPETS[cache_key].render(ctx).strip("\n"))
+
+
+@jinja2.pass_context
+def _t(ctx: Any, key: str, **values: Any) -> Tex:
+    """Template global ``t("area.key", name=value)``: the catalogue string rendered with the
+    template's context plus ``values``."""
+    strings: Strings = ctx["s"]
+    value = strings.raw(key)
+    if not isinstance(value, str):
+        raise InternalError("strings catalogue", f"{key!r} ({strings.language}) is not a sentence")
+    return render_snippet(strings, key, value, {**ctx.get_all(), **values})
+
+
+@jinja2.pass_context
+def _plural(ctx: Any, n: float, key: str) -> Tex:
+    return ctx["s"].plural(n, key)
+
+
+@jinja2.pass_context
+def _count(ctx: Any, n: float, key: str) -> Tex:
+    return ctx["s"].count(n, key)
+
+
+@jinja2.pass_context
+def _unit_in_context(ctx: Any, unit: str) -> Tex:
+    """A unit in running text, in the note's language (``м/с`` → ``m/s``)."""
+    strings = ctx.get("s")
+    return escape_latex(strings.math_word(str(unit)) if strings is not None else unit)
 
 
 _STRING_CACHE: dict[str, dict[str, Any]] = {}
@@ -192,8 +366,11 @@ def _load_strings(language: str) -> dict[str, Any]:
         merged: dict[str, Any] = {}
         for path in files:
             if path.is_file():
-                _merge_catalogue(merged, tomllib.loads(path.read_text(encoding="utf-8")),
-                                 f"{language}/{path.name}", "")
+                try:
+                    data = tomllib.loads(path.read_text(encoding="utf-8"))
+                except tomllib.TOMLDecodeError as exc:
+                    raise InternalError("strings catalogue", f"{language}/{path.name}: {exc}") from None
+                _merge_catalogue(merged, data, f"{language}/{path.name}", "")
         _STRING_CACHE[language] = merged
     return _STRING_CACHE[language]
 
@@ -391,10 +568,10 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
         angle=lambda v, decimals=1: Tex(numbers.angle(v, decimals)),
         mnum=lambda v, digits=4: Tex(numbers.mnum(v, digits)),
         mfixed=lambda v, decimals=2: Tex(numbers.mfixed(v, decimals)),
-        tex=tex, escape_latex=escape_latex, unit=unit_text,
+        tex=tex, escape_latex=escape_latex, unit=_unit_in_context, plural=_plural, count=_count,
         e=escape_latex, escape=escape_latex, forceescape=escape_latex, join=_join, replace=_replace,
         unit_math=lambda u: Tex(unit_latex(u)),
     )
     env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell, math_text_letters=math_text_letters,
-                       fallback_glyph_classes=fallback_glyph_classes)
+                       fallback_glyph_classes=fallback_glyph_classes, t=_t)
     return env

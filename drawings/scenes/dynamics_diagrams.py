@@ -21,6 +21,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.errors import BuildError
+from ..words import tr
 
 #: Room around a diagram: above (title, scale), below (position numbers), mm.
 TOP_MM = 22.0
@@ -176,9 +177,9 @@ def draw_moment(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     """M_red(φ): the points, the curve through them, the steps of the mid ordinates and the pole."""
     sp = spans(g, labels)["M"]
     v = _view(sheet, "moment", lay.moment, lay.o_moment)
-    _title(v, "Приведённый момент сил сопротивления Мпр(φ)",
-           f"μM = {format_significant(g.mu_M, 4)} Н·м/мм,  μφ = {format_significant(g.mu_phi, 4)} рад/мм")
-    _phi_axes(v, g, sp, "Мпр", labels, numbers=True)
+    _title(v, tr("sheets.dd01"),
+           tr("sheets.dd02", v1=format_significant(g.mu_M, 4), v2=format_significant(g.mu_phi, 4)))
+    _phi_axes(v, g, sp, tr("sheets.dd03"), labels, numbers=True)
     _break_lines(v, g, sp, labels)
     pts = list(zip(map(float, g.x), map(float, g.M_mm)))
     v.polyline(pts, "contour")
@@ -210,15 +211,15 @@ def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     """A_с by chords and the straight line of A_дв (from the origin to the end of A_с)."""
     sp = spans(g)["A"]
     v = _view(sheet, "work", lay.work, lay.o_work)
-    _title(v, "Работа сил сопротивления Ас(φ) и движущих сил Адв(φ)",
-           f"μA = μM·μφ·H = {format_significant(g.mu_A, 4)} Дж/мм")
+    _title(v, tr("sheets.dd04"),
+           tr("sheets.dd05", v1=format_significant(g.mu_A, 4)))
     _phi_axes(v, g, sp, "A", labels, numbers=False)
     pts = _nodes_polyline(v, g.x, g.a_mm)
     end = pts[-1]
     v.line((0.0, 0.0), end, "contour")
     i_mid = len(pts) // 2
-    v.label(pts[i_mid], "Ас", 5.0, prefer_deg=-60.0)
-    v.label((end[0] * 0.5, end[1] * 0.5), "Адв", 5.0, prefer_deg=60.0)
+    v.label(pts[i_mid], tr("sheets.dd06"), 5.0, prefer_deg=-60.0)
+    v.label((end[0] * 0.5, end[1] * 0.5), tr("sheets.dd07"), 5.0, prefer_deg=60.0)
     return v
 
 
@@ -226,9 +227,9 @@ def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     """ΔE(φ) = A_дв + A_с at μE, by subtracting the line from the chords."""
     sp = spans(g)["E"]
     v = _view(sheet, "energy", lay.energy, lay.o_energy)
-    k = f" (увеличено в {g.enlargement} раза)" if g.enlargement > 1 else ""
-    _title(v, "Изменение кинетической энергии ΔE(φ)",
-           f"μE = {format_significant(g.mu_E, 4)} Дж/мм{k}")
+    k = tr("sheets.dd08", v1=g.enlargement) if g.enlargement > 1 else ""
+    _title(v, tr("sheets.dd09"),
+           tr("sheets.dd10", v1=format_significant(g.mu_E, 4), k=k))
     _phi_axes(v, g, sp, "ΔE", labels, numbers=True)
     _nodes_polyline(v, g.x, g.e_mm)
     return v
@@ -239,8 +240,7 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str]) -> tuple[V
     is returned: the distance between K and L measured on the sheet, mm)."""
     sp = spans(g)["W"]
     v = _view(sheet, "wittenbauer", lay.wittenbauer, lay.o_wittenbauer)
-    _title(v, "Диаграмма энергомасс ΔE(Jпр)", f"μE = {format_significant(g.mu_E, 4)} Дж/мм,  "
-           f"μJ = {format_significant(g.mu_J, 4)} кг·м²/мм")
+    _title(v, tr("sheets.dd11"), tr("sheets.dd12", v1=format_significant(g.mu_E, 4), v2=format_significant(g.mu_J, 4)))
     x_len = _j_length(g)
     v.axes((0.0, 0.0), x_len + RIGHT_MM - 6.0, sp.up + 4.0, sp.down, x_label="J", y_label="ΔE")
     pts = list(zip(map(float, g.j_mm), map(float, g.e_mm)))
@@ -289,8 +289,7 @@ def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     for p in pts:
         v.circle_mm(p, 0.6, "contour")
     r = v.rect
-    v.text_mm((r.x0 + 4.0, r.y0 + 2.0), f"Приведённый момент инерции Jпр(φ),  μJ = "
-              f"{format_significant(g.mu_J, 4)} кг·м²/мм", 3.5, "bottom-left")
+    v.text_mm((r.x0 + 4.0, r.y0 + 2.0), tr("sheets.dd13", v1=format_significant(g.mu_J, 4)), 3.5, "bottom-left")
     return v
 
 
@@ -313,8 +312,8 @@ def draw_omega(sheet: Sheet, rect: Rect, res, g) -> View:
     mu, sp = omega_span(res)
     left = g.H + LEFT_MM + 8.0
     v = _view(sheet, "omega", rect, (rect.x0 + left, rect.y1 - TOP_MM - sp.up))
-    _title(v, "Угловая скорость кривошипа ω(φ) с маховиком",
-           f"μω = {format_significant(mu, 4)} (рад/с)/мм,  ось φ на уровне ωm = {format_significant(res.omega_m, 4)} рад/с")
+    _title(v, tr("sheets.dd14"),
+           tr("sheets.dd15", v1=format_significant(mu, 4), v2=format_significant(res.omega_m, 4)))
     lo, hi = res.motion.band
     ticks = [((hi - res.omega_m) / mu, format_significant(hi, 4)), ((lo - res.omega_m) / mu, format_significant(lo, 4))]
     view_len = float(g.x[-1])

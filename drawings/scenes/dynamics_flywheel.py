@@ -6,6 +6,7 @@ from __future__ import annotations
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from ..words import tr
 
 #: ГОСТ 2.302 reduction scales, largest first (sheet mm per real mm).
 GOST_REDUCTIONS = (1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10, 1 / 15, 1 / 20, 1 / 25, 1 / 40, 1 / 50)
@@ -54,7 +55,7 @@ def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False)
     cx = rect.x0 + PAD_MM + R * k
     cy = rect.y0 + PAD_MM + R * k + ((b * k + BETWEEN_MM) if stacked else 0.0)
     view = sheet.place_view("flywheel", rect, Transform(k, (0.0, 0.0), (cx, cy)))
-    view.title(f"Эскиз маховика  М {scale_text(k)}")
+    view.title(tr("sheets.fw01", v1=scale_text(k)))
     view.circle((0.0, 0.0), R, "contour")
     if r > 0:
         view.circle((0.0, 0.0), r, "contour")
@@ -106,7 +107,7 @@ def draw_results(sheet: Sheet, rect: Rect, rows: list[tuple[str, str]]) -> View:
     view = sheet.place_view("results", rect, Transform(1.0, (0.0, 0.0), (rect.x0, rect.y0)))
     w1 = rect.width * 0.62
     top = rect.y1 - 10.0
-    view.text_mm((rect.x0 + rect.width / 2, rect.y1 - 7.0), "Результаты расчёта маховика", 5.0, "bottom-center")
+    view.text_mm((rect.x0 + rect.width / 2, rect.y1 - 7.0), tr("sheets.fw02"), 5.0, "bottom-center")
     n = len(rows)
     y_bottom = top - 8.0 * n
     for i in range(n + 1):
@@ -124,22 +125,22 @@ def draw_results(sheet: Sheet, rect: Rect, rows: list[tuple[str, str]]) -> View:
 def result_rows(res, kl_on_sheet: float) -> list[tuple[str, str]]:
     """Scales, the tangents, KL and the flywheel by the three methods with the δ of the exact one."""
     g, fw = res.graphical, res.flywheel
-    names = {"exact": "точно", "merzalov": "по Мерцалову", "graphical": "по диаграмме"}
-    rows = [("Масштаб μφ, рад/мм", format_significant(g.mu_phi, 4)),
-            ("Масштаб μM, Н·м/мм", format_significant(g.mu_M, 4)),
-            ("Полюсное расстояние H, мм", format_number(g.H, 0)),
-            ("Масштаб μA, Дж/мм", format_significant(g.mu_A, 4)),
-            ("Масштаб μE, Дж/мм", format_significant(g.mu_E, 4)),
-            ("Масштаб μJ, кг·м²/мм", format_significant(g.mu_J, 4)),
-            ("Угол ψmax, °", format_number(g.psi_max_deg, 2)),
-            ("Угол ψmin, °", format_number(g.psi_min_deg, 2)),
-            ("Отрезок KL, мм", format_number(kl_on_sheet, 1)),
-            ("Коэффициент δ заданный", format_significant(res.delta_target, 4))]
+    names = {"exact": tr("sheets.fw03"), "merzalov": tr("sheets.fw04"), "graphical": tr("sheets.fw05")}
+    rows = [(tr("sheets.fw06"), format_significant(g.mu_phi, 4)),
+            (tr("sheets.fw07"), format_significant(g.mu_M, 4)),
+            (tr("sheets.fw08"), format_number(g.H, 0)),
+            (tr("sheets.fw09"), format_significant(g.mu_A, 4)),
+            (tr("sheets.fw10"), format_significant(g.mu_E, 4)),
+            (tr("sheets.fw11"), format_significant(g.mu_J, 4)),
+            (tr("sheets.fw12"), format_number(g.psi_max_deg, 2)),
+            (tr("sheets.fw13"), format_number(g.psi_min_deg, 2)),
+            (tr("sheets.fw14"), format_number(kl_on_sheet, 1)),
+            (tr("sheets.fw15"), format_significant(res.delta_target, 4))]
     for c in res.comparison:
-        rows.append((f"Jм {names[c.method]}, кг·м²", format_significant(c.J_fly, 4)))
-    rows += [("Коэффициент δ получен", format_significant(res.delta_achieved, 4)),
-             ("Движущий момент Mдв, Н·м", format_significant(res.M_drive, 4)),
-             ("Радиус R, мм", format_number(1000 * fw.radius, 0)),
-             ("Ширина b, мм", format_number(1000 * fw.width, 0)),
-             ("Масса m, кг", format_significant(fw.mass, 4))]
+        rows.append((tr("sheets.fw21", v1=names[c.method]), format_significant(c.J_fly, 4)))
+    rows += [(tr("sheets.fw16"), format_significant(res.delta_achieved, 4)),
+             (tr("sheets.fw17"), format_significant(res.M_drive, 4)),
+             (tr("sheets.fw18"), format_number(1000 * fw.radius, 0)),
+             (tr("sheets.fw19"), format_number(1000 * fw.width, 0)),
+             (tr("sheets.fw20"), format_significant(fw.mass, 4))]
     return rows

@@ -12,6 +12,7 @@ from drawings.primitives import format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
 from reportgen.diagrams import Diagrams
+from ..words import tr, unit
 
 #: Space above a diagram's largest ordinate (title, dimensions) and between diagrams, mm.
 TOP_MM = 32.0
@@ -35,10 +36,10 @@ def names(d: Diagrams) -> Names:
     """Axis names, units of the scales, their symbols and the titles: a slider's s, V, a or a
     rocker's ψ, ω, ε."""
     if d.unit == "м":
-        return Names("S, м", "V, м/с", "a, м/с²", "м/мм", "(м/с)/мм", "(м/с²)/мм", ("μs", "μv", "μa"),
-                     ("Диаграмма перемещения", "Диаграмма скорости", "Диаграмма ускорения"))
-    return Names("ψ, рад", "ω, рад/с", "ε, рад/с²", "рад/мм", "(рад/с)/мм", "(рад/с²)/мм", ("μψ", "μω", "με"),
-                 ("Диаграмма угла поворота", "Диаграмма угловой скорости", "Диаграмма углового ускорения"))
+        return Names(tr("sheets.kd04"), tr("sheets.kd05"), tr("sheets.kd06"), unit("м/мм"), unit("(м/с)/мм"), unit("(м/с²)/мм"), ("μs", "μv", "μa"),
+                     (tr("sheets.kd10"), tr("sheets.kd11"), tr("sheets.kd12")))
+    return Names(tr("sheets.kd01"), tr("sheets.kd02"), tr("sheets.kd03"), unit("рад/мм"), unit("(рад/с)/мм"), unit("(рад/с²)/мм"), ("μψ", "μω", "με"),
+                 (tr("sheets.kd07"), tr("sheets.kd08"), tr("sheets.kd09")))
 
 
 def _x_nodes(d: Diagrams) -> np.ndarray:
@@ -159,8 +160,8 @@ def _strokes(view: View, o: tuple[float, float], length: float, y: float, start_
     xe = (start_deg + working_deg) / 360.0 * length
     for x in {round(xs % length, 9), round(xe % length, 9)}:
         view.line((o[0] + x, o[1]), (o[0] + x, y + 4.0), "axis")
-    for (a, b), text in [(span, "φр.х.") for span in _spans(xs, xe, length)] + \
-                        [(span, "φх.х.") for span in _spans(xe, xs + length, length)]:
+    for (a, b), text in [(span, tr("sheets.kd13")) for span in _spans(xs, xe, length)] + \
+                        [(span, tr("sheets.kd14")) for span in _spans(xe, xs + length, length)]:
         view.dimension((o[0] + a, y), (o[0] + b, y), offset_mm=4.0,
                        text=text if b - a > 14.0 else "")
 

@@ -18,6 +18,8 @@ from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
 from reportgen.plans import Plan
+from ..words import tr
+from ..words import unit as words_unit
 
 #: Room for letters and names around a plan's points, and the caption / title strips, mm.
 PAD_LABELS, STRIP = 16.0, 12.0
@@ -88,6 +90,7 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
     order = [pl] + [k for k in plan.points if k != pl and k not in helper] + sorted(helper)
     # absolute vectors from the pole to the images not reached by a component from the pole
     symbol, unit, _ = UNITS[plan.kind]
+    unit = words_unit(unit)
     if small:
         view.text_mm((view.rect.x0 + 2.0, view.rect.y1 - 1.0), title, 3.5, "top-left")
     else:
@@ -151,11 +154,11 @@ SMALL_TITLE_MM, SMALL_CAPTION_MM = 14.0, 12.0
 
 
 def small_title(plans: list[Plan]) -> str:
-    return f"Планы скоростей положений 0–{len(plans) - 1}"
+    return tr("sheets.kp01", v1=len(plans) - 1)
 
 
 def small_caption(plans: list[Plan]) -> str:
-    return f"μv = {format_significant(plans[0].scale, 4)} (м/с)/мм"
+    return tr("sheets.kp02", v1=format_significant(plans[0].scale, 4))
 
 
 def small_cell(plans: list[Plan]) -> tuple[float, float]:

@@ -17,6 +17,7 @@ from reportgen.geometry import vec2
 from reportgen.kinematics import KinematicsResult
 from reportgen.kinematics.constraints import rot
 from reportgen.project import Project
+from ..words import tr
 
 #: ГОСТ 2.302 scales as (paper, real): 1:2,5 is (1, 2.5).
 GOST_SCALES: tuple[tuple[float, float], ...] = (
@@ -105,8 +106,8 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_numbers(view, project, data)
     _draw_link_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
-                 f"μl = {format_number(mu_l, 5)} м/мм (М {scale_text})", 5.0, "bottom-center")
-    view.title(f"Кинематическая схема механизма ({len(data.kin.phi)} положений)")
+                 tr("sheets.ks01", v1=format_number(mu_l, 5), scale_text=scale_text), 5.0, "bottom-center")
+    view.title(tr("sheets.ks02", v1=len(data.kin.phi)))
 
 
 def _inside(view: View) -> Polygon:
@@ -251,8 +252,8 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
         ray_end = o + (r_mm + 22.0) / k * np.array([math.cos(a), math.sin(a)])
         view.line(o, tuple(ray_end), "thin")
     work = math.radians(st.working_deg)
-    arcs = ((a_start, sgn * work, r_mm + 12.0, f"φр.х. = {format_number(st.working_deg, 1)}°"),
-            (a_end, sgn * (2 * math.pi - work), r_mm + 18.0, f"φх.х. = {format_number(st.idle_deg, 1)}°"))
+    arcs = ((a_start, sgn * work, r_mm + 12.0, tr("sheets.ks03", v1=format_number(st.working_deg, 1))),
+            (a_end, sgn * (2 * math.pi - work), r_mm + 18.0, tr("sheets.ks04", v1=format_number(st.idle_deg, 1))))
     for a0, sweep, rad_mm, text in arcs:
         pts = _arc_points(o, rad_mm / k, a0, sweep)
         view.polyline(pts, "thin")
@@ -327,9 +328,9 @@ def _draw_numbers(view: View, project: Project, data: SchemeData) -> None:
     o = view.transform(tuple(_pts(data.kin, 0)[lk.drive_axis]))
     items = [(str(i), tuple(np.asarray(data.kin.points[lk.drive_tip].pos[i]))) for i in range(len(data.kin.phi))]
     if data.extremes is not None:
-        items.append(("0'" if data.start_is_zero else "к.р.х.", tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[1]))))
+        items.append(("0'" if data.start_is_zero else tr("sheets.ks05"), tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[1]))))
         if not data.start_is_zero:
-            items.append(("н.р.х.", tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[0]))))
+            items.append((tr("sheets.ks06"), tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[0]))))
     for text, pos in items:
         p = view.transform(pos)
         ang = math.degrees(math.atan2(p[1] - o[1], p[0] - o[0]))

@@ -19,6 +19,7 @@ from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.kinetostatics.reactions import pair_name, perp
+from ..words import symbol, tr
 
 #: The longest force arrow on a group's view, mm; arrows are never shorter than MIN_ARROW_MM.
 ARROW_MM = 45.0
@@ -33,16 +34,21 @@ POLY_LABEL_MM = 2.5
 POLY_PAD_MM = 10.0
 #: The lever's loads: the largest drawn this long (mm) at their own round μF.
 LEVER_ARROW_MM = 40.0
-LEVER_TITLE = "Рычаг Жуковского"
-LEVER_SUBTITLE = "(план скоростей, повёрнутый на 90°)"
+def lever_title() -> str:
+    return tr("sheets.kv01")
+
+
+def lever_subtitle() -> str:
+    return tr("sheets.kv02")
 
 
 def plain(name: str) -> str:
-    """A solver's name as sheet text (the ГОСТ font has τ and Cyrillic): ``Fи4′`` → ``Fи4'``."""
+    """A solver's name as sheet text in the sheet's language (the ГОСТ font has τ and Cyrillic):
+    ``Fи4′`` → ``Fи4'`` (``Fin4'`` in English)."""
     if ":" in name:
         base, point = name.split(":", 1)
-        return f"F{base}({point})"
-    return name.replace("′", "'")
+        return symbol(f"F{base}({point})")
+    return symbol(name.replace("′", "'"))
 
 
 @dataclass
@@ -115,8 +121,8 @@ def free_body_panel(name: str, title: str, segments: list[tuple[np.ndarray, np.n
             view.arrow(arw.point, arrow_end(arw, mu_f, mu_l), plain(arw.name), head_mm=4.0, label_height=LABEL_MM)
         for letter, p in letters.items():
             view.label(p, letter, 5.0, prefer_deg=135.0)
-        _title_and_scales(view, title, f"μl = {format_significant(mu_l, 4)} м/мм",
-                          f"μF = {format_significant(mu_f, 4)} Н/мм")
+        _title_and_scales(view, title, tr("sheets.kv03", v1=format_significant(mu_l, 4)),
+                          tr("sheets.kv04", v1=format_significant(mu_f, 4)))
         return view
     return Panel(name, w, h, paint)
 
@@ -157,7 +163,7 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
             view.label((a + b) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=-45.0)
         view.title(title)
         view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
-                     f"μF = {format_significant(polygon.scale, 4)} Н/мм", 3.5, "bottom-center")
+                     tr("sheets.kv05", v1=format_significant(polygon.scale, 4)), 3.5, "bottom-center")
         return view
     return Panel(name, w, h, paint)
 
@@ -216,8 +222,8 @@ def lever_panel(name: str, points: dict[str, np.ndarray], segments: list[tuple[s
     arr = np.array([np.zeros(2)] + list(points.values()) + ends + [f for f in feet if f is not None])
     lo, hi = arr.min(0), arr.max(0)
     pad = 12.0
-    w = max(hi[0] - lo[0] + 2 * pad, style.text_width(LEVER_TITLE, 5.0) + 4.0,
-            style.text_width(LEVER_SUBTITLE, 3.5) + 4.0)
+    w = max(hi[0] - lo[0] + 2 * pad, style.text_width(lever_title(), 5.0) + 4.0,
+            style.text_width(lever_subtitle(), 3.5) + 4.0)
     h = hi[1] - lo[1] + 2 * pad + TITLE_MM + 6.0 + CAPTION_MM
 
     def paint(sheet: Sheet, rect: Rect) -> View:
@@ -237,9 +243,9 @@ def lever_panel(name: str, points: dict[str, np.ndarray], segments: list[tuple[s
             view.arrow(img, end, None, head_mm=3.5)
         for (img, _v, label, _arm), end in zip(loads, ends):
             place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
-        _title_and_scales(view, LEVER_TITLE, f"μv = {format_significant(mu_v, 4)} (м/с)/мм",
-                          f"μF = {format_significant(mu_f, 4)} Н/мм")
-        view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), LEVER_SUBTITLE, 3.5, "bottom-center")
+        _title_and_scales(view, lever_title(), tr("sheets.kv06", v1=format_significant(mu_v, 4)),
+                          tr("sheets.kv07", v1=format_significant(mu_f, 4)))
+        view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), lever_subtitle(), 3.5, "bottom-center")
         return view
     return Panel(name, w, h, paint)
 
@@ -323,6 +329,6 @@ def crank_arrows(ks) -> list[Arrow]:
     for p in r.pairs_of(d):
         if p.name != fp.name:
             arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(d)[0]), pair_name(p.other(d), d)))
-    arrows.append(Arrow(np.asarray(r.balancing_point[0]), np.asarray(r.balancing_force[0]), "Fур"))
+    arrows.append(Arrow(np.asarray(r.balancing_point[0]), np.asarray(r.balancing_force[0]), symbol("Fур")))
     arrows.append(Arrow(np.asarray(fp.point[0]), np.asarray(fp.on(d)[0]), pair_name(0, d)))
     return [a for a in arrows if float(np.hypot(*a.vector)) > 0.0]

@@ -9,6 +9,7 @@ import math
 from dataclasses import dataclass
 
 from reportgen.gears.meshing import GOST_SCALES, MeshingPicture, meshing_picture
+from ..words import decimal_mark, tr
 
 #: The window of the meshing picture on the left half of sheet 4, sheet mm (inside its padding).
 WINDOW_W = 375.0
@@ -25,8 +26,8 @@ class DrawingScale:
     def label(self) -> str:
         """«2:1», «2,5:1», «1:2» (decimal comma)."""
         if self.factor >= 1:
-            return f"{self.factor:g}:1".replace(".", ",")
-        return f"1:{1 / self.factor:g}".replace(".", ",")
+            return f"{self.factor:g}:1".replace(".", decimal_mark())
+        return f"1:{1 / self.factor:g}".replace(".", decimal_mark())
 
 
 def model_bounds(pair, pic: MeshingPicture) -> tuple[float, float, float, float]:
@@ -117,9 +118,9 @@ def draw_meshing(sheet, pair, pic: MeshingPicture, rect) -> DrawingScale:
                                                   "b": -45, "O1": 0, "O2": 0}[name])
     view.dimension(o1, o2, offset_mm=-(abs(x0) * k + 18), unit_factor=1.0, decimals=3)
     view.dimension(a, b, offset_mm=18.0, unit_factor=1.0, decimals=3)
-    view.text_mm((rect.center[0], rect.y1 - 7), f"Картина зацепления  М {scale.label}", 5.0, "bottom-center")
+    view.text_mm((rect.center[0], rect.y1 - 7), tr("sheets.me01", v1=scale.label), 5.0, "bottom-center")
     view.text_mm((rect.x0 + 2, rect.y0 + 2),
-                 "I - зона однопарного, II - двухпарного зацепления", 3.5, "bottom-left")
+                 tr("sheets.me02"), 3.5, "bottom-left")
     return scale
 
 
@@ -139,7 +140,7 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     view = sheet.place_view("sliding", rect, Transform(1.0, (0.0, 0.0), (ox, oy)))
     yt = [(v * per_unit, format_number(v, 0)) for v in range(int(lam_low), 2)]
     view.axes((0.0, 0.0), x_len + 12, per_unit * 1.0 + 10, y_down_mm=-lam_low * per_unit,
-              x_label="ρ, мм", y_label="λ", y_ticks=yt)
+              x_label=tr("sheets.me04"), y_label="λ", y_ticks=yt)
     rho, l1, l2 = sl.curve(801, clip=0.002)
     for lam in (l1, l2):
         pts = [(r_ * k, v * per_unit) for r_, v in zip(rho, lam) if v >= lam_low]
@@ -155,5 +156,4 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     i2 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.8 * g.g))
     view.text((rho[i2] * k - 2, max(l2[i2], lam_low) * per_unit), "λ2", 3.5, "bottom-right")
     mu = 1.0 / per_unit
-    view.text_mm((rect.x1 - 2, rect.y1 - 7), f"Удельные скольжения   μλ = {format_number(mu, 4)} 1/мм,  "
-                 f"μρ = {format_number(1 / k, 4)} мм/мм", 3.5, "bottom-right")
+    view.text_mm((rect.x1 - 2, rect.y1 - 7), tr("sheets.me03", v1=format_number(mu, 4), v2=format_number(1 / k, 4)), 3.5, "bottom-right")

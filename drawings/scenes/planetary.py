@@ -16,6 +16,7 @@ import math
 from dataclasses import dataclass, field
 
 from reportgen.planetary.schemes import expand
+from ..words import decimal_mark, tr
 
 from reportgen.geometry import Vec2 as Point
 
@@ -289,7 +290,7 @@ def draw_reducer(sheet, stage, region) -> None:
     d = stage.design
     tri = sheet_triangle(stage)
     k = tri.length_scale
-    label = tri.scale_label.replace(".", ",")
+    label = tri.scale_label.replace(".", decimal_mark())
     front = front_view(d, k)
     fx0, fy0, fx1, fy1 = front.bounds()
     fw, fh = fx1 - fx0 + 20, fy1 - fy0 + 24
@@ -297,7 +298,7 @@ def draw_reducer(sheet, stage, region) -> None:
     fview = sheet.place_view("reducer_front", frect,
                              Transform(1.0, (0.0, 0.0), (frect.x0 + 10 - fx0, frect.y0 + 8 - fy0)))
     draw_scene(fview, front)
-    fview.text_mm((frect.center[0], frect.y1 - 6), f"Схема редуктора, вид вдоль оси  М {label}", 5.0,
+    fview.text_mm((frect.center[0], frect.y1 - 6), tr("sheets.pl01", label=label), 5.0,
                   "bottom-center")
     side = side_scheme(d, k)
     x_line = side.bounds()[2] + 25
@@ -310,14 +311,14 @@ def draw_reducer(sheet, stage, region) -> None:
     sview = sheet.place_view("reducer_side", srect,
                              Transform(1.0, (0.0, 0.0), (srect.x0 + 10 - sx0, srect.y0 + 8 - sy0)))
     draw_scene(sview, scene)
-    sview.text_mm((srect.x0 + 4, srect.y1 - 6), f"Кинематическая схема  М {label}", 5.0, "bottom-left")
+    sview.text_mm((srect.x0 + 4, srect.y1 - 6), tr("sheets.pl02", label=label), 5.0, "bottom-left")
     sview.text((x_line + tri.vector_mm * 0.15, tri.point("C")[1] + 12),
-               f"μv = {format_number(tri.mu_v, 5)} (м/с)/мм", 3.5)
+               tr("sheets.pl03", v1=format_number(tri.mu_v, 5)), 3.5)
     sview.text((plan_origin[0] - 6, plan_origin[1] - 12),
-               f"μω = {format_number(abs(tri.plan.mu_omega), 4)} (рад/с)/мм,  h = {format_number(tri.plan.h_mm, 0)} мм",
+               tr("sheets.pl04", v1=format_number(abs(tri.plan.mu_omega), 4), v2=format_number(tri.plan.h_mm, 0)),
                3.5)
     # table of tooth numbers, left of the front view
-    rows = [("Колесо", "z", "d, мм")] + [(lab, str(zz), format_number(tri.module * zz, 1))
+    rows = [(tr("sheets.pl05"), "z", tr("sheets.pl06"))] + [(lab, str(zz), format_number(tri.module * zz, 1))
                                          for lab, zz in zip(d.scheme.labels, d.z)]
     rows.append(("K", str(d.satellites), ""))
     rows.append(("u", format_number(abs(d.ratio), 4), ""))

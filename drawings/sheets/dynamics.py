@@ -10,9 +10,18 @@ from drawings.scenes import dynamics_diagrams as dd
 from drawings.scenes import dynamics_flywheel as df
 from drawings.sheet import Sheet
 from reportgen.project import Project
+from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics")
-TITLE = "Динамический анализ машинного агрегата"
+def sheet_title() -> str:
+    """The sheet's title in the task's language (title block, graph 1)."""
+    return tr("sheets.sk301")
+
+
+def __getattr__(name: str):
+    if name == "TITLE":            # the title in the language being drawn
+        return sheet_title()
+    raise AttributeError(name)
 
 #: Clearance from the frame and from graph 26 / the title block, mm.
 CLEAR_MM = 8.0
@@ -39,7 +48,7 @@ def graph_labels(project: Project) -> list[str]:
 def draw(project: Project, number: int, count: int) -> Sheet:
     res = project.dynamics
     g = res.graphical
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=project.task.document.sheet_code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM

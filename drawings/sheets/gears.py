@@ -7,9 +7,18 @@ from __future__ import annotations
 
 from drawings import Sheet
 from drawings.layout import Rect
+from ..words import designation, tr
 
 NEEDS = ("gears", "planetary")
-TITLE = "Синтез зубчатых механизмов"
+def sheet_title() -> str:
+    """The sheet's title in the task's language (title block, graph 1)."""
+    return tr("sheets.sk401")
+
+
+def __getattr__(name: str):
+    if name == "TITLE":            # the title in the language being drawn
+        return sheet_title()
+    raise AttributeError(name)
 
 
 def available(project) -> bool:
@@ -23,7 +32,7 @@ def draw(project, number: int, count: int) -> Sheet:
     from reportgen.gears.meshing import meshing_picture
 
     task = project.task
-    sheet = Sheet.a1(task.document, title=TITLE, code=task.document.sheet_code(number), number=number,
+    sheet = Sheet.a1(task.document, title=sheet_title(), code=designation(task.document, number), number=number,
                      count=count)
     fr = sheet.frame
     left = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + 395, fr.y1 - 19)

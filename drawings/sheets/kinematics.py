@@ -20,9 +20,18 @@ from reportgen.errors import BuildError
 from reportgen.diagrams import Diagrams, build_diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
+from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
-TITLE = "Кинематический анализ рычажного механизма"
+def sheet_title() -> str:
+    """The sheet's title in the task's language (title block, graph 1)."""
+    return tr("sheets.sk101")
+
+
+def __getattr__(name: str):
+    if name == "TITLE":            # the title in the language being drawn
+        return sheet_title()
+    raise AttributeError(name)
 
 #: The scheme's view (with its padding) is at most this big, mm.
 SCHEME_MAX_MM = (470.0, 400.0)
@@ -91,7 +100,7 @@ def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
             b: tuple[float, float, float, float], k: float, scale_text: str) -> Sheet:
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=project.task.document.sheet_code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     i = data.analysed
     scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
@@ -106,7 +115,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     keys = image_keys(project)
     vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
     add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
-    titles = (f"План скоростей, положение {i}", f"План ускорений, положение {i}")
+    titles = (tr("sheets.sk103", i=i), tr("sheets.sk104", i=i))
     # the plans and the small plans (as large as the room left allows) share out the free field
     arrangement = arrange(sheet, [kp.view_size(vplan, titles[0])[:2], kp.view_size(aplan, titles[1])[:2]],
                           lambda crank_mm: small_plans(project, crank_mm))
@@ -252,31 +261,31 @@ def small_plans(project: Project, crank_mm: float) -> list[Plan]:
 
 def scale_rows(mu_l: float, scale_text: str, vplan: Plan, aplan: Plan, d: Diagrams | None
                ) -> list[tuple[str, str, str]]:
-    rows = [("μl", f"схема, М {scale_text}", f"{format_significant(mu_l, 4)} м/мм"),
-            ("μv", "план скоростей", f"{format_significant(vplan.scale, 4)} (м/с)/мм"),
-            ("μa", "план ускорений", f"{format_significant(aplan.scale, 4)} (м/с²)/мм")]
+    rows = [("μl", tr("sheets.sk109", scale_text=scale_text), tr("sheets.sk110", v1=format_significant(mu_l, 4))),
+            ("μv", tr("sheets.sk111"), tr("sheets.sk112", v1=format_significant(vplan.scale, 4))),
+            ("μa", tr("sheets.sk113"), tr("sheets.sk114", v1=format_significant(aplan.scale, 4)))]
     if d is not None:
         nm = kd.names(d)
-        rows += [("μφ", "ось φ, диаграммы", f"{format_significant(d.mu_phi, 4)} рад/мм"),
-                 ("μt", "ось t, диаграммы", f"{format_significant(d.mu_t, 4)} с/мм"),
-                 *[(sym, title.replace("Диаграмма", "диаграмма"), f"{format_significant(mu, 4)} {unit}")
+        rows += [("μφ", tr("sheets.sk115"), tr("sheets.sk116", v1=format_significant(d.mu_phi, 4))),
+                 ("μt", tr("sheets.sk117"), tr("sheets.sk118", v1=format_significant(d.mu_t, 4))),
+                 *[(sym, title.replace(tr("sheets.sk123"), tr("sheets.sk124")), f"{format_significant(mu, 4)} {unit}")
                    for sym, title, mu, unit in zip(nm.symbols, nm.titles, (d.mu_s, d.mu_v, d.mu_a),
                                                    (nm.mu_s, nm.mu_v, nm.mu_a))],
-                 ("H1", "полюсное расстояние", f"{format_number(d.H1, 1)} мм"),
-                 ("H2", "полюсное расстояние", f"{format_number(d.H2, 1)} мм")]
+                 ("H1", tr("sheets.sk119"), tr("sheets.sk120", v1=format_number(d.H1, 1))),
+                 ("H2", tr("sheets.sk121"), tr("sheets.sk122", v1=format_number(d.H2, 1)))]
     return rows
 
 
 def add_scales_table(sheet: Sheet, mu_l: float, scale_text: str, vplan: Plan, aplan: Plan,
                      d: Diagrams | None) -> View:
     rows = scale_rows(mu_l, scale_text, vplan, aplan, d)
-    header = ("Обозн.", "Величина", "Масштаб")
+    header = (tr("sheets.sk105"), tr("sheets.sk106"), tr("sheets.sk107"))
     widths = tuple(max(style.text_width(r[c], 3.5) for r in [header, *rows]) + 5.0 for c in range(3))
     row_h = 8.0
     w = sum(widths)
     h = row_h * (len(rows) + 1) + 12.0
     view = sheet.add_view("scales", w, h, preferred="bottom-right")
-    view.title("Масштабы")
+    view.title(tr("sheets.sk108"))
     top = h - 12.0                             # view coordinates: mm from its lower-left corner
     x0 = 0.0
     table = Rect(x0, top - row_h * (len(rows) + 1), x0 + w, top)

@@ -9,9 +9,18 @@ import numpy as np
 from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
+from ..words import decimal_mark, designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "kinetostatics")
-TITLE = "Силовой расчёт рычажного механизма"
+def sheet_title() -> str:
+    """The sheet's title in the task's language (title block, graph 1)."""
+    return tr("sheets.sk201")
+
+
+def __getattr__(name: str):
+    if name == "TITLE":            # the title in the language being drawn
+        return sheet_title()
+    raise AttributeError(name)
 
 
 def available(project: Project) -> bool:
@@ -117,10 +126,10 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     ks = kinetostatics_of(project)
     lk, st = project.linkage, project.structure
     g = ks.graphical
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=project.task.document.sheet_code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     by_key = {gr.key: gr for gr in st.groups}
-    where = f"положение {ks.position}, " if ks.position is not None else ""
-    note = f"Положение силового расчёта: {where}φ1 = {ks.phi_deg:.2f}°".replace(".", ",")
+    where = tr("sheets.sk203", v1=ks.position) if ks.position is not None else ""
+    note = tr("sheets.sk204", where=where, v2=format(ks.phi_deg, ".2f").replace(".", decimal_mark()))
     pv = sheet.add_view("position", style.text_width(note, 5.0) + 4.0, 9.0, preferred="top-left")
     pv.text_mm((pv.rect.x0 + 2.0, pv.rect.y0 + 2.0), note, 5.0)
 
@@ -128,17 +137,17 @@ def draw(project: Project, number: int, count: int) -> Sheet:
         out = []
         for gg in g.groups:
             segs, hinges, sliders, letters = kv.group_geometry(ks, lk, by_key[gg.key].links, gg.key)
-            out.append(kv.free_body_panel(f"group {gg.key}", f"Группа {by_key[gg.key].label}", segs, hinges,
+            out.append(kv.free_body_panel(f"group {gg.key}", tr("sheets.sk208", v1=by_key[gg.key].label), segs, hinges,
                                           sliders, letters, kv.group_arrows(ks, by_key[gg.key].links, gg.key,
                                                                             gg.splits), mu_l))
         segs, hinges, sliders, letters = kv.group_geometry(ks, lk, (ks.reactions.crank,), None)
-        out.append(kv.free_body_panel("crank", "Ведущее звено", segs, hinges, sliders, letters,
+        out.append(kv.free_body_panel("crank", tr("sheets.sk207"), segs, hinges, sliders, letters,
                                       kv.crank_arrows(ks), mu_l))
         return out
 
-    polygons = [kv.polygon_panel(f"polygon {gg.key}", f"План сил группы {by_key[gg.key].label}", gg.polygon)
+    polygons = [kv.polygon_panel(f"polygon {gg.key}", tr("sheets.sk205", v1=by_key[gg.key].label), gg.polygon)
                 for gg in g.groups]
-    polygons.append(kv.polygon_panel("polygon crank", "План сил ведущего звена", g.crank.polygon))
+    polygons.append(kv.polygon_panel("polygon crank", tr("sheets.sk206"), g.crank.polygon))
     kin = ks.reactions.kin
     mu_v = g.lever.scale
     points = {}

@@ -50,9 +50,10 @@ def math_name(name: str) -> str:
     return "$" + "".join(out) + "$"
 
 
-def comma(x: float, _pos=None) -> str:
-    """Tick label with a decimal comma and a true minus."""
-    s = f"{x:.6g}".replace(".", ",").replace("-", "\u2212")
+def comma(x: float, _pos=None, mark: str | None = None) -> str:
+    """Tick label with the language's decimal mark (comma for ru/uk) and a true minus."""
+    from ..parts import decimal_mark
+    s = f"{x:.6g}".replace(".", mark or decimal_mark()).replace("-", "\u2212")
     return s
 
 
@@ -66,5 +67,9 @@ def new_figure(w_cm: float = 16.0, h_cm: float = 10.0):
 
 
 def comma_axes(ax) -> None:
-    ax.xaxis.set_major_formatter(COMMA)
-    ax.yaxis.set_major_formatter(COMMA)
+    """Tick labels with the decimal mark of the note being made (fixed now: figures are saved later)."""
+    from ..parts import decimal_mark
+    mark = decimal_mark()
+    formatter = FuncFormatter(lambda x, pos=None: comma(x, pos, mark))
+    ax.xaxis.set_major_formatter(formatter)
+    ax.yaxis.set_major_formatter(formatter)

@@ -11,6 +11,7 @@ import math
 import numpy as np
 from matplotlib.patches import Circle, Rectangle
 
+from ..parts import tr
 from . import comma, comma_axes, new_figure
 
 GRAPH = "tab:blue"        # the graphical construction
@@ -47,22 +48,22 @@ def work_figure(res, labels: list[str]):
     ax.plot(th, np.asarray(g.M_mm) * g.mu_M, "o", ms=3, color=GRAPH)
     ax.step(np.degrees(np.asarray(g.theta)), np.append(np.asarray(g.mid_mm) * g.mu_M, g.mid_mm[-1] * g.mu_M),
             where="post", color=GRAPH, lw=0.7)
-    ax.set_ylabel("$M_{пр}$, Н·м")
+    ax.set_ylabel(tr("figures.dyn01"))
     ax = axes[1]
     _, A = _closed(res, res.work_resistance, res.work_cycle)
     _, Ad = _closed(res, res.work_drive, res.M_drive * 2 * math.pi)
-    ax.plot(x, A, color=EXACT, label="$A_с$")
-    ax.plot(th, np.asarray(g.a_mm) * g.mu_A, "o-", ms=3, lw=0.7, color=GRAPH, label="$A_с$ (хорды)")
-    ax.plot(x, Ad, color="tab:red", label="$A_{дв}$")
-    ax.set_ylabel("$A$, Дж")
+    ax.plot(x, A, color=EXACT, label=tr("figures.dyn12"))
+    ax.plot(th, np.asarray(g.a_mm) * g.mu_A, "o-", ms=3, lw=0.7, color=GRAPH, label=tr("figures.dyn13"))
+    ax.plot(x, Ad, color="tab:red", label=tr("figures.dyn14"))
+    ax.set_ylabel(tr("figures.dyn02"))
     ax.legend(loc="best", fontsize=8)
     ax = axes[2]
     _, E = _closed(res, res.delta_E, 0.0)
-    ax.plot(x, E, color=EXACT, label="точно")
-    ax.plot(th, np.asarray(g.e_mm) * g.mu_E, "o-", ms=3, lw=0.7, color=GRAPH, label="по графику")
-    ax.set_ylabel(r"$\Delta E$, Дж")
+    ax.plot(x, E, color=EXACT, label=tr("figures.wdyn01"))
+    ax.plot(th, np.asarray(g.e_mm) * g.mu_E, "o-", ms=3, lw=0.7, color=GRAPH, label=tr("figures.wdyn02"))
+    ax.set_ylabel(tr("figures.dyn03"))
     ax.legend(loc="best", fontsize=8)
-    ax.set_xlabel("положение кривошипа")
+    ax.set_xlabel(tr("figures.dyn04"))
     for a in axes:
         a.axhline(0, color="0.3", lw=0.6)
         comma_axes(a)
@@ -91,8 +92,8 @@ def wittenbauer_figure(res):
     ax_e.plot(x, E, color=EXACT)
     ax_e.set_xlim(0, 360)
     ax_e.set_xticks(range(0, 361, 90))
-    ax_e.set_xlabel(r"$\varphi$, град (от положения 0)")
-    ax_e.set_ylabel(r"$\Delta E$, Дж")
+    ax_e.set_xlabel(tr("figures.dyn05"))
+    ax_e.set_ylabel(tr("figures.dyn06"))
     J_max = float(J.max()) * 1.08
     Jt, up, lo = tangent_lines(res, J_max)
     ax_w.plot(J, E, color=EXACT)
@@ -112,13 +113,13 @@ def wittenbauer_figure(res):
     hi_y = max(float(E.max()), ex.K)
     pad = 0.08 * (hi_y - lo_y)
     ax_w.set_ylim(lo_y - pad, hi_y + pad)
-    ax_w.set_title("Диаграмма энергомасс", fontsize=10)
+    ax_w.set_title(tr("figures.dyn07"), fontsize=10)
     ax_w.tick_params(labelleft=False)
     ax_j.plot(J, x, color=EXACT)
     ax_j.set_ylim(360, 0)
     ax_j.set_yticks(range(0, 361, 90))
-    ax_j.set_xlabel(r"$J_{пр}$, кг·м²")
-    ax_j.set_ylabel(r"$\varphi$, град")
+    ax_j.set_xlabel(tr("figures.dyn08"))
+    ax_j.set_ylabel(tr("figures.dyn09"))
     for a in (ax_e, ax_w, ax_j):
         comma_axes(a)
     fig.tight_layout()
@@ -129,8 +130,8 @@ def omega_figure(res, omegas: dict[str, np.ndarray]):
     """ω(φ) of the steady motion with each method's flywheel, the band ω_m(1 ± δ/2)."""
     fig = new_figure(16.0, 8.0)
     ax = fig.add_subplot(1, 1, 1)
-    names = {"exact": ("точный расчёт", EXACT, "-", 1.3), "merzalov": ("метод Мерцалова", "tab:green", "--", 0.9),
-             "graphical": ("графический расчёт", GRAPH, ":", 1.1)}
+    names = {"exact": (tr("figures.wdyn03"), EXACT, "-", 1.3), "merzalov": (tr("figures.dyn15"), "tab:green", "--", 0.9),
+             "graphical": (tr("figures.dyn16"), GRAPH, ":", 1.1)}
     for key, w in omegas.items():
         label, colour, ls, lw = names[key]
         x, wc = _closed(res, w, float(w[0]))
@@ -141,8 +142,8 @@ def omega_figure(res, omegas: dict[str, np.ndarray]):
     ax.axhline(res.omega_m, color="0.4", lw=0.6, ls="-.")
     ax.set_xlim(0, 360)
     ax.set_xticks(range(0, 361, 30))
-    ax.set_xlabel(r"$\varphi$, град (от положения 0)")
-    ax.set_ylabel(r"$\omega_1$, рад/с")
+    ax.set_xlabel(tr("figures.dyn10"))
+    ax.set_ylabel(tr("figures.dyn11"))
     ax.legend(loc="best", fontsize=8)
     comma_axes(ax)
     fig.tight_layout()

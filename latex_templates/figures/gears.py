@@ -7,18 +7,19 @@ import math
 
 import numpy as np
 
+from ..parts import tr
 from . import comma, comma_axes, new_figure
 
 #: Russian names of the contour lines (legend), in drawing order.
 CONTOUR_NAMES = {
-    "undercut1": "подрезание шестерни",
-    "undercut2": "подрезание колеса",
-    "sharpening1": "заострение шестерни",
-    "sharpening2": "заострение колеса",
-    "contact_ratio": "граница по $\\varepsilon_\\alpha$",
+    "undercut1": tr("figures.gear01"),
+    "undercut2": tr("figures.gear02"),
+    "sharpening1": tr("figures.gear03"),
+    "sharpening2": tr("figures.gear04"),
+    "contact_ratio": tr("figures.gear05"),
     "eps_1": "$\\varepsilon_\\alpha = 1$",
-    "interference1": "интерференция у шестерни",
-    "interference2": "интерференция у колеса",
+    "interference1": tr("figures.gear06"),
+    "interference2": tr("figures.gear07"),
     "equal_sliding": "$\\lambda_1(a) = \\lambda_2(b)$",
 }
 _STYLES = {
@@ -100,12 +101,12 @@ def meshing_figure(pair, pic):
     ax.plot([bx, bx + bar], [by, by], color="k", lw=1.2)
     for xx in (bx, bx + bar):
         ax.plot([xx, xx], [by - 0.15 * g.m, by + 0.15 * g.m], color="k", lw=1.0)
-    ax.text(bx + bar / 2, by + 0.3 * g.m, f"{bar:g} мм", ha="center", va="bottom", fontsize=9)
+    ax.text(bx + bar / 2, by + 0.3 * g.m, tr("figures.gear08", v1=format(bar, "g")), ha="center", va="bottom", fontsize=9)
     from matplotlib.lines import Line2D
-    handles = [Line2D([], [], color=zone_colors[2], lw=4, alpha=0.55, label="зона двухпарного зацепления"),
-               Line2D([], [], color=zone_colors[1], lw=4, alpha=0.55, label="зона однопарного зацепления"),
-               Line2D([], [], color="0.25", lw=0.5, ls="-.", label="делительные окружности"),
-               Line2D([], [], color="0.25", lw=0.5, ls="--", label="начальные окружности")]
+    handles = [Line2D([], [], color=zone_colors[2], lw=4, alpha=0.55, label=tr("figures.gear12")),
+               Line2D([], [], color=zone_colors[1], lw=4, alpha=0.55, label=tr("figures.gear13")),
+               Line2D([], [], color="0.25", lw=0.5, ls="-.", label=tr("figures.gear14")),
+               Line2D([], [], color="0.25", lw=0.5, ls="--", label=tr("figures.gear15"))]
     ax.legend(handles=handles, loc="upper left", fontsize=8, frameon=True, framealpha=0.9)
     return fig
 
@@ -117,8 +118,8 @@ def sliding_figure(pair):
     rho, l1, l2 = sl.curve(401, clip=0.005)
     fig = new_figure(16, 9)
     ax = fig.add_subplot(111)
-    ax.plot(rho, l1, color="C0", label="$\\lambda_1$ (шестерня)")
-    ax.plot(rho, l2, color="C3", label="$\\lambda_2$ (колесо)")
+    ax.plot(rho, l1, color="C0", label=tr("figures.gear10"))
+    ax.plot(rho, l2, color="C3", label=tr("figures.gear11"))
     lo = min(-4.0, 1.3 * min(sl.lambda1_a, sl.lambda2_b))
     ax.set_ylim(lo, 1.5)
     ax.set_xlim(0, sl.g)
@@ -131,7 +132,7 @@ def sliding_figure(pair):
     rows = [r for r in sl.rows if math.isfinite(r.lambda1) and math.isfinite(r.lambda2)]
     ax.plot([r.rho for r in rows], [r.lambda1 for r in rows], "o", color="C0", ms=3)
     ax.plot([r.rho for r in rows], [r.lambda2 for r in rows], "s", color="C3", ms=3)
-    ax.set_xlabel("$\\rho = N_1K$, мм")
+    ax.set_xlabel(tr("figures.gear09"))
     ax.set_ylabel("$\\lambda$")
     comma_axes(ax)
     ax.legend(loc="lower center", fontsize=9)

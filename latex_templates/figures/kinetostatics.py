@@ -15,6 +15,7 @@ import numpy as np
 from reportgen.geometry import vec2
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
+from ..parts import active, decimal_mark, tr
 from . import comma_axes, math_name, new_figure
 from .mechanism import world_points
 
@@ -26,7 +27,8 @@ KNOWN = "tab:blue"
 
 def mathtext(name: str) -> str:
     """A solver's force name as matplotlib mathtext: ``Fи4′`` → ``$F'_{\\mathrm{и}4}$``."""
-    return "$" + symbol(name, text="\\mathrm") + "$"
+    return "$" + active().localize_latex(symbol(name, text="\\mathrm").replace("\\mathrm{", "\\text{")).replace(
+        "\\text{", "\\mathrm{") + "$"
 
 
 def symbol(name: str, text: str = "\\text") -> str:
@@ -206,7 +208,7 @@ def polygon_figure(polygon, w_cm: float = 13.0):
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
     ax.axis("off")
-    ax.text(0.01, 0.01, f"$\\mu_F$ = {polygon.scale:g} Н/мм".replace(".", ","), transform=ax.transAxes, fontsize=9)
+    ax.text(0.01, 0.01, tr("figures.kst07", v1=format(polygon.scale, "g").replace(".", decimal_mark())), transform=ax.transAxes, fontsize=9)
     return fig
 
 
@@ -277,14 +279,14 @@ def cycle_figure(phi_deg: np.ndarray, groups: np.ndarray, zhuk_phi: np.ndarray, 
     markers, the analysed position ringed."""
     fig = new_figure(w_cm, 8.0)
     ax = fig.add_axes([0.12, 0.14, 0.85, 0.8])
-    ax.plot(phi_deg, groups, "k-", lw=1.2, label="метод планов сил (группы Ассура)")
-    ax.plot(zhuk_phi, zhuk, "o", ms=5, mfc="none", mec="tab:red", label="рычаг Жуковского")
-    ax.plot([mark_deg], [mark_value], "s", ms=7, mfc="none", mec="tab:blue", label="положение силового расчёта")
+    ax.plot(phi_deg, groups, "k-", lw=1.2, label=tr("figures.kst04"))
+    ax.plot(zhuk_phi, zhuk, "o", ms=5, mfc="none", mec="tab:red", label=tr("figures.kst05"))
+    ax.plot([mark_deg], [mark_value], "s", ms=7, mfc="none", mec="tab:blue", label=tr("figures.kst06"))
     ax.axhline(0.0, color="0.4", lw=0.6)
     ax.set_xlim(0, 360)
     ax.set_xticks(range(0, 361, 45))
     ax.set_xlabel("$\\varphi_1$, °")
-    ax.set_ylabel("$M_{\\mathrm{ур}}$, Н·м")
+    ax.set_ylabel(tr("figures.kst02"))
     comma_axes(ax)
     ax.legend(fontsize=8, loc="best")
     return fig

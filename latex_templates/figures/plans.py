@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..parts import decimal_mark, tr, unit
 from . import new_figure
 
 COLOURS = {"absolute": "black", "relative": "tab:blue", "normal": "tab:green", "tangential": "tab:red",
@@ -51,9 +52,10 @@ def plan_figure(plan, w_cm: float = 12.0):
     ax.set_ylim(arr[:, 1].min() - pad, arr[:, 1].max() + pad)
     ax.set_aspect("equal")
     ax.axis("off")
-    unit = "(м/с)/мм" if plan.kind == "velocity" else "(м/с²)/мм"
+    units = unit("(м/с)/мм" if plan.kind == "velocity" else "(м/с²)/мм")
     mu = "μ_v" if plan.kind == "velocity" else "μ_a"
-    ax.text(0.01, 0.01, f"${mu}$ = {plan.scale:g} {unit}".replace(".", ","), transform=ax.transAxes, fontsize=9)
+    ax.text(0.01, 0.01, f"${mu}$ = {plan.scale:g}".replace(".", decimal_mark()) + f" {units}", transform=ax.transAxes,
+            fontsize=9)
     return fig
 
 
@@ -64,8 +66,8 @@ def positions_figure(linkage, q_all: np.ndarray, bold: tuple[int, ...], traces: 
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
     allpts = np.concatenate([np.array(list(world_points(linkage, q).values())) for q in q_all])
     L = float(max(np.ptp(allpts[:, 0]), np.ptp(allpts[:, 1])))
-    for tr in traces.values():
-        ax.plot(tr[:, 0], tr[:, 1], color="0.55", lw=0.6, ls="-.")
+    for trace in traces.values():
+        ax.plot(trace[:, 0], trace[:, 1], color="0.55", lw=0.6, ls="-.")
     for i, q in enumerate(q_all):
         if i in bold:
             continue
@@ -96,29 +98,29 @@ def diagrams_figure(d, w_cm: float = 16.0):
     deg = np.degrees(d.dense_offset)
     nodes = np.degrees(d.nodes)
     mids = (nodes[:-1] + nodes[1:]) / 2
-    unit_s = "м" if d.unit == "м" else "рад"
-    unit_v = "м/с" if d.unit == "м" else "рад/с"
-    unit_a = "м/с²" if d.unit == "м" else "рад/с²"
+    unit_s = unit("м" if d.unit == "м" else "рад")
+    unit_v = unit("м/с" if d.unit == "м" else "рад/с")
+    unit_a = unit("м/с²" if d.unit == "м" else "рад/с²")
     axes = fig.subplots(3, 1, sharex=True)
     ax = axes[0]
-    ax.plot(deg, d.s, "k-", lw=1.0, label="точно")
-    ax.plot(nodes, d.s_nodes_mm * d.mu_s, "o-", color="tab:blue", lw=0.7, ms=2.5, label="хорды")
+    ax.plot(deg, d.s, "k-", lw=1.0, label=tr("figures.wpla01"))
+    ax.plot(nodes, d.s_nodes_mm * d.mu_s, "o-", color="tab:blue", lw=0.7, ms=2.5, label=tr("figures.wpla02"))
     ax.set_ylabel(f"$s$, {unit_s}")
     ax.legend(fontsize=8, loc="best")
     ax = axes[1]
-    ax.plot(deg, d.v, "k-", lw=1.0, label="точно")
+    ax.plot(deg, d.v, "k-", lw=1.0, label=tr("figures.wpla03"))
     ax.step(np.append(nodes[:-1], nodes[-1]), np.append(d.v_graph, d.v_graph[-1]), where="post",
-            color="tab:orange", lw=0.8, label="ступени графического дифференцирования")
+            color="tab:orange", lw=0.8, label=tr("figures.plan02"))
     ax.plot(mids, d.v_graph, "o", color="tab:blue", ms=2.5)
     ax.set_ylabel(f"$v$, {unit_v}")
     ax.legend(fontsize=8, loc="best")
     ax = axes[2]
-    ax.plot(deg, d.a, "k-", lw=1.0, label="точно")
+    ax.plot(deg, d.a, "k-", lw=1.0, label=tr("figures.wpla04"))
     a_mid = np.mod(mids + (nodes[1] - nodes[0]) / 2, 360.0)
     order = np.argsort(a_mid)
-    ax.plot(a_mid[order], d.a_graph[order], "o-", color="tab:blue", lw=0.7, ms=2.5, label="графически")
+    ax.plot(a_mid[order], d.a_graph[order], "o-", color="tab:blue", lw=0.7, ms=2.5, label=tr("figures.wpla05"))
     ax.set_ylabel(f"$a$, {unit_a}")
-    ax.set_xlabel("$\\varphi_1$ от положения 0, град")
+    ax.set_xlabel(tr("figures.plan01"))
     ax.legend(fontsize=8, loc="best")
     for ax in axes:
         comma_axes(ax)

@@ -20,7 +20,7 @@ from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
 
-from . import PartContent
+from . import PartContent, tr
 
 NEEDS = ("kinematics", "strokes", "dynamics")
 
@@ -89,15 +89,15 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
         sym = _sub(f.name)
         where = f.where
         vsym = f"V_{{{where}}}"
-        kind = {"resistance": "сила производственного сопротивления", "gravity": f"сила тяжести звена {f.link}",
-                "force": f"сила, приложенная к звену {f.link}"}.get(f.kind, f"сила {f.name}")
+        kind = {"resistance": tr("dynamics.m54"), "gravity": tr("dynamics.m55", v1=f.link),
+                "force": tr("dynamics.m56", v1=f.link)}.get(f.kind, tr("dynamics.m14", v1=f.name))
         Fv = Var(f"F{j}", sym, F, "Н", kind)
-        Vv = Var(f"V{j}", vsym, V, "м/с", f"скорость точки {where}" if not where.startswith("S")
-                 else f"скорость центра масс звена {f.link}")
+        Vv = Var(f"V{j}", vsym, V, "м/с", tr("dynamics.m41", where=where) if not where.startswith("S")
+                 else tr("dynamics.m42", v1=f.link))
         av = Var(f"a{j}", rf"\alpha_{{{sym}}}", alpha, "°",
-                 Tex(f"угол между силой ${sym}$ и скоростью ${vsym}$"))
+                 Tex(tr("dynamics.m43", sym=sym, vsym=vsym)))
         rec = record(f"P_{{{sym}}}", f"F{j} * V{j} * cos(radians(a{j}))", "Вт", Fv, Vv, av,
-                     meaning=Tex(f"мощность силы ${sym}$"))
+                     meaning=Tex(tr("dynamics.m57", sym=sym)))
         out.append(PowerTerm(f.name, rec))
     for j, mo in enumerate(loads.moments):
         M = float(np.asarray(mo.value)[i])
@@ -105,9 +105,9 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
             continue
         w = float(np.asarray(kin.links[mo.link].omega)[i])
         sym = _sub(mo.name)
-        Mv = Var(f"M{j}", sym, M, "Н·м", Tex(f"момент, приложенный к звену {mo.link} (плюс~--- против часовой стрелки)"))
-        wv = Var(f"w{j}", rf"\omega_{{{mo.link}}}", w, "рад/с", f"угловая скорость звена {mo.link}")
-        rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Tex(f"мощность момента ${sym}$"))
+        Mv = Var(f"M{j}", sym, M, "Н·м", Tex(tr("dynamics.m44", v1=mo.link)))
+        wv = Var(f"w{j}", rf"\omega_{{{mo.link}}}", w, "рад/с", tr("dynamics.m15", v1=mo.link))
+        rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Tex(tr("dynamics.m58", sym=sym)))
         out.append(PowerTerm(mo.name, rec))
     return out, idle
 
@@ -117,8 +117,8 @@ def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, Cal
     named: dict[str, Any] = {f"P{j}": t.record for j, t in enumerate(terms)}
     expr = " + ".join(named) if named else "0 * omega1"
     total = record(r"P_\Sigma", expr, "Вт", *(() if named else (omega1,)),
-                   meaning="суммарная мощность сил сопротивления и сил тяжести", **named)
-    M = record(r"M_\text{пр}", "P_sum / omega1", "Н·м", omega1, meaning="приведённый момент сил сопротивления",
+                   meaning=tr("dynamics.m16"), **named)
+    M = record(r"M_\text{пр}", "P_sum / omega1", "Н·м", omega1, meaning=tr("dynamics.m17"),
                P_sum=total)
     return total, M
 
@@ -136,29 +136,29 @@ def inertia_records(project, i: int, omega1: Var) -> tuple[list[CalcRecord], Cal
         named: dict[str, Var] = {}
         parts = []
         if b.mass > 0:
-            named["m"] = Var(f"m{k}", f"m_{{{k}}}", b.mass, "кг", f"масса звена {k}")
-            named["V"] = Var(f"V{k}", f"V_{{S{k}}}", V, "м/с", f"скорость центра масс звена {k}")
+            named["m"] = Var(f"m{k}", f"m_{{{k}}}", b.mass, "кг", tr("dynamics.m45", k=k))
+            named["V"] = Var(f"V{k}", f"V_{{S{k}}}", V, "м/с", tr("dynamics.m46", k=k))
             parts.append(f"m{k} * V{k}**2")
         rotates = b.inertia > 0 and not _translates(lk, k)
         if rotates:
             named["J"] = Var(f"J{k}", f"J_{{S{k}}}", b.inertia, "кг·м²",
-                             f"момент инерции звена {k} относительно его центра масс")
+                             tr("dynamics.m47", k=k))
             if k == lk.drive_link:
                 parts.append(f"J{k} * omega1**2")
             else:
-                named["w"] = Var(f"w{k}", rf"\omega_{{{k}}}", abs(w), "рад/с", f"угловая скорость звена {k}")
+                named["w"] = Var(f"w{k}", rf"\omega_{{{k}}}", abs(w), "рад/с", tr("dynamics.m59", k=k))
                 parts.append(f"J{k} * w{k}**2")
         if not parts:
             continue
         expr = "(" + " + ".join(parts) + ") / omega1**2"
         shares.append(record(rf"J_{{\text{{пр}}{k}}}", expr, "кг·м²", omega1, *named.values(),
-                             meaning=f"доля звена {k} в приведённом моменте инерции"))
+                             meaning=tr("dynamics.m60", k=k)))
     dyn = project.task.dynamics
     J0 = Var("J0", r"J_0", dyn.crank_inertia, "кг·м²",
-             "момент инерции ротора двигателя и колёс передачи, приведённый к кривошипу")
+             tr("dynamics.m01"))
     named_sh: dict[str, Any] = {f"S{j}": s for j, s in enumerate(shares)}
     expr = " + ".join(["J0", *named_sh])
-    total = record(r"J_\text{пр}", expr, "кг·м²", J0, meaning="приведённый момент инерции механизма", **named_sh)
+    total = record(r"J_\text{пр}", expr, "кг·м²", J0, meaning=tr("dynamics.m18"), **named_sh)
     return shares, total
 
 
@@ -176,7 +176,7 @@ def position_labels(res, positions: int) -> list[str]:
     step = 2 * math.pi / positions
     sense, phi0 = _sense(res), float(res.phi[0])
     theta_sw = [float(np.mod(sense * (p - phi0), 2 * math.pi)) for p in res.switching]
-    names = dict(zip(theta_sw, ("н.р.х.", "к.р.х.")))
+    names = dict(zip(theta_sw, (tr("dynamics.m48"), tr("dynamics.m49"))))
     out: list[str] = []
     corner = 0
     for t in map(float, res.graphical.theta):
@@ -187,7 +187,7 @@ def position_labels(res, positions: int) -> list[str]:
         name = next((v for k, v in names.items() if abs(k - t) < 1e-9), None)
         if name is None:
             corner += 1
-            name = f"и{corner}"
+            name = tr("dynamics.m19", corner=corner)
         out.append(name)
     return out
 
@@ -211,16 +211,16 @@ def _sense(res) -> float:
 
 def scale_records(res) -> dict[str, CalcRecord | Var]:
     g = res.graphical
-    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Tex("длина оси $\\varphi$, изображающая один оборот кривошипа"))
-    mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
-    mu_M = Var("mu_M", r"\mu_M", g.mu_M, "Н·м/мм", "масштабный коэффициент графика приведённого момента")
-    H = Var("H", "H", g.H, "мм", "полюсное расстояние при графическом интегрировании")
+    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Tex(tr("dynamics.m20")))
+    mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("dynamics.m21"))
+    mu_M = Var("mu_M", r"\mu_M", g.mu_M, "Н·м/мм", tr("dynamics.m02"))
+    H = Var("H", "H", g.H, "мм", tr("dynamics.m03"))
     mu_A = record(r"\mu_A", "mu_M * mu_phi * H", "Дж/мм", mu_M, H, mu_phi=mu_phi,
-                  meaning="масштабный коэффициент графика работ")
-    k = Var("k", "k", float(g.enlargement), "", "коэффициент увеличения ординат графика")
+                  meaning=tr("dynamics.m22"))
+    k = Var("k", "k", float(g.enlargement), "", tr("dynamics.m04"))
     mu_E = record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A,
-                  meaning="масштабный коэффициент графика изменения кинетической энергии")
-    mu_J = Var("mu_J", r"\mu_J", g.mu_J, "кг·м²/мм", "масштабный коэффициент графика приведённого момента инерции")
+                  meaning=tr("dynamics.m23"))
+    mu_J = Var("mu_J", r"\mu_J", g.mu_J, "кг·м²/мм", tr("dynamics.m05"))
     return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
 
 
@@ -228,69 +228,68 @@ def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcReco
     g = res.graphical
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
     psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Tex("угол наклона верхней касательной к оси $J$"), **common)
+                     omega, delta, meaning=Tex(tr("dynamics.m50")), **common)
     psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Tex("угол наклона нижней касательной к оси $J$"), **common)
-    KL = Var("KL", "KL", g.KL_mm, "мм", Tex("отрезок, отсекаемый касательными на оси $\\Delta E$"))
+                     omega, delta, meaning=Tex(tr("dynamics.m51")), **common)
+    KL = Var("KL", "KL", g.KL_mm, "мм", Tex(tr("dynamics.m24")))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
-                  mu_E=sc["mu_E"], meaning="момент инерции маховика по диаграмме Виттенбауэра")
+                  mu_E=sc["mu_E"], meaning=tr("dynamics.m25"))
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
 
 
 def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     ex = res.exact
     w_max = record(r"\omega_{\max}", "omega1 * (1 + delta / 2)", "рад/с", omega, delta,
-                   meaning="наибольшая допускаемая угловая скорость кривошипа")
+                   meaning=tr("dynamics.m26"))
     w_min = record(r"\omega_{\min}", "omega1 * (1 - delta / 2)", "рад/с", omega, delta,
-                   meaning="наименьшая допускаемая угловая скорость кривошипа")
-    K = Var("K", "K", ex.K, "Дж", Tex(r"наибольшее значение $\Delta E - J_\text{пр}\omega_{\max}^2/2$ "
-                                         r"(точка $K$ пересечения верхней касательной с осью $\Delta E$)"))
-    L = Var("Lk", "L", ex.L, "Дж", Tex(r"наименьшее значение $\Delta E - J_\text{пр}\omega_{\min}^2/2$ (точка $L$)"))
+                   meaning=tr("dynamics.m27"))
+    K = Var("K", "K", ex.K, "Дж", Tex(tr("dynamics.m28")))
+    L = Var("Lk", "L", ex.L, "Дж", Tex(tr("dynamics.m29")))
     J_ex = record(r"J_\text{м}", "(K - Lk) / (omega1**2 * delta)", "кг·м²", K, L, omega, delta,
-                  meaning="момент инерции маховика (точно)")
+                  meaning=tr("dynamics.m30"))
     return {"w_max": w_max, "w_min": w_min, "K": K, "L": L, "J_ex": J_ex}
 
 
 def merzalov_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     mz = res.merzalov
-    T_max = Var("T_max", r"T_{\max}", mz.T_max, "Дж", Tex("наибольшее значение $T_\\text{I}$"))
-    T_min = Var("T_min", r"T_{\min}", mz.T_min, "Дж", Tex("наименьшее значение $T_\\text{I}$"))
+    T_max = Var("T_max", r"T_{\max}", mz.T_max, "Дж", Tex(tr("dynamics.m31")))
+    T_min = Var("T_min", r"T_{\min}", mz.T_min, "Дж", Tex(tr("dynamics.m32")))
     J_I = record(r"J_\text{I}", "(T_max - T_min) / (omega1**2 * delta)", "кг·м²", T_max, T_min, omega, delta,
-                 meaning="момент инерции звеньев первой группы (с маховиком)")
+                 meaning=tr("dynamics.m33"))
     J_c = Var("J_c", r"J_\text{пост}", mz.J_const, "кг·м²",
-              "постоянная часть приведённого момента инерции (ротор, передача и кривошип)")
+              tr("dynamics.m06"))
     J_mz = record(r"J_\text{м}^\text{М}", "J_I - J_c", "кг·м²", J_c, J_I=J_I,
-                  meaning="момент инерции маховика по методу Мерцалова")
+                  meaning=tr("dynamics.m34"))
     return {"T_max": T_max, "T_min": T_min, "J_I": J_I, "J_c": J_c, "J_mz": J_mz}
 
 
 def flywheel_records(res, J_ex: CalcRecord) -> dict[str, CalcRecord | Var]:
     fw = res.flywheel
-    J = J_ex.as_var("J_m", "момент инерции маховика")
-    rho = Var("rho", r"\rho", fw.density, "кг/м³", "плотность материала маховика")
+    J = J_ex.as_var("J_m", tr("dynamics.m07"))
+    rho = Var("rho", r"\rho", fw.density, "кг/м³", tr("dynamics.m08"))
     psi = Var("psi", r"\psi", fw.width_ratio, "",
-              "отношение ширины диска к его радиусу" if fw.shape == "disk" else "отношение ширины обода к его толщине")
+              tr("dynamics.m35") if fw.shape == "disk" else tr("dynamics.m36"))
     out: dict[str, CalcRecord | Var] = {"rho": rho, "psi": psi}
     if fw.shape == "disk":
-        R = record("R", "(2 * J_m / (pi * rho * psi))**0.2", "м", J, rho, psi, meaning="радиус диска")
-        b = record("b", "psi * R", "м", psi, R=R, meaning="ширина диска")
-        m = record("m", "rho * pi * R**2 * b", "кг", rho, R=R, b=b, meaning="масса маховика")
+        R = record("R", "(2 * J_m / (pi * rho * psi))**0.2", "м", J, rho, psi, meaning=tr("dynamics.wdyn01"))
+        b = record("b", "psi * R", "м", psi, R=R, meaning=tr("dynamics.wdyn02"))
+        m = record("m", "rho * pi * R**2 * b", "кг", rho, R=R, b=b, meaning=tr("dynamics.wdyn03"))
         out.update(R=R, b=b, m=m)
     else:
-        k = Var("k_h", "k", fw.thickness / fw.radius, "", "отношение толщины обода к его наружному радиусу")
+        k = Var("k_h", "k", fw.thickness / fw.radius, "", tr("dynamics.m37"))
         R = record("R", "(2 * J_m / (pi * rho * psi * k_h * (1 - (1 - k_h)**4)))**0.2", "м", J, rho, psi, k,
-                   meaning="наружный радиус обода")
-        h = record("h", "k_h * R", "м", k, R=R, meaning="толщина обода")
-        b = record("b", "psi * h", "м", psi, h=h, meaning="ширина обода")
-        r = record("r", "R - h", "м", R=R, h=h, meaning="внутренний радиус обода")
-        m = record("m", "rho * pi * (R**2 - r**2) * b", "кг", rho, R=R, r=r, b=b, meaning="масса обода")
+                   meaning=tr("dynamics.m52"))
+        h = record("h", "k_h * R", "м", k, R=R, meaning=tr("dynamics.wdyn04"))
+        b = record("b", "psi * h", "м", psi, h=h, meaning=tr("dynamics.wdyn05"))
+        r = record("r", "R - h", "м", R=R, h=h, meaning=tr("dynamics.m53"))
+        m = record("m", "rho * pi * (R**2 - r**2) * b", "кг", rho, R=R, r=r, b=b, meaning=tr("dynamics.wdyn06"))
         out.update(k=k, R=R, h=h, b=b, r=r, m=m)
     return out
 
 
 def drive_records(res) -> dict[str, CalcRecord | Var]:
-    A = Var("A_c", r"A_\text{с}", res.work_cycle, "Дж", "работа сил сопротивления за цикл")
-    M_d = record(r"M_\text{дв}", "-A_c / (2 * pi)", "Н·м", A, meaning="постоянный движущий момент")
+    A = Var("A_c", r"A_\text{с}", res.work_cycle, "Дж", tr("dynamics.m09"))
+    M_d = record(r"M_\text{дв}", "-A_c / (2 * pi)", "Н·м", A, meaning=tr("dynamics.m38"))
     return {"A_c": A, "M_d": M_d}
 
 
@@ -333,11 +332,11 @@ def method_rows(project, res) -> tuple[list[MethodRow], dict[str, np.ndarray]]:
 
 def motion_records(res) -> dict[str, CalcRecord | Var]:
     mo = res.motion
-    w_hi = Var("w_hi", r"\omega_{\max}'", mo.omega_max, "рад/с", "наибольшая угловая скорость установившегося движения")
-    w_lo = Var("w_lo", r"\omega_{\min}'", mo.omega_min, "рад/с", "наименьшая угловая скорость установившегося движения")
-    w_m = record(r"\omega_m'", "(w_hi + w_lo) / 2", "рад/с", w_hi, w_lo, meaning="средняя угловая скорость")
+    w_hi = Var("w_hi", r"\omega_{\max}'", mo.omega_max, "рад/с", tr("dynamics.m10"))
+    w_lo = Var("w_lo", r"\omega_{\min}'", mo.omega_min, "рад/с", tr("dynamics.m11"))
+    w_m = record(r"\omega_m'", "(w_hi + w_lo) / 2", "рад/с", w_hi, w_lo, meaning=tr("dynamics.m39"))
     d = record(r"\delta'", "(w_hi - w_lo) / w_m", "", w_hi, w_lo, w_m=w_m,
-               meaning="коэффициент неравномерности, полученный интегрированием")
+               meaning=tr("dynamics.m40"))
     return {"w_hi": w_hi, "w_lo": w_lo, "w_m": w_m, "delta": d}
 
 
@@ -354,8 +353,8 @@ def content(project) -> PartContent:
     kin = project.kinematics
     i = detail_position(project)
     w1 = abs(float(project.linkage.omega))
-    omega = Var("omega1", r"\omega_1", w1, "рад/с", "угловая скорость кривошипа (средняя)")
-    delta = Var("delta", r"\delta", res.delta_target, "", "заданный коэффициент неравномерности движения")
+    omega = Var("omega1", r"\omega_1", w1, "рад/с", tr("dynamics.m12"))
+    delta = Var("delta", r"\delta", res.delta_target, "", tr("dynamics.m13"))
     terms, idle = power_terms(project, i)
     P_sum, M_rec = moment_records(terms, omega)
     shares, J_rec = inertia_records(project, i, omega)
@@ -380,7 +379,7 @@ def content(project) -> PartContent:
         "i": i, "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
         "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
-        "n_breaks": len(labels) - positions - 1, "corners": any(x.startswith("и") for x in labels),
+        "n_breaks": len(labels) - positions - 1, "corners": any(not x.isdigit() and x not in (tr("dynamics.m48"), tr("dynamics.m49")) for x in labels),
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
         "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
         "J_var": float(res.J_red.max() - res.J_red.min()), "J_mean": float(res.J_red.mean()),

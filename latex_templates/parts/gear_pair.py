@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from reportgen.calc import CalcRecord, Var, record
 
-from . import PartContent
+from . import PartContent, tr
 
 NEEDS = ("gears",)
 
@@ -47,14 +47,14 @@ def gear_records(pair) -> dict[str, CalcRecord]:
     """The records of the geometric calculation in the course's order, keyed by short names."""
     g = pair.geometry
     V = {
-        "z1": Var("z1", "z_1", g.z1, "", "число зубьев шестерни"),
-        "z2": Var("z2", "z_2", g.z2, "", "число зубьев колеса"),
-        "m": Var("m", "m", g.m, "мм", "модуль"),
-        "x1": Var("x1", "x_1", g.x1, "", "коэффициент смещения шестерни"),
-        "x2": Var("x2", "x_2", g.x2, "", "коэффициент смещения колеса"),
-        "alpha": Var("alpha", r"\alpha", g.alpha_deg, "°", "угол профиля исходного контура"),
-        "ha": Var("ha", r"h_a^*", g.ha, "", "коэффициент высоты головки зуба исходного контура"),
-        "c": Var("c", r"c^*", g.c, "", "коэффициент радиального зазора исходного контура"),
+        "z1": Var("z1", "z_1", g.z1, "", tr("gears.m30")),
+        "z2": Var("z2", "z_2", g.z2, "", tr("gears.m31")),
+        "m": Var("m", "m", g.m, "мм", tr("gears.wgea02")),
+        "x1": Var("x1", "x_1", g.x1, "", tr("gears.m32")),
+        "x2": Var("x2", "x_2", g.x2, "", tr("gears.m33")),
+        "alpha": Var("alpha", r"\alpha", g.alpha_deg, "°", tr("gears.m34")),
+        "ha": Var("ha", r"h_a^*", g.ha, "", tr("gears.m35")),
+        "c": Var("c", r"c^*", g.c, "", tr("gears.m36")),
     }
     r: dict[str, CalcRecord] = {}
 
@@ -65,58 +65,58 @@ def gear_records(pair) -> dict[str, CalcRecord]:
         r[key] = _rec(symbol, expr, unit, decimals, meaning, **named)
         return r[key]
 
-    add("x_sum", r"x_\Sigma", "x1 + x2", "", 3, "коэффициент суммы смещений", x1="x1", x2="x2")
+    add("x_sum", r"x_\Sigma", "x1 + x2", "", 3, tr("gears.m02"), x1="x1", x2="x2")
     add("inv_alpha", r"\operatorname{inv}\alpha", "tan(radians(alpha)) - pi * alpha / 180", "", 6,
-        "эвольвентная функция угла профиля", alpha="alpha")
+        tr("gears.m03"), alpha="alpha")
     add("inv_alpha_w", r"\operatorname{inv}\alpha_w", "2 * x_sum * tan(radians(alpha)) / (z1 + z2) + inv_a",
-        "", 6, "эвольвентная функция угла зацепления", x_sum="x_sum", alpha="alpha", z1="z1", z2="z2",
+        "", 6, tr("gears.m04"), x_sum="x_sum", alpha="alpha", z1="z1", z2="z2",
         inv_a="inv_alpha")
-    V["alpha_w"] = Var("alpha_w", r"\alpha_w", g.alpha_w_deg, "°", "угол зацепления")
-    add("a", "a", "m * (z1 + z2) / 2", "мм", 3, "делительное межосевое расстояние", m="m", z1="z1", z2="z2")
-    add("aw", "a_w", "a * cos(radians(alpha)) / cos(radians(alpha_w))", "мм", 3, "межосевое расстояние",
+    V["alpha_w"] = Var("alpha_w", r"\alpha_w", g.alpha_w_deg, "°", tr("gears.m05"))
+    add("a", "a", "m * (z1 + z2) / 2", "мм", 3, tr("gears.m06"), m="m", z1="z1", z2="z2")
+    add("aw", "a_w", "a * cos(radians(alpha)) / cos(radians(alpha_w))", "мм", 3, tr("gears.m07"),
         a="a", alpha="alpha", alpha_w="alpha_w")
-    add("u", "u", "z2 / z1", "", 3, "передаточное число", z1="z1", z2="z2")
-    add("y", "y", "(aw - a) / m", "", 5, "коэффициент воспринимаемого смещения", aw="aw", a="a", m="m")
-    add("dy", r"\Delta y", "x_sum - y", "", 5, "коэффициент уравнительного смещения", x_sum="x_sum", y="y")
+    add("u", "u", "z2 / z1", "", 3, tr("gears.m08"), z1="z1", z2="z2")
+    add("y", "y", "(aw - a) / m", "", 5, tr("gears.m09"), aw="aw", a="a", m="m")
+    add("dy", r"\Delta y", "x_sum - y", "", 5, tr("gears.m10"), x_sum="x_sum", y="y")
     for i in (1, 2):
-        add(f"d{i}", f"d_{i}", f"m * z{i}", "мм", 3, f"делительный диаметр {_whose(i)}", m="m", **{f"z{i}": f"z{i}"})
+        add(f"d{i}", f"d_{i}", f"m * z{i}", "мм", 3, tr("gears.m37", v1=_whose(i)), m="m", **{f"z{i}": f"z{i}"})
     for i in (1, 2):
-        add(f"db{i}", f"d_{{b{i}}}", f"d{i} * cos(radians(alpha))", "мм", 3, f"основной диаметр {_whose(i)}",
+        add(f"db{i}", f"d_{{b{i}}}", f"d{i} * cos(radians(alpha))", "мм", 3, tr("gears.m38", v1=_whose(i)),
             **{f"d{i}": f"d{i}"}, alpha="alpha")
-    add("dw1", "d_{w1}", "2 * aw / (u + 1)", "мм", 3, "начальный диаметр шестерни", aw="aw", u="u")
-    add("dw2", "d_{w2}", "2 * aw * u / (u + 1)", "мм", 3, "начальный диаметр колеса", aw="aw", u="u")
+    add("dw1", "d_{w1}", "2 * aw / (u + 1)", "мм", 3, tr("gears.m11"), aw="aw", u="u")
+    add("dw2", "d_{w2}", "2 * aw * u / (u + 1)", "мм", 3, tr("gears.m12"), aw="aw", u="u")
     for i in (1, 2):
         add(f"da{i}", f"d_{{a{i}}}", f"d{i} + 2 * m * (ha + x{i} - dy)", "мм", 3,
-            f"диаметр вершин {_whose(i)}", **{f"d{i}": f"d{i}", f"x{i}": f"x{i}"}, m="m", ha="ha", dy="dy")
+            tr("gears.m39", v1=_whose(i)), **{f"d{i}": f"d{i}", f"x{i}": f"x{i}"}, m="m", ha="ha", dy="dy")
     for i in (1, 2):
         add(f"df{i}", f"d_{{f{i}}}", f"d{i} - 2 * m * (ha + c - x{i})", "мм", 3,
-            f"диаметр впадин {_whose(i)}", **{f"d{i}": f"d{i}", f"x{i}": f"x{i}"}, m="m", ha="ha", c="c")
+            tr("gears.m40", v1=_whose(i)), **{f"d{i}": f"d{i}", f"x{i}": f"x{i}"}, m="m", ha="ha", c="c")
     for i in (1, 2):
-        add(f"h{i}", f"h_{i}", f"(da{i} - df{i}) / 2", "мм", 3, f"высота зуба {_whose(i)}",
+        add(f"h{i}", f"h_{i}", f"(da{i} - df{i}) / 2", "мм", 3, tr("gears.m41", v1=_whose(i)),
             **{f"da{i}": f"da{i}", f"df{i}": f"df{i}"})
-    add("c_w", "c_w", "aw - (da1 + df2) / 2", "мм", 3, "радиальный зазор в зацеплении",
+    add("c_w", "c_w", "aw - (da1 + df2) / 2", "мм", 3, tr("gears.m13"),
         aw="aw", da1="da1", df2="df2")
-    add("p", "p", "pi * m", "мм", 3, "шаг по делительной окружности", m="m")
-    add("pb", "p_b", "pi * m * cos(radians(alpha))", "мм", 3, "основной шаг", m="m", alpha="alpha")
+    add("p", "p", "pi * m", "мм", 3, tr("gears.m14"), m="m")
+    add("pb", "p_b", "pi * m * cos(radians(alpha))", "мм", 3, tr("gears.wgea01"), m="m", alpha="alpha")
     for i in (1, 2):
         add(f"s{i}", f"s_{i}", f"m * (pi / 2 + 2 * x{i} * tan(radians(alpha)))", "мм", 3,
-            f"толщина зуба {_whose(i)} по делительной окружности", m="m", alpha="alpha", **{f"x{i}": f"x{i}"})
+            tr("gears.m42", v1=_whose(i)), m="m", alpha="alpha", **{f"x{i}": f"x{i}"})
     for i in (1, 2):
         add(f"alpha_a{i}", rf"\alpha_{{a{i}}}", f"degrees(acos(db{i} / da{i}))", "°", 3,
-            f"угол профиля на окружности вершин {_whose(i)}", **{f"db{i}": f"db{i}", f"da{i}": f"da{i}"})
+            tr("gears.m43", v1=_whose(i)), **{f"db{i}": f"db{i}", f"da{i}": f"da{i}"})
         add(f"inv_alpha_a{i}", rf"\operatorname{{inv}}\alpha_{{a{i}}}",
             f"tan(radians(alpha_a{i})) - pi * alpha_a{i} / 180", "", 6, "",
             **{f"alpha_a{i}": f"alpha_a{i}"})
         add(f"sa{i}", f"s_{{a{i}}}", f"da{i} * (s{i} / d{i} + inv_a - inv_aa{i})", "мм", 3,
-            f"толщина зуба {_whose(i)} по окружности вершин",
+            tr("gears.m44", v1=_whose(i)),
             **{f"da{i}": f"da{i}", f"s{i}": f"s{i}", f"d{i}": f"d{i}", f"inv_aa{i}": f"inv_alpha_a{i}"},
             inv_a="inv_alpha")
     # the line of action and the contact ratio
-    add("g", "N_1N_2", "aw * sin(radians(alpha_w))", "мм", 3, "длина теоретической линии зацепления",
+    add("g", "N_1N_2", "aw * sin(radians(alpha_w))", "мм", 3, tr("gears.m15"),
         aw="aw", alpha_w="alpha_w")
     add("ab", "ab", "sqrt(da1**2 - db1**2) / 2 + sqrt(da2**2 - db2**2) / 2 - g", "мм", 3,
-        "длина активной линии зацепления", da1="da1", db1="db1", da2="da2", db2="db2", g="g")
-    add("eps", r"\varepsilon_\alpha", "ab / pb", "", 3, "коэффициент торцового перекрытия", ab="ab", pb="pb")
+        tr("gears.m16"), da1="da1", db1="db1", da2="da2", db2="db2", g="g")
+    add("eps", r"\varepsilon_\alpha", "ab / pb", "", 3, tr("gears.m17"), ab="ab", pb="pb")
     add("n1p", "N_1P", "db1 / 2 * tan(radians(alpha_w))", "мм", 3, "", db1="db1", alpha_w="alpha_w")
     add("n2a", "N_2a", "sqrt(da2**2 - db2**2) / 2", "мм", 3, "", da2="da2", db2="db2")
     add("n1b", "N_1b", "sqrt(da1**2 - db1**2) / 2", "мм", 3, "", da1="da1", db1="db1")
@@ -125,7 +125,7 @@ def gear_records(pair) -> dict[str, CalcRecord]:
 
 
 def _whose(i: int) -> str:
-    return "шестерни" if i == 1 else "колеса"
+    return tr("gears.whose1" if i == 1 else "gears.whose2")
 
 
 def check_lines(pair, r: dict[str, CalcRecord]) -> list[CheckLine]:
@@ -137,12 +137,12 @@ def check_lines(pair, r: dict[str, CalcRecord]) -> list[CheckLine]:
     for i in (1, 2):
         z = Var(f"z{i}", f"z_{i}", getattr(g, f"z{i}"), "")
         xm = _rec(f"x_{{\\min{i}}}", f"ha - z{i} * sin(radians(alpha))**2 / 2", "", 3,
-                  f"наименьший коэффициент смещения без подрезания {_whose(i)}", ha=ha, alpha=alpha,
+                  tr("gears.m45", v1=_whose(i)), ha=ha, alpha=alpha,
                   **{f"z{i}": z})
         chk = pair.check(f"undercut{i}")
         out.append(CheckLine(f"undercut{i}", (xm,), chk.value, chk.limit, chk.passed))
-    k = Var("k", "k", pair.sa_min_factor, "", "допускаемая доля модуля для толщины зуба на вершине")
-    sa_min = _rec(r"[s_a]", "k * m", "мм", 3, "наименьшая допускаемая толщина зуба на вершине", k=k,
+    k = Var("k", "k", pair.sa_min_factor, "", tr("gears.m18"))
+    sa_min = _rec(r"[s_a]", "k * m", "мм", 3, tr("gears.m19"), k=k,
                   m=Var("m", "m", g.m, "мм"))
     for i in (1, 2):
         chk = pair.check(f"sharpening{i}")
@@ -153,7 +153,7 @@ def check_lines(pair, r: dict[str, CalcRecord]) -> list[CheckLine]:
         r_i = Var(f"d{i}", f"d_{i}", getattr(g, f"d{i}"), "мм")
         x_i = Var(f"x{i}", f"x_{i}", getattr(g, f"x{i}"), "")
         rho_l = _rec(rf"\rho_{{l{i}}}", f"d{i} / 2 * sin(radians(alpha)) - (ha - x{i}) * m / sin(radians(alpha))",
-                     "мм", 3, f"радиус кривизны эвольвенты {_whose(i)} в граничной точке",
+                     "мм", 3, tr("gears.m46", v1=_whose(i)),
                      alpha=alpha, ha=ha, m=Var("m", "m", g.m, "мм"), **{f"d{i}": r_i, f"x{i}": x_i})
         rho_p = r["n1a"] if i == 1 else _rec(r"N_2b", "g - n1b", "мм", 3, "", g=r["g"], n1b=r["n1b"])
         chk = pair.check(f"interference{i}")
@@ -174,9 +174,9 @@ def content(project) -> PartContent:
     pic = meshing_picture(pair, n_teeth=3)
     scale = meshing_scale(pair, pic)
     ab_sheet = ab_on_sheet(pic, scale)
-    ab_read = Var("ab_read", r"\overline{ab}", ab_sheet, "мм", "длина отрезка ab, измеренная на листе")
-    k_var = Var("k_l", "k_l", scale.factor, "", "масштаб построения картины зацепления")
-    ab_drawn = _rec(r"ab'", "ab_read / k_l", "мм", 3, "длина активной линии зацепления по построению",
+    ab_read = Var("ab_read", r"\overline{ab}", ab_sheet, "мм", tr("gears.m20"))
+    k_var = Var("k_l", "k_l", scale.factor, "", tr("gears.m21"))
+    ab_drawn = _rec(r"ab'", "ab_read / k_l", "мм", 3, tr("gears.m22"),
                     ab_read=ab_read, k_l=k_var)
     eps_drawn = _rec(r"\varepsilon_\alpha'", "ab_d / pb", "", 3, "", ab_d=ab_drawn, pb=r["pb"])
     # the difference between the two printed lengths (both to 0,001 mm, as printed above)
@@ -233,17 +233,15 @@ def _conclusion(pair, failed) -> str:
     from ..render import Tex
     from latex_templates.numbers import mnum
     g = pair.geometry
-    text = (f"Спроектирована эвольвентная передача $z_1 = {g.z1}$, $z_2 = {g.z2}$, $m = {mnum(g.m)}$~мм "
-            f"с~коэффициентами смещения $x_1 = {mnum(g.x1)}$, $x_2 = {mnum(g.x2)}$: межосевое расстояние "
-            f"$a_w = {mnum(g.aw, places(g.aw, 3))}$~мм, коэффициент перекрытия "
-            f"$\\varepsilon_\\alpha = {mnum(g.eps_alpha, places(g.eps_alpha, 3))}$.")
-    names = {"undercut1": "отсутствие подрезания шестерни", "undercut2": "отсутствие подрезания колеса",
-             "sharpening1": "отсутствие заострения шестерни", "sharpening2": "отсутствие заострения колеса",
+    text = tr("gears.m01", v1=g.z1, v2=g.z2, v3=Tex(mnum(g.m)), v4=Tex(mnum(g.x1)), v5=Tex(mnum(g.x2)),
+              v6=Tex(mnum(g.aw, places(g.aw, 3))), v7=Tex(mnum(g.eps_alpha, places(g.eps_alpha, 3))))
+    names = {"undercut1": tr("gears.m23"), "undercut2": tr("gears.m24"),
+             "sharpening1": tr("gears.m25"), "sharpening2": tr("gears.m26"),
              "contact_ratio": f"$\\varepsilon_\\alpha \\ge {mnum(pair.eps_min)}$",
-             "interference1": "отсутствие интерференции с~переходной кривой шестерни",
-             "interference2": "отсутствие интерференции с~переходной кривой колеса"}
+             "interference1": tr("gears.m27"),
+             "interference2": tr("gears.m28")}
     if failed:
-        text += " Не выполнены условия: " + "; ".join(names[c.name] for c in failed) + "."
+        text += tr("gears.m47") + "; ".join(names[c.name] for c in failed) + "."
     else:
-        text += " Все проверки качества зацепления выполнены."
+        text += tr("gears.m29")
     return Tex(text)

@@ -12,7 +12,7 @@ from reportgen.calc import Var, record
 from reportgen.diagrams import build_diagrams
 from reportgen.plans import MEASURE_MM, build_plans, round_scale
 
-from . import PartContent
+from . import PartContent, tr
 
 NEEDS = ("structure", "kinematics")
 
@@ -47,8 +47,8 @@ def _omega_record(kin, i: int, k: int, seg: Var, lv: Var, mu_v) -> tuple[dict, V
     row, and the exact |ω_k| as a variable for the accelerations."""
     omega = float(kin.links[k].omega[i])
     wrec = record(rf"\omega_{{{k}}}", "seg * mu_v / l", "рад/с", seg, lv, mu_v=mu_v,
-                  meaning=f"угловая скорость звена {k}")
-    row = {"link": k, "rec": wrec, "exact": omega, "sense": "против" if kin.links[k].omega[i] > 0 else "по"}
+                  meaning=tr("kinematics.m06", k=k))
+    row = {"link": k, "rec": wrec, "exact": omega, "sense": "ccw" if kin.links[k].omega[i] > 0 else "cw"}
     return row, Var("w", rf"\omega_{{{k}}}", abs(omega), "рад/с")
 
 
@@ -58,12 +58,12 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
     an = record(f"a^n_{{{rel}}}", "w**2 * l", "м/с²", w_exact, lv)
     comp_t = aplan.component(f"a^{{\\tau}}_{{{rel}}}")
     segt = Var("segt", segt_symbol, aplan.measured_mm(comp_t), "мм",
-               Tex(f"отрезок плана ускорений, изображающий $a^\\tau_{{{rel}}}$"))
+               Tex(tr("kinematics.m07", rel=rel)))
     erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
-                  mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
-                  meaning=f"угловое ускорение звена {k}")
+                  mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", tr("kinematics.m19")),
+                  meaning=tr("kinematics.m08", k=k))
     eps = {"link": k, "rec": erec, "exact": float(kin.links[k].epsilon[i]),
-           "sense": "против" if kin.links[k].epsilon[i] > 0 else "по"}
+           "sense": "ccw" if kin.links[k].epsilon[i] > 0 else "cw"}
     return {"rec": an, "mm": an.value / aplan.scale}, eps
 
 
@@ -83,9 +83,9 @@ def content(project) -> PartContent:
     pts = np.concatenate([np.asarray(m.pos) for m in kin.points.values()])
     extent = float(max(np.ptp(pts[:, 0]), np.ptp(pts[:, 1])))
     mu_l_val = round_scale(extent, 200.0)
-    mu_l = Var("mu_l", r"\mu_l", mu_l_val, "м/мм", "масштабный коэффициент плана положений")
-    l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", f"длина кривошипа {axis}{tip}")
-    OA_mm = record(f"{axis}{tip}", "l_OA / mu_l", "мм", l_oa, mu_l, meaning=f"отрезок {axis}{tip} на чертеже")
+    mu_l = Var("mu_l", r"\mu_l", mu_l_val, "м/мм", tr("kinematics.m01"))
+    l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", tr("kinematics.m02", axis=axis, tip=tip))
+    OA_mm = record(f"{axis}{tip}", "l_OA / mu_l", "мм", l_oa, mu_l, meaning=tr("kinematics.m09", axis=axis, tip=tip))
     dense = np.linspace(0, 2 * math.pi, 121)
     dk = project.model.solve(dense)
     traces = {f"S{k}": np.asarray(dk.coms[k].pos) for k in lk.moving if lk.bodies[k].mass > 0}
@@ -94,9 +94,9 @@ def content(project) -> PartContent:
     strokes = project.strokes
     stroke_ctx = None
     if strokes is not None:
-        wk = Var("phi_w", r"\varphi_\text{р.х}", strokes.working_deg, "°", "угол рабочего хода")
-        ik = Var("phi_i", r"\varphi_\text{х.х}", strokes.idle_deg, "°", "угол холостого хода")
-        K = record("K", "phi_w / phi_i", "", wk, ik, meaning="коэффициент изменения средней скорости")
+        wk = Var("phi_w", r"\varphi_\text{р.х}", strokes.working_deg, "°", tr("kinematics.m10"))
+        ik = Var("phi_i", r"\varphi_\text{х.х}", strokes.idle_deg, "°", tr("kinematics.m11"))
+        K = record("K", "phi_w / phi_i", "", wk, ik, meaning=tr("kinematics.m20"))
         stroke_ctx = {"K": K, "working": strokes.working_deg, "idle": strokes.idle_deg, "H": strokes.stroke,
                       "kind": strokes.output.kind, "link": strokes.output.link, "point": strokes.output.point,
                       "start": math.degrees(strokes.phi_start) % 360, "end": math.degrees(strokes.phi_end) % 360}
@@ -114,11 +114,11 @@ def content(project) -> PartContent:
         out_rows.append([j, math.degrees(ph) % 360, float(s_out[j])] +
                         [float(kin.transmission_deg[g.key][j]) for g in st.groups[1:]])
     # --- velocities -----------------------------------------------------------------------------
-    omega1 = Var("omega1", r"\omega_1", w1, "рад/с", "угловая скорость кривошипа")
-    VA = record(f"V_{{{tip}}}", "omega1 * l_OA", "м/с", omega1, l_oa, meaning=f"скорость точки {tip}")
+    omega1 = Var("omega1", r"\omega_1", w1, "рад/с", tr("kinematics.m03"))
+    VA = record(f"V_{{{tip}}}", "omega1 * l_OA", "м/с", omega1, l_oa, meaning=tr("kinematics.m12", tip=tip))
     pa_mm = VA.value / vplan.scale
-    pa = Var("pa", f"p{tip.lower()}", pa_mm, "мм", f"вектор скорости точки {tip} на плане")
-    mu_v = record(r"\mu_v", "V_A / pa", "(м/с)/мм", pa, V_A=VA, meaning="масштабный коэффициент плана скоростей")
+    pa = Var("pa", f"p{tip.lower()}", pa_mm, "мм", tr("kinematics.m04", tip=tip))
+    mu_v = record(r"\mu_v", "V_A / pa", "(м/с)/мм", pa, V_A=VA, meaning=tr("kinematics.m13"))
     vrows = _plan_rows(vplan)
     omega_recs = []
     eps_recs = []
@@ -136,8 +136,8 @@ def content(project) -> PartContent:
                 l = _len(body, P, Q)
                 comp = vplan.component(f"V_{{{Q}{P}}}")
                 seg = Var("seg", f"{comp.start}{comp.end}",
-                          vplan.measured_mm(comp), "мм", Tex(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
-                lv = Var("l", f"l_{{{P}{Q}}}", l, "м", f"длина звена {P}{Q}")
+                          vplan.measured_mm(comp), "мм", Tex(tr("kinematics.m27", Q=Q, P=P)))
+                lv = Var("l", f"l_{{{P}{Q}}}", l, "м", tr("kinematics.m26", P=P, Q=Q))
                 omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
                 omega_recs.append(omega_rec)
                 an_rec, eps_rec = _epsilon_records(kin, i, k, aplan, f"{Q}{P}", f"n_{{{Q}{P}}}{Q.lower()}", lv, w_exact)
@@ -153,14 +153,14 @@ def content(project) -> PartContent:
                 comp = vplan.component(f"V_{{{Hg}{G}}}")
                 gh = float(np.hypot(*(np.asarray(kin.points[H].pos[i]) - np.asarray(kin.points[G].pos[i]))))
                 seg = Var("seg", f"{comp.start}{comp.end}", vplan.measured_mm(comp), "мм",
-                          Tex(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
-                lv = Var("l", f"l_{{{G}{H}}}", gh, "м", f"расстояние {G}{H} в данном положении")
+                          Tex(tr("kinematics.m30", Hg=Hg, G=G)))
+                lv = Var("l", f"l_{{{G}{H}}}", gh, "м", tr("kinematics.m28", G=G, H=H))
                 omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
                 omega_recs.append(omega_rec)
                 vrel = vplan.component(f"V_{{{Hg}{H}}}")
-                vr = Var("vr", f"V_{{{Hg}{H}}}", vrel.value, "м/с", "скорость скольжения камня по кулисе")
+                vr = Var("vr", f"V_{{{Hg}{H}}}", vrel.value, "м/с", tr("kinematics.m29"))
                 cor = record(f"a^k_{{{Hg}{H}}}", "2 * w * vr", "м/с²", w_exact, vr,
-                             meaning="ускорение Кориолиса")
+                             meaning=tr("kinematics.m31"))
                 cor_recs.append({"rec": cor, "mm": cor.value / aplan.scale})
                 end = aplan.component(f"a^{{\\tau}}_{{{Hg}{G}}}").end
                 an_rec, eps_rec = _epsilon_records(kin, i, k, aplan, f"{Hg}{G}", f"n{end}", lv, w_exact)
@@ -178,9 +178,9 @@ def content(project) -> PartContent:
         com_rows.append([k, mm_v, mm_v * vplan.scale, float(np.hypot(*vs)), mm_a, mm_a * aplan.scale,
                          float(np.hypot(*as_))])
     # --- accelerations --------------------------------------------------------------------------
-    aA = record(f"a_{{{tip}}}", "omega1**2 * l_OA", "м/с²", omega1, l_oa, meaning=f"ускорение точки {tip}")
-    pia = Var("pia", f"\\pi {tip.lower()}", aA.value / aplan.scale, "мм", f"вектор ускорения точки {tip} на плане")
-    mu_a = record(r"\mu_a", "a_A / pia", "(м/с²)/мм", pia, a_A=aA, meaning="масштабный коэффициент плана ускорений")
+    aA = record(f"a_{{{tip}}}", "omega1**2 * l_OA", "м/с²", omega1, l_oa, meaning=tr("kinematics.m14", tip=tip))
+    pia = Var("pia", f"\\pi {tip.lower()}", aA.value / aplan.scale, "мм", tr("kinematics.m05", tip=tip))
+    mu_a = record(r"\mu_a", "a_A / pia", "(м/с²)/мм", pia, a_A=aA, meaning=tr("kinematics.m15"))
     arows = _plan_rows(aplan)
     # --- tables over all positions ---------------------------------------------------------------
     moving = [k for k in lk.moving if k != d]
@@ -198,17 +198,17 @@ def content(project) -> PartContent:
     if strokes is not None:
         dg = build_diagrams(project.model, strokes, float(project.phi[0]), n=24)
         figures["kin_diagrams"] = diagrams_figure(dg)
-        L = Var("L", "L", dg.axis_mm, "мм", Tex("длина оси $\\varphi_1$, изображающая один оборот кривошипа"))
-        mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
-        mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning="масштабный коэффициент времени")
-        H1 = Var("H1", "H_1", dg.H1, "мм", "полюсное расстояние графика скорости")
-        H2 = Var("H2", "H_2", dg.H2, "мм", "полюсное расстояние графика ускорения")
+        L = Var("L", "L", dg.axis_mm, "мм", Tex(tr("kinematics.m21")))
+        mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("kinematics.m22"))
+        mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning=tr("kinematics.m23"))
+        H1 = Var("H1", "H_1", dg.H1, "мм", tr("kinematics.m16"))
+        H2 = Var("H2", "H_2", dg.H2, "мм", tr("kinematics.m17"))
         unit_s = "м/мм" if dg.unit == "м" else "рад/мм"
-        mu_s = Var("mu_s", r"\mu_s", dg.mu_s, unit_s, "масштабный коэффициент графика перемещений")
+        mu_s = Var("mu_s", r"\mu_s", dg.mu_s, unit_s, tr("kinematics.m18"))
         mu_vd = record(r"\mu_{v}", "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
-                       mu_s, H1, mu_t=mu_t, meaning="масштабный коэффициент графика скорости")
+                       mu_s, H1, mu_t=mu_t, meaning=tr("kinematics.m24"))
         mu_ad = record(r"\mu_{a}", "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
-                       H2, mu_v=mu_vd, mu_t=mu_t, meaning="масштабный коэффициент графика ускорения")
+                       H2, mu_v=mu_vd, mu_t=mu_t, meaning=tr("kinematics.m25"))
         diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "n": dg.n,
                 "dev_v": 100 * dg.v_deviation, "dev_a": 100 * dg.a_deviation, "unit": dg.unit,
                 "vmax": float(np.abs(dg.v).max()), "amax": float(np.abs(dg.a).max())}

@@ -23,7 +23,7 @@ from reportgen.errors import InternalError
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
 
-from . import PartContent
+from . import PartContent, tr
 
 NEEDS = ("structure", "kinematics", "kinetostatics")
 
@@ -86,7 +86,7 @@ def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: Sequen
         expr = " ".join(e for e, _ in chunk).lstrip("+ ").strip()
         named = {k: v for _, d in chunk for k, v in d.items()}
         rec = record(f"\\Sigma^{{({prefix})}}_{{{c // TERMS_PER_RECORD + 1}}}", expr, "Н·мм", **named,
-                     meaning="частичная сумма моментов")
+                     meaning=tr("kinetostatics.m30"))
         parts.append(rec)
         out.append((f"+ S{c // TERMS_PER_RECORD}", {f"S{c // TERMS_PER_RECORD}": rec}))
     return parts, out
@@ -125,7 +125,7 @@ def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counte
         s = sym(t.name)
         F = Var("F", s, mag, "Н", _meaning(t.name, c in read_mags))
         h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
-                Tex(f"плечо силы ${s}$ относительно точки ${centre}$, измеренное на схеме"))
+                Tex(tr("kinetostatics.m31", s=Tex(s), centre=centre)))
         arms_shown.append({"n": n, "name": t.name, "mm": abs(t.arm_mm_measured)})
         out.append((math.copysign(1.0, t.arm_mm_measured), F, h))
     return out, extra, through
@@ -136,22 +136,22 @@ def _meaning(name: str, read: bool) -> Tex:
     m = re.fullmatch(r"(G|Fи|F|Fпс|R)(\d*)(′?)", name.split(",")[0]) if ":" not in name else None
     s = sym(name)
     if name.startswith("Fпс"):
-        return Tex("сила производственного сопротивления")
+        return Tex(tr("kinetostatics.m19"))
     if m and m.group(1) == "G":
-        return Tex(f"сила тяжести звена {m.group(2)}")
+        return Tex(tr("kinetostatics.m20", v1=m.group(2)))
     if m and m.group(1) == "Fи":
-        return Tex(f"сила инерции звена {m.group(2)}" + (", перенесённая на~плечо $h_\\text{{и}}$" if m.group(3) else ""))
+        return Tex(tr("kinetostatics.m32", v1=m.group(2)) + (tr("kinetostatics.m40") if m.group(3) else ""))
     if name.startswith("R"):
-        return Tex(f"реакция ${s}$" + (", найденная по~плану сил предыдущего шага" if read else ""))
+        return Tex(tr("kinetostatics.m33", s=Tex(s)) + (tr("kinetostatics.m41") if read else ""))
     if ":" in name:
-        return Tex(f"одна из~сил пары, заменяющей момент ${sym(name.split(':')[0])}$")
-    return Tex(f"сила ${s}$")
+        return Tex(tr("kinetostatics.m22", v1=Tex(sym(name.split(':')[0]))))
+    return Tex(tr("kinetostatics.m02", s=Tex(s)))
 
 
 def _couples(extra_terms, mu_l: Var, link: int) -> list[tuple[str, dict]]:
     """Couples enter a sum of moments in N·mm as M/μl."""
     return [("+ X / mu_l" if t.moment >= 0 else "- X / mu_l",
-             {"X": Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", f"сумма моментов пар сил на звене {link}"),
+             {"X": Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", tr("kinetostatics.m42", link=link)),
               "mu_l": mu_l}) for t in extra_terms]
 
 
@@ -160,7 +160,7 @@ def _polygon_rows(polygon) -> list[list]:
     for v in list(polygon.vectors) + list(polygon.extra):
         dev = v.deviation_percent if math.isfinite(v.deviation_percent) and v.exact_value > 0 else None
         rows.append([Tex(f"$\\bar {sym(v.name)}$"), _read_mm(polygon, v), v.read_value, v.exact_value,
-                     dev if dev is not None else Tex("---"), "найдена" if not v.known else "задана"])
+                     dev if dev is not None else Tex("---"), tr("kinetostatics.wkin09") if not v.known else tr("kinetostatics.wkin10")])
     return rows
 
 
@@ -187,7 +187,7 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
             continue
         s = sym(v.name)
         ln = Var("len", f"l_{{{s}}}", _read_mm(polygon, v), "мм",
-                 Tex(f"длина вектора ${s}$ на плане сил"))
+                 Tex(tr("kinetostatics.m34", s=Tex(s))))
         rec = record(s, "len * mu_F", "Н", ln, mu_F=mu_f)
         _check(rec, v.read_value, f"the reading of {v.name}")
         recs.append(rec)
@@ -208,7 +208,7 @@ def content(project) -> PartContent:
     q = np.asarray(kin.q)[0]
     counter = _Counter()
     figures: dict = {}
-    mu_l = Var("mu_l", r"\mu_l", g.length_scale, "м/мм", "масштабный коэффициент длин схемы")
+    mu_l = Var("mu_l", r"\mu_l", g.length_scale, "м/мм", tr("kinetostatics.m03"))
 
     loads_ctx = _loads_section(project, ks, mu_l)
     resistance = _resistance(project, ks)
@@ -220,17 +220,17 @@ def content(project) -> PartContent:
         tag = gg.key.replace("-", "_")
         figures[f"kst_group_{tag}"] = kf.free_body_figure(lk, q, grp.links, *_free_body(ks, grp, gg))
         figures[f"kst_poly_{tag}"] = kf.polygon_figure(gg.polygon)
-        mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
+        mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", tr("kinetostatics.m23"))
         splits = []
         for sp in gg.splits:
             arms: list = []
             terms, extra, through = _arm_terms(sp.terms, read_mags, sp.centre, counter, arms)
             P = _pair_letter(r, sp, gg.key)
             l = Var("l", f"{P}{sp.centre}", sp.length_mm_measured, "мм",
-                    f"длина звена {P}{sp.centre} на схеме")
+                    tr("kinetostatics.m35", P=P, v2=sp.centre))
             parts, items = _sum_records(terms, f"{sp.link}", _couples(extra, mu_l, sp.link))
             rec = _final(f"R^{{\\tau}}_{{{sp.name[1:]}}}", items, ("l", l), "Н", False,
-                         Tex(f"касательная составляющая реакции ${sym(sp.name)}$"))
+                         Tex(tr("kinetostatics.m43", v1=Tex(sym(sp.name)))))
             _check(rec, sp.tau_measured, f"R^τ {sp.name}")
             splits.append({"name": sp.name, "link": sp.link, "centre": sp.centre, "pair": P, "parts": parts,
                            "rec": rec, "terms": terms, "through": [Tex(f"${sym(x)}$") for x in through],
@@ -252,7 +252,7 @@ def content(project) -> PartContent:
     cycle = _cycle(project, ks, figures)
     warnings = [{"group": gk, "label": by_key[gk].label, "mu": mu} for gk, mu in ks.transmission_deg.items()
                 if mu < WARN_TRANSMISSION_DEG]
-    ctx = {"pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
+    ctx = {"has_dynamics": project.task.dynamics is not None, "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
            "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky, "disc": ks.discrepancy_percent,
@@ -286,35 +286,35 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
     """Per link: G = m·g, Fи = m·a_S, Mи = J_S·ε, and the replacement h = Mи/Fи."""
     lk = project.linkage
     kin = ks.reactions.kin
-    gvar = Var("g", "g", lk.g, "м/с²", "ускорение свободного падения")
+    gvar = Var("g", "g", lk.g, "м/с²", tr("kinetostatics.m04"))
     repl = {x.link: x for x in ks.graphical.inertia}
     links, rows = [], []
     for k in lk.moving:
         b = lk.bodies[k]
         if b.mass <= 0 and b.inertia <= 0:
             continue
-        m = Var("m", f"m_{{{k}}}", b.mass, "кг", f"масса звена {k}")
+        m = Var("m", f"m_{{{k}}}", b.mass, "кг", tr("kinetostatics.m24", k=k))
         ent: dict = {"k": k, "G": None, "F": None, "M": None, "h": None, "h_mm": None, "repl": None}
         a_s = float(np.hypot(*np.asarray(kin.coms[k].acc)[0]))
         eps = abs(float(np.asarray(kin.links[k].epsilon)[0]))
         if b.mass > 0:
             if lk.g:
-                ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=f"сила тяжести звена {k}")
-            aS = Var("a", f"a_{{S{k}}}", a_s, "м/с²", f"ускорение центра масс звена {k}")
-            ent["F"] = record(f"F_{{\\text{{и}}{k}}}", "m * a", "Н", m, aS, meaning=f"сила инерции звена {k}")
+                ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=tr("kinetostatics.m57", k=k))
+            aS = Var("a", f"a_{{S{k}}}", a_s, "м/с²", tr("kinetostatics.m36", k=k))
+            ent["F"] = record(f"F_{{\\text{{и}}{k}}}", "m * a", "Н", m, aS, meaning=tr("kinetostatics.m44", k=k))
         if b.inertia > 0 and eps > 0:
-            J = Var("J", f"J_{{S{k}}}", b.inertia, "кг·м²", f"момент инерции звена {k} относительно центра масс")
-            e = Var("eps", f"\\varepsilon_{{{k}}}", eps, "рад/с²", f"угловое ускорение звена {k}")
-            ent["M"] = record(f"M_{{\\text{{и}}{k}}}", "J * eps", "Н·м", J, e, meaning=f"момент сил инерции звена {k}")
+            J = Var("J", f"J_{{S{k}}}", b.inertia, "кг·м²", tr("kinetostatics.m37", k=k))
+            e = Var("eps", f"\\varepsilon_{{{k}}}", eps, "рад/с²", tr("kinetostatics.m38", k=k))
+            ent["M"] = record(f"M_{{\\text{{и}}{k}}}", "J * eps", "Н·м", J, e, meaning=tr("kinetostatics.m45", k=k))
         if k in repl and ent["F"] is not None and ent["M"] is not None:
             x = repl[k]
             h = record(f"h_{{\\text{{и}}{k}}}", "M / F", "м", M=ent["M"], F=ent["F"],
-                       meaning=f"плечо переноса силы инерции звена {k}")
+                       meaning=tr("kinetostatics.m46", k=k))
             ent["h"] = h
             ent["h_mm"] = record(f"h_{{\\text{{и}}{k}}}^{{\\text{{сх}}}}", "h / mu_l", "мм", mu_l, h=h,
-                                 meaning="плечо переноса на схеме")
+                                 meaning=tr("kinetostatics.m47"))
             ent["repl"] = {"measured": x.h_mm_measured, "swing": x.swing_point is not None,
-                           "sense": "против" if x.moment > 0 else "по"}
+                           "sense": "ccw" if x.moment > 0 else "cw"}
         links.append(ent)
         rows.append([k, b.mass, b.inertia, ent["G"].value if ent["G"] else 0.0, a_s,
                      ent["F"].value if ent["F"] else 0.0, eps, ent["M"].value if ent["M"] else 0.0,
@@ -357,19 +357,19 @@ def _resistance(project, ks) -> list[dict]:
         if on and travel != 0:
             s_val = abs(x - float(xe[0])) if working else abs(float(xe[1]) - x)
             unit = "м" if kind == "slider" else "рад"
-            s = Var("s", "s", s_val, unit, "перемещение выходного звена от начала хода" if kind == "slider"
-                    else "угол поворота выходного звена от начала хода")
-            H = Var("H", "H", abs(travel), unit, "полный ход выходного звена" if kind == "slider"
-                    else "размах выходного звена")
-            frac = record("s/H", "s / H", "", s, H, meaning="доля пройденного хода")
+            s = Var("s", "s", s_val, unit, tr("kinetostatics.m48") if kind == "slider"
+                    else tr("kinetostatics.m49"))
+            H = Var("H", "H", abs(travel), unit, tr("kinetostatics.m50") if kind == "slider"
+                    else tr("kinetostatics.m51"))
+            frac = record("s/H", "s / H", "", s, H, meaning=tr("kinetostatics.m52"))
             kf = float(law_value(ld.law, np.array([frac.value]))[0])
-            kv = Var("k", "k", kf, "", Tex("доля наибольшего сопротивления по~закону нагружения"))
+            kv = Var("k", "k", kf, "", Tex(tr("kinetostatics.m53")))
             if is_force:
-                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", ld.force, "Н", "наибольшая сила сопротивления")
-                rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning="сила производственного сопротивления")
+                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", ld.force, "Н", tr("kinetostatics.m54"))
+                rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning=tr("kinetostatics.m58"))
             else:
-                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", ld.moment, "Н·м", "наибольший момент сопротивления")
-                rec = record("M_{\\text{пс}}", "Mmax * k", "Н·м", mmax, kv, meaning="момент производственного сопротивления")
+                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", ld.moment, "Н·м", tr("kinetostatics.m55"))
+                rec = record("M_{\\text{пс}}", "Mmax * k", "Н·м", mmax, kv, meaning=tr("kinetostatics.m59"))
             _check(rec, value, "the production resistance")
             ent.update(rec=rec, frac=frac, kfac=kf)
         out.append(ent)
@@ -455,16 +455,16 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     arms: list = []
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
     OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
-             f"длина кривошипа {r.crank_axis}{r.crank_pin} на схеме")
+             tr("kinetostatics.m05", v1=r.crank_axis, v2=r.crank_pin))
     parts, items = _sum_records(terms, "1", _couples(extra, mu_l, d))
-    F = _final("F_{\\text{ур}}", items, ("l", OA), "Н", True, "уравновешивающая сила, приложенная в точке "
-               + r.crank_pin + " перпендикулярно кривошипу")
+    F = _final("F_{\\text{ур}}", items, ("l", OA), "Н", True, tr("kinetostatics.m39")
+               + r.crank_pin + tr("kinetostatics.m26"))
     _check(F, c.balancing_force_measured, "F_ур (groups)")
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
-               "м", f"длина кривошипа {r.crank_axis}{r.crank_pin}")
-    M = record("M_{\\text{ур}}", "F * l_OA", "Н·м", l_oa, F=F, meaning="уравновешивающий момент")
+               "м", tr("kinetostatics.m07", v1=r.crank_axis, v2=r.crank_pin))
+    M = record("M_{\\text{ур}}", "F * l_OA", "Н·м", l_oa, F=F, meaning=tr("kinetostatics.m27"))
     _check(M, c.balancing_moment_measured, "M_ур (groups)")
-    mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
+    mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", tr("kinetostatics.m09"))
     eq = [f"-F_{{\\text{{ур}}}} \\cdot {OA.latex}"] + [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}"
                                                       for s, Fv, h in terms]
     return {"F": F, "M": M, "parts": parts, "through": [Tex(f"${sym(x)}$") for x in through],
@@ -511,26 +511,26 @@ def _lever(project, ks, counter, figures) -> dict:
             s = sym(t.name)
             Fv = Var("F", s, t.magnitude, "Н", _meaning(t.name, False))
             h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
-                    Tex(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
+                    Tex(tr("kinetostatics.m56", s=Tex(s))))
             sign = -math.copysign(1.0, t.arm_mm_measured) * (1.0 if lev.omega1 >= 0 else -1.0)
             terms.append((sign, Fv, h))
             ent["h"] = f"h_{{{n}}}"
         loads.append(ent)
-    mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", "масштабный коэффициент повёрнутого плана скоростей")
+    mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", tr("kinetostatics.m10"))
     extra = [("- X / mu_v" if (p >= 0) == (lev.omega1 >= 0) else "+ X / mu_v",
-              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Tex(f"мощность пары ${sym(name)}$")), "mu_v": mu})
+              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Tex(tr("kinetostatics.m60", v1=Tex(sym(name))))), "mu_v": mu})
              for name, p in L.direct if p != 0.0]
     parts, items = _sum_records(terms, "\\text{Ж}", extra)
     pa = Var("pa", f"p{r.crank_pin.lower()}", L.pa_mm_measured, "мм",
-             f"отрезок плана, изображающий скорость точки {r.crank_pin}")
+             tr("kinetostatics.m11", v1=r.crank_pin))
     F = _final("F_{\\text{ур}}^{\\text{Ж}}", items, ("pa", pa), "Н", False,
-               "уравновешивающая сила по рычагу Жуковского")
+               tr("kinetostatics.m12"))
     _check(F, L.balancing_force_measured, "F_ур (lever)")
     fp = next(p for p in r.pairs if p.group == str(r.crank))
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
-               "м", f"длина кривошипа {r.crank_axis}{r.crank_pin}")
+               "м", tr("kinetostatics.m14", v1=r.crank_axis, v2=r.crank_pin))
     M = record("M_{\\text{ур}}^{\\text{Ж}}", "F * l_OA", "Н·м", l_oa, F=F,
-               meaning="уравновешивающий момент по рычагу Жуковского")
+               meaning=tr("kinetostatics.m28"))
     _check(M, L.balancing_moment_measured, "M_ур (lever)")
     figures["kst_lever"] = kf.lever_figure(points, segments, loads)
     eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
@@ -543,9 +543,9 @@ def _lever(project, ks, counter, figures) -> dict:
 
 
 def _comparison(ks, crank, lever) -> dict:
-    Fg = Var("F_g", "F_{\\text{ур}}", crank["F"].value, "Н", "уравновешивающая сила по планам сил")
-    Fz = Var("F_z", "F_{\\text{ур}}^{\\text{Ж}}", lever["F"].value, "Н", "уравновешивающая сила по рычагу Жуковского")
-    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "\\%", Fg, Fz, meaning="расхождение методов")
+    Fg = Var("F_g", "F_{\\text{ур}}", crank["F"].value, "Н", tr("kinetostatics.m16"))
+    Fz = Var("F_z", "F_{\\text{ур}}^{\\text{Ж}}", lever["F"].value, "Н", tr("kinetostatics.m17"))
+    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "%", Fg, Fz, meaning=tr("kinetostatics.m29"))
     _check(delta, ks.graphical.discrepancy_percent, "the graphical discrepancy")
     return {"delta": delta}
 

@@ -15,6 +15,7 @@ from reportgen.calc import CalcRecord, Var
 from reportgen.planetary.schemes import expand
 
 from . import PartContent
+from . import tr as _t
 from .gear_pair import _rec
 
 NEEDS = ("planetary",)
@@ -27,11 +28,11 @@ def available(project) -> bool:
 def _zvars(design) -> dict[str, Var]:
     sch = design.scheme
     z1, z2, z2p, z3 = expand(sch, design.z)
-    v = {"z1": Var("z1", "z_1", z1, "", "число зубьев центрального колеса 1"),
-         "z2": Var("z2", "z_2", z2, "", "число зубьев сателлита 2"),
-         "z3": Var("z3", "z_3", z3, "", "число зубьев неподвижного центрального колеса 3")}
+    v = {"z1": Var("z1", "z_1", z1, "", _t("planetary.m22")),
+         "z2": Var("z2", "z_2", z2, "", _t("planetary.m23")),
+         "z3": Var("z3", "z_3", z3, "", _t("planetary.m24"))}
     if sch.two_row:
-        v["z2p"] = Var("z2p", "z_{2'}", z2p, "", "число зубьев венца 2′ сателлита")
+        v["z2p"] = Var("z2p", "z_{2'}", z2p, "", _t("planetary.m25"))
     return v
 
 
@@ -52,42 +53,42 @@ def planetary_records(stage) -> dict[str, object]:
     r: dict[str, object] = {}
     drive = stage.drive
     if drive is not None:
-        n = Var("n", r"n_\text{дв}", drive.motor_rpm, "об/мин", "частота вращения вала двигателя")
-        r["omega_m"] = _rec(r"\omega_\text{дв}", "pi * n / 30", "рад/с", 3, "угловая скорость вала двигателя", n=n)
-        za = Var("za", "z_a", drive.z1_open, "", "число зубьев шестерни открытой передачи")
-        zb = Var("zb", "z_b", drive.z2_open, "", "число зубьев колеса открытой передачи")
-        w1 = Var("w1", r"\omega_\text{кр}", drive.omega_crank, "рад/с", "угловая скорость кривошипа")
-        r["u_req"] = _rec(r"u_\text{тр}", "za * wm / (zb * w1)", "", 3, "требуемое передаточное отношение редуктора",
+        n = Var("n", r"n_\text{дв}", drive.motor_rpm, "об/мин", _t("planetary.m26"))
+        r["omega_m"] = _rec(r"\omega_\text{дв}", "pi * n / 30", "рад/с", 3, _t("planetary.m27"), n=n)
+        za = Var("za", "z_a", drive.z1_open, "", _t("planetary.m28"))
+        zb = Var("zb", "z_b", drive.z2_open, "", _t("planetary.m29"))
+        w1 = Var("w1", r"\omega_\text{кр}", drive.omega_crank, "рад/с", _t("planetary.m30"))
+        r["u_req"] = _rec(r"u_\text{тр}", "za * wm / (zb * w1)", "", 3, _t("planetary.m31"),
                           za=za, wm=r["omega_m"], zb=zb, w1=w1)
     names = {k: v for k, v in zv.items() if k in willis_expr(d)}
-    r["u1h"] = _rec("u_{1H}^{(3)}", willis_expr(d), "", 4, "передаточное отношение от колеса 1 к водилу", **names)
+    r["u1h"] = _rec("u_{1H}^{(3)}", willis_expr(d), "", 4, _t("planetary.m02"), **names)
     u_main = cast(CalcRecord, r["u1h"])
     if d.driver == "carrier":
-        r["uh1"] = _rec("u_{H1}^{(3)}", "1 / u1h", "", 4, "передаточное отношение от водила к колесу 1", u1h=r["u1h"])
+        r["uh1"] = _rec("u_{H1}^{(3)}", "1 / u1h", "", 4, _t("planetary.m32"), u1h=r["u1h"])
         u_main = cast(CalcRecord, r["uh1"])
-    target = Var("ut", r"u_\text{тр}", stage.target, "", "требуемое передаточное отношение")
+    target = Var("ut", r"u_\text{тр}", stage.target, "", _t("planetary.m03"))
     u_shown = Var("u", u_main.symbol, round(abs(u_main.value), 4), "")
-    r["deviation"] = _rec(r"\delta_u", "(u - ut) / ut * 100", "%", 2, "отклонение передаточного отношения",
-                          u=u_shown, ut=Var("ut", r"u_\text{тр}", round(stage.target, 3), "", "требуемое передаточное отношение"))
+    r["deviation"] = _rec(r"\delta_u", "(u - ut) / ut * 100", "%", 2, _t("planetary.m04"),
+                          u=u_shown, ut=Var("ut", r"u_\text{тр}", round(stage.target, 3), "", _t("planetary.m41")))
     r["target"] = target
     # adjacency: (2a/m)·sin(π/K) > z_p + 2ha*, and the course's K limit; 2a/m = z1 ± z2
     adj = d.adjacency
     centre = "z1 + z2" if sch.row1 == "external" else "z1 - z2"
     pz = "z2" if adj.planet_label == "2" else "z2p"
     ha = Var("ha", r"h_a^*", adj.ha, "")
-    K = Var("K", "K", adj.satellites, "", "число сателлитов")
+    K = Var("K", "K", adj.satellites, "", _t("planetary.m05"))
     r["adj_left"] = _rec(r"\frac{2a}{m}\sin\frac{\pi}{K}", f"({centre}) * sin(pi / K)", "", 3, "",
                          z1=zv["z1"], z2=zv["z2"], K=K)
     r["adj_right"] = _rec(r"z_p + 2h_a^*", f"{pz} + 2 * ha", "", 3, "", ha=ha, **{pz: zv[pz]})
     if adj.planet_z + 2 * adj.ha < adj.centre_sum:
         names = {pz: zv[pz], "z1": zv["z1"], "z2": zv["z2"]}
         r["k_limit"] = _rec(r"K_{\max}", f"180 / degrees(asin(({pz} + 2 * ha) / ({centre})))", "", 3,
-                            "наибольшее число сателлитов по условию соседства", ha=ha, **names)
+                            _t("planetary.m33"), ha=ha, **names)
     # assembly quotient
     asm = d.assembly
     if sch.two_row:
         sign = "+" if asm.sign == "+" else "-"
-        g = Var("g", r"\text{НОД}(z_2, z_{2'})", asm.g, "", "наибольший общий делитель чисел зубьев венцов сателлита")
+        g = Var("g", r"\text{НОД}(z_2, z_{2'})", asm.g, "", _t("planetary.m34"))
         expr = f"(z1 * z2p {sign} z3 * z2) / (K * g)" if sign == "+" else "abs(z1 * z2p - z3 * z2) / (K * g)"
         r["assembly"] = _rec("C", expr, "", 4, "", z1=zv["z1"], z2p=zv["z2p"], z3=zv["z3"], z2=zv["z2"], K=K, g=g)
     else:
@@ -99,39 +100,39 @@ def triangle_records(stage, u_main: CalcRecord) -> dict[str, CalcRecord]:
     tri = stage.triangle
     d = stage.design
     z1 = expand(d.scheme, d.z)[0]
-    m = Var("m", "m", tri.module, "мм", "модуль колёс редуктора")
+    m = Var("m", "m", tri.module, "мм", _t("planetary.m06"))
     r: dict[str, CalcRecord] = {}
-    w1 = Var("w1", r"\omega_1", abs(tri.omega1), "рад/с", "угловая скорость колеса 1")
-    r["r1"] = _rec("r_1", "m * z1 / 2", "мм", 3, "радиус делительной окружности колеса 1", m=m,
+    w1 = Var("w1", r"\omega_1", abs(tri.omega1), "рад/с", _t("planetary.m07"))
+    r["r1"] = _rec("r_1", "m * z1 / 2", "мм", 3, _t("planetary.m08"), m=m,
                    z1=Var("z1", "z_1", z1, ""))
     del z1
     zv = _zvars(d)
     centre = "z1 + z2" if d.scheme.row1 == "external" else "z1 - z2"
-    r["a"] = _rec("a", f"m * ({centre}) / 2", "мм", 3, "межосевое расстояние (радиус оси сателлитов)", m=m,
+    r["a"] = _rec("a", f"m * ({centre}) / 2", "мм", 3, _t("planetary.m09"), m=m,
                   z1=zv["z1"], z2=zv["z2"])
-    r["v_a"] = _rec("v_A", "w1 * r1 / 1000", "м/с", 4, "скорость точки A", w1=w1, r1=r["r1"])
-    la = Var("la", r"\overline{pa}", tri.vector_mm, "мм", "длина вектора скорости точки A на чертеже")
-    r["mu_v"] = _rec(r"\mu_v", "v_a / la", "(м/с)/мм", 4, "масштаб скоростей", v_a=r["v_a"], la=la)
-    lb = Var("lb", r"\overline{pb}", abs(tri.v_b_mm_read), "мм", "длина вектора скорости точки B, измеренная на чертеже")
-    r["v_b"] = _rec("v_B", "mu_v * lb", "м/с", 4, "скорость точки B (оси сателлита)", mu_v=r["mu_v"], lb=lb)
-    r["omega_h"] = _rec(r"\omega_H", "v_b / (a / 1000)", "рад/с", 4, "угловая скорость водила", v_b=r["v_b"], a=r["a"])
+    r["v_a"] = _rec("v_A", "w1 * r1 / 1000", "м/с", 4, _t("planetary.m10"), w1=w1, r1=r["r1"])
+    la = Var("la", r"\overline{pa}", tri.vector_mm, "мм", _t("planetary.m11"))
+    r["mu_v"] = _rec(r"\mu_v", "v_a / la", "(м/с)/мм", 4, _t("planetary.m12"), v_a=r["v_a"], la=la)
+    lb = Var("lb", r"\overline{pb}", abs(tri.v_b_mm_read), "мм", _t("planetary.m13"))
+    r["v_b"] = _rec("v_B", "mu_v * lb", "м/с", 4, _t("planetary.m14"), mu_v=r["mu_v"], lb=lb)
+    r["omega_h"] = _rec(r"\omega_H", "v_b / (a / 1000)", "рад/с", 4, _t("planetary.m15"), v_b=r["v_b"], a=r["a"])
     if d.driver == "wheel":
-        r["u_graph"] = _rec(r"u_\text{гр}", "w1 / wh", "", 4, "передаточное отношение по построению",
+        r["u_graph"] = _rec(r"u_\text{гр}", "w1 / wh", "", 4, _t("planetary.m35"),
                             w1=w1, wh=r["omega_h"])
     else:
-        r["u_graph"] = _rec(r"u_\text{гр}", "wh / w1", "", 4, "передаточное отношение по построению",
+        r["u_graph"] = _rec(r"u_\text{гр}", "wh / w1", "", 4, _t("planetary.m36"),
                             w1=w1, wh=r["omega_h"])
     ug = Var("ug", r"u_\text{гр}", round(r["u_graph"].value, 4), "")
     ua = Var("ua", u_main.symbol, round(abs(u_main.value), 4), "")
     r["diff"] = _rec(r"\Delta u", "(ug - ua) / ua * 100", "%", 3, "", ug=ug, ua=ua)
     plan = tri.plan
     cuts = dict(plan.cuts)
-    x1 = Var("x1", r"\overline{p1}", abs(cuts["1"]), "мм", "отрезок луча колеса 1 на плане угловых скоростей")
-    xh = Var("xh", r"\overline{pH}", abs(cuts["H"]), "мм", "отрезок луча водила на плане угловых скоростей")
+    x1 = Var("x1", r"\overline{p1}", abs(cuts["1"]), "мм", _t("planetary.m16"))
+    xh = Var("xh", r"\overline{pH}", abs(cuts["H"]), "мм", _t("planetary.m17"))
     if d.driver == "wheel":
-        r["u_plan"] = _rec(r"u_\text{пл}", "x1 / xh", "", 4, "передаточное отношение по плану угловых скоростей", x1=x1, xh=xh)
+        r["u_plan"] = _rec(r"u_\text{пл}", "x1 / xh", "", 4, _t("planetary.m37"), x1=x1, xh=xh)
     else:
-        r["u_plan"] = _rec(r"u_\text{пл}", "xh / x1", "", 4, "передаточное отношение по плану угловых скоростей", x1=x1, xh=xh)
+        r["u_plan"] = _rec(r"u_\text{пл}", "xh / x1", "", 4, _t("planetary.m38"), x1=x1, xh=xh)
     return r
 
 
@@ -152,9 +153,9 @@ def content(project) -> PartContent:
     crank = None
     if check is not None:
         drive = stage.drive
-        ua = Var("ua", r"u_\text{откр}", drive.open_ratio, "", "передаточное число открытой передачи")
+        ua = Var("ua", r"u_\text{откр}", drive.open_ratio, "", _t("planetary.m39"))
         uu = Var("u", "u", abs(d.ratio), "")
-        w = _rec(r"\omega_\text{кр}'", "wm / (ua * u)", "рад/с", 4, "достигнутая угловая скорость кривошипа",
+        w = _rec(r"\omega_\text{кр}'", "wm / (ua * u)", "рад/с", 4, _t("planetary.m40"),
                  wm=r["omega_m"], ua=ua, u=uu)
         ws = Var("ws", r"\omega_\text{кр}'", round(w.value, 4), "рад/с")
         w1 = Var("w1", r"\omega_\text{кр}", round(drive.omega_crank, 4), "рад/с")
@@ -168,8 +169,8 @@ def content(project) -> PartContent:
         alternatives.append(("/".join(str(v) for v in cand.z), cand.satellites, abs(cand.ratio),
                              100 * cand.deviation, cand.size))
     undercut = []
-    kinds = {"external": "колесо с~внешними зубьями", "internal": "колесо с~внутренними зубьями",
-             "internal mesh": "разность чисел зубьев во~внутреннем зацеплении"}
+    kinds = {"external": _t("planetary.m18"), "internal": _t("planetary.m19"),
+             "internal mesh": _t("planetary.m20")}
     for it in d.undercut.items:
         what = it.what.replace("′", "'")
         if it.kind == "internal mesh":
@@ -209,10 +210,9 @@ def _conclusion(stage, tr) -> str:
     from latex_templates.numbers import mnum
     d = stage.design
     zs = ", ".join(f"$z_{{{lab.replace('′', chr(39))}}} = {zz}$" for lab, zz in zip(d.scheme.labels, d.z))
-    text = (f"Подобран планетарный редуктор ({d.scheme.title_ru}): {zs}, число сателлитов $K = {d.satellites}$; "
-            f"передаточное отношение $u = {mnum(abs(d.ratio), 5)}$ при~требуемом ${mnum(stage.target, 5)}$ "
-            f"(отклонение ${mnum(100 * d.ratio_check.deviation, 3)}$~\\%).")
+    text = _t("planetary.m01", v1=_t("planetary_schemes." + d.scheme.name), zs=Tex(zs), v3=d.satellites,
+              v4=Tex(mnum(abs(d.ratio), 5)), v5=Tex(mnum(stage.target, 5)),
+              v6=Tex(mnum(100 * d.ratio_check.deviation, 3)))
     if tr is not None:
-        text += (f" По~треугольнику скоростей $u_\\text{{гр}} = {mnum(tr['u_graph'].value, 5)}$ "
-                 f"(расхождение ${tr['diff'].result_number_latex()}$~\\%).")
+        text += _t("planetary.m21", v1=Tex(mnum(tr['u_graph'].value, 5)), v2=Tex(tr['diff'].result_number_latex()))
     return Tex(text)

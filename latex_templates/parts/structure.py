@@ -6,13 +6,9 @@ import numpy as np
 
 from reportgen.calc import Var, record
 
-from . import PartContent
+from . import PartContent, strings_of
 
 NEEDS = ("structure",)
-
-MOTION = {"crank": "вращательное", "rocker": "вращательное (качательное)", "slotted": "вращательное (качательное)",
-          "coupler": "плоскопараллельное", "slider": "поступательное", "block": "плоскопараллельное"}
-
 
 def available(project) -> bool:
     return project.task.mechanism is not None
@@ -44,11 +40,12 @@ def content(project) -> PartContent:
             pairs.append({"bodies": f"{j.bodies[0]}–{other}", "point": j.name, "kind": "R"})
     for s in lk.slides:
         pairs.append({"bodies": f"{s.guide}–{s.link}", "point": s.point, "kind": "P"})
-    n = Var("n", "n", st.n, "", "число подвижных звеньев")
-    p1 = Var("p1", "p_1", st.p1, "", "число одноподвижных (низших) кинематических пар")
-    p2 = Var("p2", "p_2", st.p2, "", "число двухподвижных (высших) кинематических пар")
+    S = strings_of(project)
+    n = Var("n", "n", st.n, "", S.text("structure.var_n"))
+    p1 = Var("p1", "p_1", st.p1, "", S.text("structure.var_p1"))
+    p2 = Var("p2", "p_2", st.p2, "", S.text("structure.var_p2"))
     W = record("W", "3 * n - 2 * p1 - p2", "", n, p1, p2, label="eq:chebyshev",
-               meaning="степень подвижности механизма")
+               meaning=S.text("structure.var_W"))
     q0 = np.asarray(project.kinematics.q)[0]
     figures = {"structure_scheme": scheme_figure(lk, q0)}
     groups = []
@@ -63,8 +60,7 @@ def content(project) -> PartContent:
     ctx = {"links": links, "pairs": pairs, "W": W, "structure": st, "groups": groups,
            "formula": st.formula, "driver": st.groups[0].links[0]}
     from ..render import Tex
-    from ..render import Strings
-    strings = Strings(project.task.document.language or "ru")
+    strings = S
     conclusions = (strings.get("findings.structure").format(W=st.W, formula=st.formula,
                                                              cls=Tex(_roman(st.mechanism_class))),)
     return PartContent("sections/structure.tex.j2", ctx, figures, conclusions)

@@ -43,8 +43,9 @@ def register(sub) -> None:
 
 
 def _designation(task) -> str:
-    """The designation of the note: [document] code with « ПЗ» (reportgen.task.Document.note_code)."""
-    return task.document.note_code()
+    """The designation of the note: [document] code with the language's suffix (« ПЗ»; docs/languages.md)."""
+    from latex_templates.render import Strings
+    return Strings(task.document.language or "ru").designation(task.document)
 
 
 def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, sheets: bool = True,

@@ -157,8 +157,9 @@ def _note(project: Any, tmp: Path, timeline: Timeline) -> Path:
         with timeline.stage("note: sections and figures"):
             return note_builder(project).render(tmp)
     with timeline.stage("note: sections and figures"):
-        sections, left_out = compose(project, Strings(project.task.document.language or "ru"))
-        note = NoteBuilder(project.task.document, designation=project.task.document.note_code(),
+        strings = Strings(project.task.document.language or "ru")
+        sections, left_out = compose(project, strings)
+        note = NoteBuilder(project.task.document, designation=strings.designation(project.task.document),
                            introduction=introduction_paragraphs(project, left_out),
                            conclusions=[c for s in sections for c in s.conclusions],
                            assignment=assignment_section(project))
@@ -182,13 +183,15 @@ def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any
                 lane: str = SHEETS) -> Iterator[Span]:
     """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
     from drawings.preview import render_png
+    from drawings.words import language
 
     folder = tmp / "sheets"
     folder.mkdir(exist_ok=True)
     for i, (stem, mod) in enumerate(todo, start=1):
         name = f"sheet {i}: {stem}"
         t0 = time.perf_counter()
-        sheet = mod.draw(project, i, len(todo))
+        with language(project.task.document.language):       # the sheet's words in the task's language
+            sheet = mod.draw(project, i, len(todo))
         dxf = folder / f"{stem}.dxf"
         png = folder / f"{stem}.png"
         sheet.save(dxf)

@@ -11,9 +11,15 @@ from reportgen.project import Project
 from reportgen.taskfile import load_task
 
 ROOT = Path(__file__).resolve().parents[2]
-#: The examples with a linkage (examples/crane-hoist is another kind of document, docs/crane.md).
+def _russian(path) -> bool:
+    """The examples written in Russian (these tests read Russian text; tests/lang covers uk and en)."""
+    import tomllib
+    return tomllib.loads(path.read_text(encoding="utf-8")).get("document", {}).get("language", "ru") == "ru"
+
+
+#: Russian examples with a linkage (examples/crane-hoist is another kind of document, docs/crane.md).
 EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
-                  if "\n[mechanism]" in "\n" + p.read_text(encoding="utf-8"))
+                  if _russian(p) and "\n[mechanism]" in "\n" + p.read_text(encoding="utf-8"))
 
 
 def project_of(example: str) -> Project:

@@ -1,0 +1,165 @@
+"""The strings catalogues: the same keys in every language, every key the code asks for exists,
+a missing key is an error that names key and language, numeral agreement, the per-language
+notation (subscripts, units, decimal mark)."""
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+import jinja2
+import pytest
+
+from latex_templates.render import (LANGUAGES, MissingString, Strings, make_environment, plural_index)
+
+ROOT = Path(__file__).resolve().parents[2]
+STRINGS = ROOT / "latex_templates" / "strings"
+#: Tables only the non-Russian catalogues have (Russian notation is the canonical one).
+NOTATION = ("subscripts", "units", "format")
+
+
+def _keys(table, prefix=""):
+    for k, v in table.items():
+        if isinstance(v, dict) and not (prefix == "" and k in NOTATION):
+            yield from _keys(v, f"{prefix}{k}.")
+        elif not (prefix == "" and k in NOTATION):
+            yield prefix + k
+
+
+def _catalogue(lang: str) -> dict:
+    from latex_templates.render import _load_strings
+    return _load_strings(lang)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_same_keys_in_every_language(lang):
+    ru = set(_keys(_catalogue("ru")))
+    other = set(_keys(_catalogue(lang)))
+    assert not ru - other, f"missing in {lang}: {sorted(ru - other)[:20]}"
+    assert not other - ru, f"only in {lang}: {sorted(other - ru)[:20]}"
+
+
+def test_plural_forms_per_language():
+    for lang, n_forms in (("ru", 3), ("uk", 3), ("en", 2)):
+        words = _catalogue(lang)["words"]
+        for key, forms in words.items():
+            assert isinstance(forms, list) and len(forms) == n_forms, (lang, key, forms)
+
+
+_KEY_CALL = re.compile(r"""\b(?:tr|t|s\.get|strings\.get|S\.text|strings\.text|_t)\(\s*["']([a-z_]+\.[A-Za-z0-9_.\-]+)["']""")
+
+
+def _referenced_keys() -> set[str]:
+    keys = set()
+    for folder in ("latex_templates", "drawings", "reportgen"):
+        for path in (ROOT / folder).rglob("*"):
+            if path.suffix in (".py", ".j2", ".toml") and path.name != "render.py":
+                keys.update(_KEY_CALL.findall(path.read_text(encoding="utf-8")))
+    # keys built at run time ("structure.motion." ~ kind): their tables are checked by the key parity
+    return {k for k in keys if not k.endswith((".", "_"))}
+
+
+def test_every_key_the_code_names_exists_in_every_language():
+    keys = _referenced_keys()
+    assert len(keys) > 300, len(keys)           # the scan sees the code's keys
+    for lang in LANGUAGES:
+        s = Strings(lang)
+        missing = sorted(k for k in keys if not s.has(k))
+        assert not missing, f"{lang}: {missing[:20]}"
+
+
+def test_scheme_names_of_the_solver_have_words():
+    from reportgen.planetary.schemes import SCHEMES
+    for lang in LANGUAGES:
+        for name in SCHEMES:
+            assert Strings(lang).has(f"planetary_schemes.{name}"), (lang, name)
+
+
+def test_missing_key_is_an_error_naming_key_and_language():
+    with pytest.raises(MissingString) as exc:
+        Strings("uk").get("kinematics.no_such_sentence")
+    assert "kinematics.no_such_sentence" in str(exc.value) and "'uk'" in str(exc.value)
+    from reportgen.errors import InternalError
+    assert isinstance(exc.value, InternalError) and isinstance(exc.value, KeyError)   # a defect: exit 1
+    # in a template too (no fallback to Russian)
+    env = make_environment()
+    tpl = env.from_string(r"\VAR{t('headings.nonexistent')}")
+    with pytest.raises(MissingString, match="headings.nonexistent"):
+        tpl.render(s=Strings("en"))
+
+
+def test_a_snippet_sees_the_callers_context_and_arguments():
+    env = make_environment()
+    tpl = env.from_string(r"\VAR{t('kinematics.m06', k=3)}; \VAR{n|count('words.equal_intervals')}")
+    assert tpl.render(s=Strings("ru"), n=24) == "угловая скорость звена 3; 24~равных участка"
+    assert tpl.render(s=Strings("uk"), n=5) == "кутова швидкість ланки 3; 5~рівних ділянок"
+    assert tpl.render(s=Strings("en"), n=1) == "angular velocity of link 3; 1~equal interval"
+
+
+@pytest.mark.parametrize("n, ru, uk, en", [
+    (1, 0, 0, 0), (2, 1, 1, 1), (4, 1, 1, 1), (5, 2, 2, 1), (11, 2, 2, 1), (12, 2, 2, 1), (14, 2, 2, 1),
+    (21, 0, 0, 1), (22, 1, 1, 1), (24, 1, 1, 1), (25, 2, 2, 1), (111, 2, 2, 1), (0, 2, 2, 1), (2.5, 1, 1, 1),
+])
+def test_plural_index(n, ru, uk, en):
+    assert (plural_index("ru", n), plural_index("uk", n), plural_index("en", n)) == (ru, uk, en)
+
+
+def test_numeral_agreement_words():
+    ru, uk, en = Strings("ru"), Strings("uk"), Strings("en")
+    assert [str(ru.plural(n, "words.equal_intervals")) for n in (1, 3, 24, 5)] == \
+        ["равный участок", "равных участка", "равных участка", "равных участков"]
+    assert [str(uk.plural(n, "words.equal_intervals")) for n in (1, 3, 5)] == \
+        ["рівну ділянку", "рівні ділянки", "рівних ділянок"]
+    assert [str(en.plural(n, "words.conditions")) for n in (1, 2)] == ["condition", "conditions"]
+
+
+def test_notation_per_language():
+    src = r"$F_{\text{ур}} = 1{,}5~\text{Н}$, $J_\text{пр} = 2~\text{кг·м²}$, $M_{\text{и}2}$, $\operatorname{tg}\alpha$"
+    assert Strings("ru").localize_latex(src) == src
+    uk = Strings("uk").localize_latex(src)
+    assert r"F_{\text{зр}}" in uk and r"J_\text{зв}" in uk and r"1{,}5" in uk and r"\text{Н}" in uk
+    en = Strings("en").localize_latex(src)
+    assert en == r"$F_{\text{b}} = 1.5~\text{N}$, $J_\text{red} = 2~\text{kg·m²}$, $M_{\text{in}2}$, $\tan\alpha$"
+    assert Strings("en").math_word("(м/с²)/мм") == "(m/s²)/mm"
+    assert Strings("en").symbol("Fи4'") == "Fin4'"
+    with pytest.raises(MissingString, match="subscripts.щщ"):
+        Strings("en").localize_latex(r"$x_{\text{щщ}}$")
+
+
+def test_catalogue_values_compile_as_templates():
+    """Every snippet is valid Jinja (a syntax error would only show for the example that reaches it)."""
+    env = make_environment()
+    for lang in LANGUAGES:
+        def walk(node, prefix=""):
+            for k, v in node.items():
+                if isinstance(v, dict):
+                    yield from walk(v, f"{prefix}{k}.")
+                elif isinstance(v, str) and ("\\VAR{" in v or "\\BLOCK{" in v):
+                    yield prefix + k, v
+        for key, value in walk(_catalogue(lang)):
+            try:
+                env.parse(value)
+            except jinja2.TemplateSyntaxError as exc:
+                pytest.fail(f"{lang} {key}: {exc}")
+
+
+def test_ukrainian_catalogue_has_no_russian_letters():
+    """Ukrainian has no ы, э, ъ, ё: none in the uk catalogue's text (Russian symbols like M_\\text{ур}
+    are mapped by the subscripts table; the cited Russian book is the one exception)."""
+    for path in sorted((STRINGS / "uk").glob("*.toml")) + [STRINGS / "uk.toml"]:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        text = repr(data)
+        text = text.replace("Артоболевский", "")
+        assert not re.search("[ыэъёЫЭЪЁ]", text), path.name
+
+
+def test_english_catalogue_has_cyrillic_only_in_symbols():
+    """English text: Cyrillic only inside \\text{…} of the canonical symbols (mapped by the notation
+    tables) and as the keys of those tables."""
+    for path in sorted((STRINGS / "en").glob("*.toml")) + [STRINGS / "en.toml"]:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data.pop("subscripts", None)
+        data.pop("units", None)
+        text = re.sub(r"\\\\?text\{[^{}]*\}", "", repr(data))
+        text = text.replace('== "м"', "")        # a comparison with the solver's unit, not text
+        assert not re.search("[\u0400-\u04FF]", text), (path.name, re.findall(".{30}[\u0400-\u04FF]+.{10}", text)[:3])

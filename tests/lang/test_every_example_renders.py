@@ -1,0 +1,62 @@
+"""Every example renders in every language (issue 14: "a test runs every template path of every
+example in every language"): the note's LaTeX is made (no TeX run) for ru, uk and en, so a key
+missing on a branch only some example reaches fails here, and the rendered source holds no Russian
+word in English outside the user's strings."""
+from __future__ import annotations
+
+import dataclasses
+import re
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from latex_templates import NoteBuilder
+from latex_templates.assignment import assignment_section, introduction_paragraphs
+from latex_templates.compose import compose
+from latex_templates.render import Strings
+from reportgen.project import Project
+from reportgen.taskfile import load_task
+
+ROOT = Path(__file__).resolve().parents[2]
+BASE = ("press", "shaper", "conveyor", "crank-slider", "class3")
+
+pytestmark = pytest.mark.slow
+
+
+def _render(name: str, language: str, out: Path) -> str:
+    task = load_task(ROOT / "examples" / name / "task.toml")
+    task = dataclasses.replace(task, document=dataclasses.replace(task.document, language=language))
+    project = Project(task)
+    sections, left_out = compose(project, Strings(language))
+    note = NoteBuilder(task.document, designation="X", introduction=introduction_paragraphs(project, left_out),
+                       conclusions=[c for s in sections for c in s.conclusions],
+                       assignment=assignment_section(project))
+    for s in sections:
+        note.add_section(s.section)
+    return note.render(out).read_text(encoding="utf-8")
+
+
+def _environments(tex: str) -> tuple[int, int, int]:
+    return (tex.count(r"\begin{figure}"), tex.count(r"\begin{longtable}"), tex.count(r"\begin{equation}"))
+
+
+@pytest.mark.parametrize("name", BASE)
+def test_renders_in_every_language(name, tmp_path):
+    data = tomllib.loads((ROOT / "examples" / name / "task.toml").read_text(encoding="utf-8"))
+    user = [v for v in data.get("document", {}).values() if isinstance(v, str)]
+    user += [data.get("mechanism", {}).get("name", "")] * 2
+    counts = {}
+    for lang in ("ru", "uk", "en"):
+        tex = _render(name, lang, tmp_path / lang)
+        counts[lang] = _environments(tex)
+        body = tex[tex.index(r"\begin{document}"):]
+        for word in sorted({w for u in user for w in u.split()}, key=len, reverse=True):
+            body = re.sub(re.escape(word), "", body, flags=re.I)    # the user's words, any case
+        body = re.sub(r"\\text\{[^{}]*\}", "", body)          # none left: checked below for en
+        if lang == "uk":
+            assert not re.search("[ыэъёЫЭЪЁ]", body.replace("Артоболевский", "")), \
+                re.findall(r".{30}[ыэъё].{10}", body)[:3]
+        if lang == "en":
+            assert not re.search("[\u0400-\u04FF]", body), re.findall(r".{40}[\u0400-\u04FF]+.{10}", body)[:3]
+    assert counts["ru"] == counts["uk"] == counts["en"], counts
