@@ -26,6 +26,16 @@ class CraneStrings(Strings):
     """The catalogue with ``crane.note.<key>`` overlaying ``<key>`` (title page, introduction,
     references of the crane document); everything else as usual."""
 
+    def raw(self, key: str):
+        if not key.startswith("crane."):
+            try:
+                value = super().raw(f"crane.note.{key}")
+            except KeyError:
+                value = None
+            if value is not None and not isinstance(value, dict):
+                return value        # a leaf of the overlay
+        return super().raw(key)
+
     def get(self, key: str):
         if not key.startswith("crane."):
             try:
