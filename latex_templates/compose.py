@@ -21,6 +21,15 @@ SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("gears", ("gear_pair", "planetary")),
 )
 
+#: The crane note (course «Грузоподъёмные машины», docs/crane.md): hoist, then trolley travel.
+CRANE_SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("hoist", ("crane_hoist",)),
+    ("trolley", ("crane_trolley",)),
+)
+
+#: The section lists of each kind of document ([document] kind, or Task.kind's inference).
+DOCUMENT_SECTIONS = {"course-project": SECTIONS, "crane": CRANE_SECTIONS}
+
 
 @dataclass(frozen=True)
 class ComposedSection:
@@ -37,7 +46,8 @@ def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list
     """Sections with their parts' content; also the titles of the sections left out."""
     out: list[ComposedSection] = []
     left_out: list = []
-    for key, parts in SECTIONS:
+    kind = getattr(project.task, "kind", "course-project")
+    for key, parts in DOCUMENT_SECTIONS.get(kind, SECTIONS):
         title = strings.get(f"sections.{key}")
         if only is not None and key not in only:
             continue

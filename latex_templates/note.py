@@ -70,7 +70,7 @@ from reportgen.task import Document
                  template_dirs: Sequence[Path | str] = (),
                  introduction: Sequence[str] = (), conclusions: Sequence[str] = (),
                  references: Sequence[str] = (), assignment: Section | None = None,
-                 extra_preamble: str = "") -> None:
+                 extra_preamble: str = "", strings: Strings | None = None) -> None:
         self.document = document
         self.language = language or document.language or "ru"
         if self.language not in LANGUAGES:
@@ -86,7 +86,7 @@ from reportgen.task import Document
         self.assignment = assignment
         self.extra_preamble = extra_preamble
         self.sections: list[Section] = []
-        self.strings = Strings(self.language)
+        self.strings = strings if strings is not None else Strings(self.language)
         self.symbols = SymbolTracker()
         self.last_build: BuildReport | None = None
 

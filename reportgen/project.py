@@ -126,6 +126,14 @@ class Project:
         return PlanetaryStage(target, drive, design, triangle, check)
 
     @cached_property
+    def crane(self):
+        """The hoist and trolley-travel calculations of [crane] (None if the task has none)."""
+        if getattr(self.task, "crane", None) is None:
+            return None
+        from .crane import crane_calc
+        return crane_calc(self.task.crane)
+
+    @cached_property
     def dynamics(self):
         """Reduced moments and inertia, work, ΔE, Wittenbauer, the flywheel, the integrated motion
         (None if the task has no [dynamics] or no [mechanism])."""

@@ -63,7 +63,7 @@ def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None) -> d
     return block
 
 
-ALL_SECTIONS = ("structure", "kinematics", "kinetostatics", "dynamics", "gears", "planetary")
+ALL_SECTIONS = ("structure", "kinematics", "kinetostatics", "dynamics", "gears", "planetary", "crane")
 
 
 def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
@@ -90,6 +90,9 @@ def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
         st = project.planetary
         assert st is not None  # the task has [planetary]
         out["planetary"] = planetary_block(st.design, st.triangle, st.check)
+    if "crane" in sections and getattr(project.task, "crane", None) is not None:
+        from .crane.results import crane_block
+        out["crane"] = crane_block(project.crane)
     return _clean(out)
 
 

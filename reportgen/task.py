@@ -8,7 +8,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Literal, Mapping
+from typing import TYPE_CHECKING, Literal, Mapping
+
+if TYPE_CHECKING:
+    from .crane.spec import Crane
 
 from .errors import NameLookupError
 from .geometry import Vec2
@@ -28,6 +31,7 @@ class Document:
     city: str = ""
     year: int | None = None
     language: str = "ru"
+    kind: str = ""          # "" = by the sections (crane if [crane]), "course-project", "crane", …
     #: The project's designation (ЕСКД, ГОСТ 2.201): sheet k is "<code>.<k:03d>", the note
     #: "<code>.000 ПЗ".
     code: str = "ТММ.КП.00.00"
@@ -192,7 +196,16 @@ class Task:
     dynamics: Dynamics | None = None
     gears: Gears | None = None
     planetary: Planetary | None = None
+    crane: "Crane | None" = None    # the hoist and trolley travel of a bridge crane (docs/crane.md)
     source: str = ""
+
+    @property
+    def kind(self) -> str:
+        """The kind of document: [document] kind if given, else "crane" for a task with [crane],
+        else "course-project" (the ТММ note)."""
+        if self.document.kind:
+            return self.document.kind
+        return "crane" if self.crane is not None else "course-project"
 
 
 def frozen_mapping(d: Mapping) -> Mapping:

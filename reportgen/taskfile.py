@@ -116,14 +116,21 @@ def parse_task(data: dict, source: str = "") -> Task:
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
-    if mechanism is None and gears is None and planetary is None:
+    crane = None
+    if "crane" in top:
+        from .crane.taskfile import read_crane
+        crane = read_crane(top.raw("crane"), "crane")
+    if document.kind == "crane" and crane is None:
+        raise TaskError("crane", 'is missing; [document] kind = "crane" needs it', "a [crane] section")
+    if mechanism is None and gears is None and planetary is None and crane is None:
         given = [f"[{k}]" for k in data] if data else []
         raise TaskError("", "the task has nothing to build" + (
             f": it gives only {', '.join(given)}" if given else ": it is empty or holds only comments"),
             "at least one of the sections [mechanism] (a linkage: note sections 1–3, sheets 1–3), "
-            "[gears] (a gear pair: section 4, sheet 4) or [planetary] (a planetary reducer)")
+            "[gears] (a gear pair: section 4, sheet 4), [planetary] (a planetary reducer) or [crane] "
+            "(a bridge crane: the crane note and its sheets)")
     return Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
-                gears=gears, planetary=planetary, source=str(source))
+                gears=gears, planetary=planetary, crane=crane, source=str(source))
 
 
 # ========================================================================================= document

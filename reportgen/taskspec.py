@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 from typing import Any, Literal
 
+from .crane.taskspec import crane_sections
 from .errors import NameLookupError
 from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
                    Mechanism, Planetary)
@@ -25,6 +26,9 @@ MAX_LENGTH = 1000.0
 #: Smallest link length accepted, m: 1 µm. Between the two, reportgen.gost_scales draws every
 #: mechanism within a sheet (1:50000 … (100·n):1).
 MIN_LENGTH = 1e-6
+
+#: Kinds of document ([document] kind; docs/crane.md): the ТММ course project and the crane note.
+DOCUMENT_KINDS = ("course-project", "crane")
 
 
 class _Optional:
@@ -141,6 +145,8 @@ SECTIONS: tuple[Section, ...] = (
                     table="gears"),
                 Key("planetary", None, "the planetary reduction gear", None, OPTIONAL,
                     "no planetary gear", table="planetary"),
+                Key("crane", None, "a bridge crane: hoist and trolley travel (another kind of document, "
+                    "docs/crane.md)", None, OPTIONAL, "no crane", table="crane"),
             )),
     Section("document", "title page", "Words of the title page and title blocks; all optional.", (
         Key("title", Str(), "title of the project", "Проектирование и исследование механизма пресса",
@@ -156,6 +162,8 @@ SECTIONS: tuple[Section, ...] = (
         Key("code", Str(nonempty=True), "the project's designation: sheet k is <code>.00k, the note "
             "<code>.000 ПЗ (title blocks, graph 2)", "ТММ.КП.01.00", _dflt(Document, "code")),
         Key("language", Word(*LANGUAGES), "language of the note and the sheets", "ru", _dflt(Document, "language")),
+        Key("kind", Word(*DOCUMENT_KINDS), "the kind of document; left out: \"crane\" for a task with "
+            "[crane], else \"course-project\" (the ТММ note)", "crane", _dflt(Document, "kind")),
     )),
     Section("mechanism", "the linkage", "The links, their pairs, the drive, masses and loads.", (
         Key("name", Str(), "name of the mechanism in the note", "Механизм пресса", ""),
@@ -314,6 +322,8 @@ SECTIONS: tuple[Section, ...] = (
         Key("module", GEAR_MODULE, "module for the drawing", 6.4, OPTIONAL, "chosen by the solver"),
     )),
 )
+
+SECTIONS += crane_sections(Key, Section, OPTIONAL)
 
 #: Section by path ("" is the document itself).
 SECTION: dict[str, Section] = {s.path: s for s in SECTIONS}

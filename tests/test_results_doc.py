@@ -15,7 +15,7 @@ ROOT = Path(__file__).resolve().parents[1]
 DOC = ROOT / "docs" / "results.md"
 # Dicts whose keys are names from the task (points, link ids, groups, reactions, wheels), not keys.
 _NAMED = {"points", "centers_of_mass", "links", "transmission_angle_deg", "reactions", "pairs", "polygons",
-          "diameters_mm", "radii_mm", "points_mm", "cuts_mm"}
+          "diameters_mm", "radii_mm", "points_mm", "cuts_mm", "values"}
 
 
 def _sections(text: str) -> dict[str, str]:
@@ -35,7 +35,7 @@ def _keys(value, parent: str = ""):
             yield from _keys(v, parent)
 
 
-@pytest.mark.parametrize("example", ["press", "shaper"])
+@pytest.mark.parametrize("example", ["press", "shaper", "crane-hoist"])
 def test_every_key_of_results_json_is_documented(example: str) -> None:
     project = Project(load_task(ROOT / "examples" / example / "task.toml"))
     results = build_results(project)

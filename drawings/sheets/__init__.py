@@ -17,7 +17,7 @@ from reportgen.modules import optional_module
 
 #: The sheet modules in the order of the sheets; files are named ``sheet<N>-<name>`` with N the
 #: sheet's number among those the task has.
-SHEETS: tuple[str, ...] = ("kinematics", "kinetostatics", "dynamics", "gears")
+SHEETS: tuple[str, ...] = ("kinematics", "kinetostatics", "dynamics", "gears", "crane_hoist", "crane_trolley")
 
 
 def sheet_module(name: str) -> ModuleType | None:

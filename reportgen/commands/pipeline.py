@@ -104,7 +104,8 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     child = _SheetsChild.start(project, tmp, todo, cache) if todo and parallel_possible() else None
     pending = None
     try:
-        if task.mechanism is not None or task.gears is not None or task.planetary is not None:
+        if (task.mechanism is not None or task.gears is not None or task.planetary is not None
+                or getattr(task, "crane", None) is not None):
             tex = _note(project, tmp, timeline)
             if pdf:
                 pending = _start_latex(tex, latexmk, cache)
@@ -151,6 +152,10 @@ def _note(project: Any, tmp: Path, timeline: Timeline) -> Path:
     from latex_templates.compose import compose
     from latex_templates.render import Strings
 
+    if getattr(project.task, "kind", "") == "crane":       # the crane note (docs/crane.md)
+        from latex_templates.parts.crane_document import note_builder
+        with timeline.stage("note: sections and figures"):
+            return note_builder(project).render(tmp)
     with timeline.stage("note: sections and figures"):
         strings = Strings(project.task.document.language or "ru")
         sections, left_out = compose(project, strings)

@@ -17,7 +17,9 @@ def _russian(path) -> bool:
     return tomllib.loads(path.read_text(encoding="utf-8")).get("document", {}).get("language", "ru") == "ru"
 
 
-EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml") if _russian(p))
+#: Russian examples with a linkage (examples/crane-hoist is another kind of document, docs/crane.md).
+EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
+                  if _russian(p) and "\n[mechanism]" in "\n" + p.read_text(encoding="utf-8"))
 
 
 def project_of(example: str) -> Project:
