@@ -33,8 +33,12 @@ def _catalogue(lang: str) -> dict:
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
 def test_same_keys_in_every_language(lang):
-    ru = set(_keys(_catalogue("ru")))
-    other = set(_keys(_catalogue(lang)))
+    # the crane and control-work documents are Russian only so far (docs/languages.md; the loader
+    # refuses another language for them): their areas are not compared
+    from reportgen.taskfile import RUSSIAN_ONLY_KINDS
+    skip = tuple(k.split("-")[0] + "." for k in RUSSIAN_ONLY_KINDS)
+    ru = {k for k in _keys(_catalogue("ru")) if not k.startswith(skip)}
+    other = {k for k in _keys(_catalogue(lang)) if not k.startswith(skip)}
     assert not ru - other, f"missing in {lang}: {sorted(ru - other)[:20]}"
     assert not other - ru, f"only in {lang}: {sorted(other - ru)[:20]}"
 
@@ -62,8 +66,12 @@ def _referenced_keys() -> set[str]:
 def test_every_key_the_code_names_exists_in_every_language():
     keys = _referenced_keys()
     assert len(keys) > 300, len(keys)           # the scan sees the code's keys
+    from reportgen.taskfile import RUSSIAN_ONLY_KINDS   # their words are in ru only (docs/languages.md)
+    ru_only = tuple(k.split("-")[0] + "." for k in RUSSIAN_ONLY_KINDS)
     for lang in LANGUAGES:
         s = Strings(lang)
+        if lang != "ru":
+            keys = {k for k in keys if not k.startswith(ru_only)}
         missing = sorted(k for k in keys if not s.has(k))
         assert not missing, f"{lang}: {missing[:20]}"
 
@@ -163,3 +171,17 @@ def test_english_catalogue_has_cyrillic_only_in_symbols():
         text = re.sub(r"\\\\?text\{[^{}]*\}", "", repr(data))
         text = text.replace('== "м"', "")        # a comparison with the solver's unit, not text
         assert not re.search("[\u0400-\u04FF]", text), (path.name, re.findall(".{30}[\u0400-\u04FF]+.{10}", text)[:3])
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_russian_only_documents_refuse_another_language(lang):
+    """A crane note in uk/en would print Russian under another language's name: refused instead."""
+    import tomllib
+
+    from reportgen.errors import TaskError
+    from reportgen.taskfile import parse_task
+    data = tomllib.loads((ROOT / "examples" / "crane-hoist" / "task.toml").read_text(encoding="utf-8"))
+    data.setdefault("document", {})["language"] = lang
+    with pytest.raises(TaskError) as err:
+        parse_task(data)
+    assert err.value.path == "document.language"
