@@ -27,6 +27,7 @@ class Document:
     city: str = ""
     year: int | None = None
     language: str = "ru"
+    kind: str = "course-project"          # or "control-work" (docs/control-work.md)
 
 
 @dataclass(frozen=True)
@@ -168,6 +169,15 @@ class Planetary:
 
 
 @dataclass(frozen=True)
+class ControlWork:
+    """``[control_work]``: the assignment of a control work (seed 001, §7–8; docs/control-work.md)."""
+    table: int | None = None              # the manual's table 1…22 (None: a mechanism of one's own)
+    variant: int | None = None            # 1…10
+    sheet: str = "A1"                     # "A1" or "A3"
+    tolerance_percent: float = 5.0        # accepted deviation of a value read from a construction
+
+
+@dataclass(frozen=True)
 class Task:
     """The whole assignment. A section the file leaves out is None."""
     document: Document = Document()
@@ -176,6 +186,7 @@ class Task:
     dynamics: Dynamics | None = None
     gears: Gears | None = None
     planetary: Planetary | None = None
+    control_work: ControlWork | None = None
     source: str = ""
 
 

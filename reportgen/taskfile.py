@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from .errors import TaskError, TaskSyntaxError
-from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Drive, Dynamics, Flywheel, Gears,
+from .task import (LANGUAGES, LINK_KINDS, Analysis, ControlWork, Document, Drive, Dynamics, Flywheel, Gears,
                    Link, Load, MassRules, Mechanism, Planetary, Slide, Task, Vec2, frozen_mapping)
 from .taskfile_values import (Array, Bool, Int, Number, OneOf, Spec, Str, Table, Word, array_of_tables,
                               check_keys, fmt, index, join, show, suggest, vec2)
@@ -32,8 +32,11 @@ MAX_LENGTH = 1000.0
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
 COLLINEAR_RTOL = 1e-9
 
-TOP_KEYS = ("document", "mechanism", "analysis", "dynamics", "gears", "planetary")
-DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "organization", "city", "year", "language")
+TOP_KEYS = ("document", "mechanism", "analysis", "dynamics", "gears", "planetary", "control_work")
+DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "organization", "city", "year", "language", "kind")
+DOCUMENT_KINDS = ("course-project", "control-work")
+CONTROL_WORK_KEYS = ("table", "variant", "sheet", "tolerance_percent")
+SHEET_FORMATS = ("A1", "A3")
 MECHANISM_KEYS = ("name", "g", "ground", "points", "link", "slide", "drive", "mass_rules", "load")
 LINK_KEYS = ("id", "kind", "points", "length", "lengths", "mass", "inertia", "com")
 SLIDE_KEYS = ("link", "point", "guide", "line", "along")
@@ -112,12 +115,31 @@ def parse_task(data: dict, source: str = "") -> Task:
     top = Table(data, "", TOP_KEYS, "a TOML document (a table of sections)")
     document = _document(top.raw("document"), "document") if "document" in top else Document()
     mechanism = _mechanism(top.raw("mechanism"), "mechanism") if "mechanism" in top else None
-    analysis = _analysis(top.raw("analysis"), "analysis") if "analysis" in top else Analysis()
+    min_positions = 1 if document.kind == "control-work" else 3      # a control work: one position
+    analysis = _analysis(top.raw("analysis"), "analysis", min_positions) if "analysis" in top else Analysis()
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
+    control_work = _control_work(top.raw("control_work"), "control_work") if "control_work" in top else None
+    if document.kind == "control-work":
+        if mechanism is None:
+            raise TaskError("document.kind", '"control-work" but the task has no [mechanism]',
+                            "a [mechanism] section (reportgen new --table T --variant V writes one)")
+        if control_work is None:
+            control_work = ControlWork()
     return Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
-                gears=gears, planetary=planetary, source=str(source))
+                gears=gears, planetary=planetary, control_work=control_work, source=str(source))
+
+
+def _control_work(value: Any, path: str) -> ControlWork:
+    t = Table(value, path, CONTROL_WORK_KEYS)
+    d = ControlWork()
+    return ControlWork(
+        table=t.get("table", Int(ge=1, le=22, what="a table of the manual, 1…22"), d.table),
+        variant=t.get("variant", Int(ge=1, le=10, what="a variant, 1…10"), d.variant),
+        sheet=t.get("sheet", Word(*SHEET_FORMATS), d.sheet),
+        tolerance_percent=t.get("tolerance_percent", Number(gt=0, le=100, unit="%"), d.tolerance_percent),
+    )
 
 
 # ========================================================================================= document
@@ -133,6 +155,7 @@ def _document(value: Any, path: str) -> Document:
         city=t.get("city", Str(), d.city),
         year=t.get("year", Int(ge=1000, le=9999, what="a year: an integer"), d.year),
         language=t.get("language", Word(*LANGUAGES), d.language),
+        kind=t.get("kind", Word(*DOCUMENT_KINDS), d.kind),
     )
 
 
@@ -543,10 +566,10 @@ def _load(value: Any, path: str, links: Mapping[int, Link]) -> Load:
 
 
 # ====================================================================== analysis, dynamics, gears…
-def _analysis(value: Any, path: str) -> Analysis:
+def _analysis(value: Any, path: str, min_positions: int = 3) -> Analysis:
     t = Table(value, path, ANALYSIS_KEYS)
     d = Analysis()
-    positions = t.get("positions", Int(ge=3, le=360), d.positions)
+    positions = t.get("positions", Int(ge=min_positions, le=360), d.positions)
     start = t.get("start", OneOf(Word("extreme"), Number(ge=-360, le=360, unit="degrees (a crank angle)")),
                   d.start)
     fp_spec = OneOf(Word("max-load"), Int(ge=0, le=positions - 1, what="a position index"))
