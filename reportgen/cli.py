@@ -17,7 +17,7 @@ from . import __version__
 from .errors import BuildError, ReportgenInputError
 
 # Sub-command modules, in the order `reportgen --help` lists them.
-COMMANDS: tuple[str, ...] = ("build", "solve", "gear", "planetary", "bench")
+COMMANDS: tuple[str, ...] = ("build", "solve", "new", "batch", "check", "gear", "planetary", "bench")
 
 
 def make_parser() -> argparse.ArgumentParser:
