@@ -16,7 +16,7 @@ def _lang(project) -> str:
 
 def assignment_section(project) -> Section:
     task = project.task
-    ctx: dict = {"mech": None, "gears": task.gears, "planetary": task.planetary, "dynamics": task.dynamics,
+    ctx: dict = {"mech": None, "control": None, "gears": task.gears, "planetary": task.planetary, "dynamics": task.dynamics,
                  "analysis": task.analysis}
     figures: dict = {}
     strings = Strings(_lang(project))
@@ -59,6 +59,13 @@ def assignment_section(project) -> Section:
                        "omega": mech.drive.omega, "drive": mech.drive.link, "g": mech.g,
                        "rules": mech.mass_rules, "any_rule": any(not ln.mass_given for ln in mech.links),
                        "n_rpm": abs(mech.drive.omega) * 30 / math.pi}
+    cw = task.control_work
+    if cw is not None and cw.table is not None and cw.variant is not None:
+        from reportgen.control.tables import table
+        t = table(cw.table)
+        ctx["control"] = {"table": t.number, "variant": cw.variant, "page": t.page,
+                          "columns": [(c.label, c.printed[cw.variant - 1]) for c in t.columns],
+                          "reasoning": t.scheme.reasoning}
     return Section(key="assignment", title=strings.get("headings.assignment"), template="assignment.tex.j2",
                    context=ctx, figures=figures)
 

@@ -20,6 +20,14 @@ SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
 )
 
 
+#: The control work (``[document] kind = "control-work"``, manual §7): one position, the plans with the
+#: ω/ε table, the loads and Zhukovsky's lever with the power-balance check; no cycle, no reactions.
+CONTROL_SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("linkage", ("structure", "kinematics")),
+    ("kinetostatics", ("kinetostatics",)),
+)
+
+
 @dataclass(frozen=True)
 class ComposedSection:
     section: Section
@@ -40,7 +48,8 @@ def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list
     """Sections with their parts' content; also the titles of the sections left out."""
     out: list[ComposedSection] = []
     left_out: list = []
-    for key, parts in SECTIONS:
+    control = project.task.document.kind == "control-work"
+    for key, parts in (CONTROL_SECTIONS if control else SECTIONS):
         title = strings.get(f"sections.{key}")
         if only is not None and key not in only:
             continue

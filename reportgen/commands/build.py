@@ -58,6 +58,9 @@ class Progress:
 
 
 def _designation(task) -> str:
+    cw = task.control_work
+    if task.document.kind == "control-work" and cw is not None:
+        return f"ТММ.КР.{cw.table or 0:02d}.{cw.variant or 0:02d}.000 ПЗ"
     return "ТММ.КП.00.00.000 ПЗ"
 
 
