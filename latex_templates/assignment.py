@@ -3,8 +3,11 @@ the introduction's paragraphs about this mechanism."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
+
+from markupsafe import Markup
 
 from .note import Section
 from .render import Strings
@@ -64,10 +67,51 @@ def assignment_section(project) -> Section:
         from reportgen.control.tables import table
         t = table(cw.table)
         ctx["control"] = {"table": t.number, "variant": cw.variant, "page": t.page,
-                          "columns": [(c.label, c.printed[cw.variant - 1]) for c in t.columns],
-                          "reasoning": t.scheme.reasoning}
+                          "columns": [(label_tex(c.label), c.printed[cw.variant - 1]) for c in t.columns],
+                          "scheme": scheme_phrases(t.scheme, strings)}
     return Section(key="assignment", title=strings.get("headings.assignment"), template="assignment.tex.j2",
                    context=ctx, figures=figures)
+
+
+def _expr_tex(expr: str) -> str:
+    """A scheme expression of the table's quantities as math: "l_AD + a" → "l_{AD} + a"."""
+    return re.sub(r"l_([A-Z]+)", r"l_{\1}", expr.replace("*", r" \cdot ")).replace("+ -", "- ")
+
+
+def label_tex(label: str) -> Markup:
+    """A printed column heading as LaTeX: "lCE =lEF, м" → "$l_{CE} = l_{EF}$, м", "ϕ , °" → "$\\varphi$, °"."""
+    name, _, unit = label.partition(",")
+    parts = []
+    for p in (x.strip() for x in name.split("=")):
+        p = p.replace("А", "A").replace("а", "a")
+        if p.startswith("l") and len(p) > 1:
+            parts.append(f"l_{{{p[1:].strip()}}}")
+        elif p == "ϕ":
+            parts.append(r"\varphi")
+        elif p == "ω1":
+            parts.append(r"\omega_1")
+        else:
+            parts.append(p)
+    unit = unit.strip()
+    return Markup("$" + " = ".join(parts) + "$" + (f", {unit}" if unit else ""))
+
+
+def scheme_phrases(sc, strings) -> list:
+    """The reconstructed scheme of a control-work table in words (strings control.scheme.*)."""
+    out = [strings.get("control.scheme.d").format(x=Markup(_expr_tex(sc.D[0])), y=Markup(_expr_tex(sc.D[1])))]
+    if sc.e_kind == "bar":
+        out.append(strings.get("control.scheme.e_bar").format(link=sc.e_link, p=sc.e_from, q=sc.e_toward,
+                                                              d=Markup(_expr_tex(sc.e_distance))))
+    elif sc.e_kind == "triangle":
+        out.append(strings.get("control.scheme.e_triangle").format(
+            link=sc.e_link, p=sc.e_from, q=sc.e_toward, d1=Markup(_expr_tex(sc.e_distances[0])),
+            d2=Markup(_expr_tex(sc.e_distances[1]))))
+    else:
+        out.append(strings.get("control.scheme.e_none").format(p=sc.f_from, s=sc.slider))
+    key = "control.scheme.guide_vertical" if abs(sc.guide_angle_deg - 90.0) < 1e-9 else "control.scheme.guide_horizontal"
+    coord = sc.guide_through[0] if key.endswith("vertical") else sc.guide_through[1]
+    out.append(strings.get(key).format(s=sc.slider, x=Markup(_expr_tex(coord))))
+    return out
 
 
 def introduction_paragraphs(project, left_out) -> list:

@@ -87,7 +87,8 @@ from reportgen.task import Document
         self.assignment = assignment
         self.extra_preamble = extra_preamble
         self.sections: list[Section] = []
-        self.strings = Strings(self.language)
+        self.strings = Strings(self.language, overlay="control.overrides"
+                               if getattr(document, "kind", "") == "control-work" else None)
         self.symbols = SymbolTracker()
         self.last_build: BuildReport | None = None
 

@@ -80,17 +80,22 @@ class Strings:
     the language fall back to Russian and are listed in :attr:`fallbacks`.
     """
 
-    def __init__(self, language: str) -> None:
+    def __init__(self, language: str, overlay: str | None = None) -> None:
+        """``overlay``: a table of the catalogue whose keys replace the same keys at the top level
+        (``control.overrides``: the words of a control work where a course project has its own)."""
         if language not in LANGUAGES:
             raise ValueError(f"language {language!r}: expected one of {', '.join(LANGUAGES)}")
         self.language = language
         self._data = _load_strings(language)
         self._fallback = _load_strings(FALLBACK_LANGUAGE) if language != FALLBACK_LANGUAGE else {}
         self.fallbacks: set[str] = set()
+        self._overlay = overlay
 
     def get(self, key: str) -> Any:
         """The string (or list, or table) at a dotted key, as ``Tex``."""
-        found = _lookup(self._data, key)
+        found = _lookup(self._data, f"{self._overlay}.{key}") if self._overlay else None
+        if found is None:
+            found = _lookup(self._data, key)
         if found is None:
             found = _lookup(self._fallback, key)
             if found is None:
