@@ -127,7 +127,7 @@ def introduction_paragraphs(project, left_out) -> list:
         text = strings.get("intro.object").format(
             name=name, link=mech.drive.link, omega=Markup(num(abs(mech.drive.omega))),
             sense=strings.get("intro.ccw" if mech.drive.omega > 0 else "intro.cw"))
-        st = project.strokes
+        st = project.strokes if task.document.kind != "control-work" else None
         if st is not None:
             key = "intro.output_slider" if st.output.kind == "slider" else "intro.output_rocker"
             text = Markup(text + " ") + strings.get(key).format(

@@ -42,6 +42,10 @@ class SchemeData:
 
 
 def scheme_data(project: Project, analysed: int) -> SchemeData:
+    if project.task.document.kind == "control-work" or not project.full_cycle:
+        # one position (a control work) or a crank that cannot turn fully: no traces, no strokes
+        kin = project.kinematics
+        return SchemeData(kin, kin, None, tuple(sorted({0, analysed})), analysed, False)
     phis = np.linspace(0.0, 2 * math.pi, DENSE, endpoint=False)
     dense = project.model.solve(project.phi[0] + phis)
     st = project.strokes
@@ -76,6 +80,10 @@ def bounds(project: Project, data: SchemeData) -> tuple[float, float, float, flo
     arrs = [np.asarray(m.pos) for m in data.kin.points.values()]
     arrs += [np.asarray(m.pos) for m in data.dense.coms.values()]
     arrs += [np.asarray(m.pos) for m in data.dense.points.values()]
+    lk = project.linkage       # the crank circle is always drawn
+    o = np.asarray(data.kin.points[lk.drive_axis].pos)[0]
+    r = float(np.hypot(*(np.asarray(data.kin.points[lk.drive_tip].pos)[0] - o)))
+    arrs.append(np.array([o - r, o + r]))
     allp = np.vstack(arrs)
     return (float(allp[:, 0].min()), float(allp[:, 1].min()), float(allp[:, 0].max()), float(allp[:, 1].max()))
 
@@ -105,7 +113,11 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_link_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
                  f"μl = {format_number(mu_l, 5)} м/мм (М {scale_text})", 5.0, "bottom-center")
-    view.title(f"Кинематическая схема механизма ({len(data.kin.phi)} положений)")
+    if project.task.document.kind == "control-work":
+        phi = math.degrees(float(data.kin.phi[data.analysed])) % 360.0
+        view.title(f"Механизм в заданном положении, φ1 = {format_number(phi, 2)}°")
+    else:
+        view.title(f"Кинематическая схема механизма ({len(data.kin.phi)} положений)")
 
 
 def _inside(view: View) -> Polygon:

@@ -27,9 +27,14 @@ def sheet_module(name: str):
         raise
 
 
+#: The control work (``[document] kind = "control-work"``) has one sheet of its own.
+CONTROL_SHEETS: tuple[str, ...] = ("control",)
+
+
 def available_sheets(project) -> list[tuple[str, object]]:
     out = []
-    for name in SHEETS:
+    control = project.task.document.kind == "control-work"
+    for name in (CONTROL_SHEETS if control else SHEETS):
         mod = sheet_module(name)
         if mod is not None and mod.available(project):
             out.append((f"sheet{len(out) + 1}-{name}", mod))

@@ -68,15 +68,17 @@ def image_keys(project: Project) -> set[str]:
     return set(v.points)
 
 
-def draw(project: Project, number: int, count: int) -> Sheet:
-    """The sheet at the largest ГОСТ scale of the scheme with which every view fits."""
+def draw(project: Project, number: int, count: int, *, control: bool = False) -> Sheet:
+    """The sheet at the largest ГОСТ scale of the scheme with which every view fits. ``control``:
+    the control work's one sheet (:mod:`drawings.sheets.control`): the lever instead of the
+    diagrams and the small plans, on A1 or A3 as ``[control_work] sheet`` says."""
     i = analysed_position(project)
     data = ks.scheme_data(project, i)
     b = ks.bounds(project, data)
     failure: BuildError | None = None
     for k, scale_text in scheme_scales(b):
         try:
-            return draw_at(project, number, count, data, b, k, scale_text)
+            return draw_at(project, number, count, data, b, k, scale_text, control=control)
         except BuildError as exc:
             if exc.stage != "sheet layout":
                 raise
@@ -95,13 +97,19 @@ def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str
 
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
-            b: tuple[float, float, float, float], k: float, scale_text: str) -> Sheet:
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+            b: tuple[float, float, float, float], k: float, scale_text: str, *, control: bool = False) -> Sheet:
+    if control:
+        from . import control as cs
+        sheet = cs.new_sheet(project, number, count)
+    else:
+        sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
     i = data.analysed
     scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
+    if control:
+        cs.place_lever(sheet, project)
     # the diagrams
-    d = diagrams_of(project)
+    d = None if control else diagrams_of(project)
     if d is not None:
         st = project.strokes
         start = math.degrees((d.sign * (st.phi_start - d.phi0)) % (2 * math.pi))
@@ -113,7 +121,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     titles = (f"План скоростей, положение {i}", f"План ускорений, положение {i}")
     # the plans and the small plans (as large as the room left allows) share out the free field
     arrangement = arrange(sheet, [kp.view_size(vplan, titles[0])[:2], kp.view_size(aplan, titles[1])[:2]],
-                          lambda crank_mm: small_plans(project, crank_mm))
+                          (lambda crank_mm: None) if control else (lambda crank_mm: small_plans(project, crank_mm)))
     for name, plan, title in (("plan_v", vplan, titles[0]), ("plan_a", aplan, titles[1])):
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
     if arrangement.small is not None:

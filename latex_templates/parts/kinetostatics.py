@@ -274,7 +274,7 @@ def _power_check(project, ks, lever) -> dict:
     cw = control_work_of(project, ks.phi_deg)
     Mg = Var("M_g", "M_{\\text{у}}^{\\text{Ж}}", lever["M"].value, "Н·м", "уравновешивающий момент по рычагу")
     Me = Var("M_e", "M_{\\text{у}}^{N}", cw.M_y_power, "Н·м", "уравновешивающий момент по балансу мощностей")
-    delta = record("\\delta_M", "100 * (M_g - M_e) / M_e", "\\%", Mg, Me, meaning="отклонение графического значения")
+    delta = record("\\delta_M", "100 * (M_g - M_e) / M_e", "%", Mg, Me, meaning="отклонение графического значения")
     return {"M_exact": cw.M_y_power, "P_exact": cw.M_y_power / cw.l_AB, "delta": delta,
             "M_lever_exact": cw.M_y, "dev_exact": cw.deviation_percent, "l_AB": cw.l_AB}
 

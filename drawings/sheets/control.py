@@ -1,0 +1,37 @@
+"""The control work's one sheet (``[document] kind = "control-work"``): the mechanism at φ to scale,
+its velocity and acceleration plans and Zhukovsky's lever, on A1 (as the course sheets) or A3
+(``[control_work] sheet``). It is sheet 1's drawing with the lever of sheet 2 in place of the
+diagrams and the small plans — the same scenes, no second copy of a plan or a lever."""
+from __future__ import annotations
+
+from drawings.sheet import A1, A3, Sheet, TitleBlock
+from reportgen.project import Project
+
+NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "kinetostatics")
+TITLE = "Кинематический и силовой анализ рычажного механизма"
+
+
+def available(project: Project) -> bool:
+    return project.task.mechanism is not None and project.task.document.kind == "control-work"
+
+
+def code(project: Project, number: int) -> str:
+    cw = project.task.control_work
+    return f"ТММ.КР.{(cw.table or 0) if cw else 0:02d}.{(cw.variant or 0) if cw else 0:02d}.{number:03d}"
+
+
+def new_sheet(project: Project, number: int, count: int) -> Sheet:
+    cw = project.task.control_work
+    fmt = A3 if cw is not None and cw.sheet == "A3" else A1
+    return Sheet(fmt, TitleBlock.from_document(project.task.document, title=TITLE, code=code(project, number),
+                                               number=number, count=count, scale="", letter="У"))
+
+
+def place_lever(sheet: Sheet, project: Project) -> None:
+    from .kinetostatics import lever_panel_of
+    lever_panel_of(project).place(sheet, "top-right")
+
+
+def draw(project: Project, number: int, count: int) -> Sheet:
+    from . import kinematics
+    return kinematics.draw(project, number, count, control=True)
