@@ -53,6 +53,8 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
         rep.tables.append(runs.planetary_table(project, (60, 120, 250) if quick else (60, 120, 250, 500, 1000)))
     say("stages of reportgen build")
     rep.tables.append(runs.build_table(Path(task_path), quick))
+    say("control work: reportgen batch")
+    rep.tables.append(runs.batch_table(quick))
     say("pylinkage")
     rep.tables.append(runs.pylinkage_table(36 if quick else 360))
     rep.seconds = time.perf_counter() - t0
