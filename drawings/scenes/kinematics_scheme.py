@@ -115,7 +115,9 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
                  f"μl = {format_number(mu_l, 5)} м/мм (М {scale_text})", 5.0, "bottom-center")
     if project.task.document.kind == "control-work":
         phi = math.degrees(float(data.kin.phi[data.analysed])) % 360.0
-        view.title(f"Механизм в заданном положении, φ1 = {format_number(phi, 2)}°")
+        cw = project.task.control_work
+        lead = "Механизм" if cw is not None and cw.sheet == "A3" else "Механизм в заданном положении"
+        view.title(f"{lead}, φ1 = {format_number(phi, 2)}°")
     else:
         view.title(f"Кинематическая схема механизма ({len(data.kin.phi)} положений)")
 

@@ -8,6 +8,13 @@ from drawings.sheet import A1, A3, Sheet, TitleBlock
 from reportgen.project import Project
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "kinetostatics")
+#: On A3 the plans and the lever get round scales of their own (printed on the sheet) within these mm;
+#: on A1 they keep the note's scales.
+A3_PLAN_MM = 75.0
+A3_LEVER_MM = 80.0
+#: The scheme's view is at least as wide as its title (5 mm letters): «Механизм в заданном положении,
+#: φ1 = …°» on A1, «Механизм, φ1 = …°» on A3.
+SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 65.0}
 TITLE = "Кинематический и силовой анализ рычажного механизма"
 
 
@@ -27,9 +34,14 @@ def new_sheet(project: Project, number: int, count: int) -> Sheet:
                                                number=number, count=count, scale="", letter="У"))
 
 
+def is_a3(project: Project) -> bool:
+    cw = project.task.control_work
+    return cw is not None and cw.sheet == "A3"
+
+
 def place_lever(sheet: Sheet, project: Project) -> None:
     from .kinetostatics import lever_panel_of
-    lever_panel_of(project).place(sheet, "top-right")
+    lever_panel_of(project, A3_LEVER_MM if is_a3(project) else None).place(sheet, "top-right")
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:

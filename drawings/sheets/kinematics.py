@@ -104,7 +104,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     else:
         sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
     i = data.analysed
-    scheme = add_scheme_view(sheet, b, k)
+    scheme = add_scheme_view(sheet, b, k, min_width=cs.SCHEME_MIN_WIDTH_MM["A3" if cs.is_a3(project) else "A1"] if control else 0.0)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
     if control:
         cs.place_lever(sheet, project)
@@ -116,7 +116,14 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
     keys = image_keys(project)
-    vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
+    if control and cs.is_a3(project):   # A3: the plans at round scales of their own (printed on it)
+        kin = project.kinematics
+        far_v = max(float(np.hypot(*np.asarray(m.vel[i]))) for m in kin.points.values())
+        far_a = max(float(np.hypot(*np.asarray(m.acc[i]))) for m in kin.points.values())
+        vplan, aplan = build_plans(project.linkage, project.structure, kin, i,
+                                   mu_v=round_scale(far_v, cs.A3_PLAN_MM), mu_a=round_scale(far_a, cs.A3_PLAN_MM))
+    else:
+        vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
     add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
     titles = (f"План скоростей, положение {i}", f"План ускорений, положение {i}")
     # the plans and the small plans (as large as the room left allows) share out the free field
@@ -242,11 +249,12 @@ def _grow(region, blocks: list[Block], rects: list[Rect], placed: list[Rect]) ->
     return rects
 
 
-def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float) -> View:
+def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float,
+                    min_width: float = 0.0) -> View:
     """The scheme's view: model bounds ``b`` at ``k`` mm per metre with padding, more below (the
-    scale caption) and above (the title)."""
+    scale caption) and above (the title); at least ``min_width`` mm wide (its title's width)."""
     left, bottom, right, top = SCHEME_PADS_MM
-    w = (b[2] - b[0]) * k + left + right
+    w = max((b[2] - b[0]) * k + left + right, min_width)
     h = (b[3] - b[1]) * k + bottom + top
     view = sheet.add_view("scheme", w, h, preferred="top-left")
     view.transform = Transform(k, (b[0], b[1]), (view.rect.x0 + left, view.rect.y0 + bottom))

@@ -112,8 +112,9 @@ def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
     return None
 
 
-def lever_panel_of(project: Project):
-    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's)."""
+def lever_panel_of(project: Project, max_mm: float | None = None):
+    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's);
+    ``max_mm``: the turned plan at a round μv of its own within that many mm (an A3 control sheet)."""
     from drawings.scenes import kinetostatics_views as kv
     from reportgen.kinetostatics.results import kinetostatics_of
     from reportgen.kinetostatics.zhukovsky import turn_cw
@@ -121,6 +122,10 @@ def lever_panel_of(project: Project):
     lk, g = project.linkage, kinetostatics_of(project).graphical
     kin = ks.reactions.kin
     mu_v = g.lever.scale
+    if max_mm is not None:
+        far = max(float(np.hypot(*np.asarray(m.vel)[0])) for m in kin.points.values())
+        mu_v = max(mu_v, round_scale(far, max_mm))
+    k_arm = g.lever.scale / mu_v            # the measured arms (mm at the note's μv) at this μv
     points = {}
     for name, mo in kin.points.items():
         img = turn_cw(np.asarray(mo.vel))[0] / mu_v
@@ -130,7 +135,7 @@ def lever_panel_of(project: Project):
     for k in lk.moving:
         names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
         segments += [("p", n) for n in names] + list(zip(names, names[1:]))
-    loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured)
+    loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured * k_arm)
              for t, f in zip(g.lever.terms, ks.lever.forces) if t.magnitude > 0.0]
     return kv.lever_panel("lever", points, segments, loads, mu_v)
 
