@@ -111,8 +111,9 @@ class IncompleteCycleError(ReportgenInputError):
         self.stage = stage
         self.feasible = feasible
         rng = ", ".join(f"{a:.1f}°…{b:.1f}°" for a, b in feasible) or "no crank angle"
-        super().__init__(f"{stage} needs the crank's full turn, but the mechanism assembles only for "
-                         f"φ1 in {rng}; analyse single positions in that range instead "
+        super().__init__(f"{stage} needs the crank's full turn, but the mechanism cannot be assembled at "
+                         f"every crank angle: it assembles only for φ1 in {rng}; analyse single positions "
+                         f"in that range instead "
                          f"(solve --at DEG, [analysis] start = DEG with positions = 1 in a control work)")
 
 

@@ -45,7 +45,10 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
     P = sk.points
     L = dict(sk.lengths)
     S = sc.slider
-    row = ", ".join(f"{c.label.strip()} = {c.printed[v.number - 1]}" for c in t.columns)
+    def cell(c) -> str:
+        name, _, unit = c.label.partition(",")
+        return f"{' '.join(name.split())} = {c.printed[v.number - 1]}" + (f" {unit.strip()}" if unit.strip() else "")
+    row = "; ".join(cell(c) for c in t.columns)
     out: list[str] = [
         f"# Контрольная работа по ТММ: задание {t.number}, вариант {v.number} (учебное пособие, §7–8, с. {t.page}).",
         f"# Row of table {t.number} as printed: {row}.",
