@@ -158,5 +158,8 @@ class Project:
     def loads_at(self, kin: KinematicsResult, inertia: bool = True):
         """External loads (+ inertia) at the positions of ``kin``."""
         from .loads import external_loads, inertia_loads
-        ls = external_loads(self._need_mechanism(), self.linkage, self.model, kin, self.strokes)
+        mech = self._need_mechanism()
+        # the strokes (a search over the whole turn) only when a resistance is given over them
+        strokes = self.strokes if any(ld.kind == "resistance" for ld in mech.loads) else None
+        ls = external_loads(mech, self.linkage, self.model, kin, strokes)
         return ls + inertia_loads(self.linkage, kin) if inertia else ls
