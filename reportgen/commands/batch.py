@@ -149,7 +149,9 @@ def run_job(job: Job, out: str, answers_only: bool) -> Outcome:
         from ..taskfile import loads_task
         task = loads_task(job.text, source=job.name)
         res = control_work_of(Project(task))
-        row = {"name": job.name, "table": job.table or "", "variant": job.variant or "", **res.answers()}
+        cw = task.control_work
+        row = {"name": job.name, "table": job.table or (cw.table if cw and cw.table else ""),
+               "variant": job.variant or (cw.variant if cw and cw.variant else ""), **res.answers()}
         files: list[str] = []
         if not answers_only:
             import tempfile
