@@ -6,6 +6,7 @@ factor, the sheet format, the tolerance of a graphical construction) is a key wi
 """
 from __future__ import annotations
 
+import itertools
 import math
 
 from ..zoo import toml_value
@@ -28,7 +29,6 @@ def _num(x: float) -> str:
 
 def _bar_or_triangle(pts, names: tuple[str, str, str]) -> tuple[list[str], bool]:
     """The point order of a three-point link and whether it is a straight bar (ends first)."""
-    import itertools
     d = {frozenset((p, q)): math.dist(pts[p], pts[q]) for p, q in itertools.combinations(names, 2)}
     (p, q), longest = max(((tuple(k), v) for k, v in d.items()), key=lambda kv: kv[1])
     mid = next(n for n in names if n not in (p, q))
@@ -101,7 +101,6 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
             order, straight = _bar_or_triangle(P, tuple(names))
             out.append(f"points = {toml_value(order)}")
             sides = {}
-            import itertools
             for a, b in itertools.combinations(order, 2):
                 key = "l_" + "".join(sorted(a + b))
                 sides[a + b] = L.get(key, round(math.dist(P[a], P[b]), 9))
