@@ -7,10 +7,8 @@ import re
 
 import numpy as np
 
-from markupsafe import Markup
-
 from .note import Section
-from .render import Strings
+from .render import Strings, Tex
 
 
 def _lang(project) -> str:
@@ -78,7 +76,7 @@ def _expr_tex(expr: str) -> str:
     return re.sub(r"l_([A-Z]+)", r"l_{\1}", expr.replace("*", r" \cdot ")).replace("+ -", "- ")
 
 
-def label_tex(label: str) -> Markup:
+def label_tex(label: str) -> Tex:
     """A printed column heading as LaTeX: "lCE =lEF, м" → "$l_{CE} = l_{EF}$, м", "ϕ , °" → "$\\varphi$, °"."""
     name, _, unit = label.partition(",")
     parts = []
@@ -93,46 +91,54 @@ def label_tex(label: str) -> Markup:
         else:
             parts.append(p)
     unit = unit.strip()
-    return Markup("$" + " = ".join(parts) + "$" + (f", {unit}" if unit else ""))
+    return Tex("$" + " = ".join(parts) + "$" + (f", {unit}" if unit else ""))
 
 
 def scheme_phrases(sc, strings) -> list:
     """The reconstructed scheme of a control-work table in words (strings control.scheme.*)."""
-    out = [strings.get("control.scheme.d").format(x=Markup(_expr_tex(sc.D[0])), y=Markup(_expr_tex(sc.D[1])))]
+    out = [strings.get("control.scheme.d").format(x=Tex(_expr_tex(sc.D[0])), y=Tex(_expr_tex(sc.D[1])))]
     if sc.e_kind == "bar":
         out.append(strings.get("control.scheme.e_bar").format(link=sc.e_link, p=sc.e_from, q=sc.e_toward,
-                                                              d=Markup(_expr_tex(sc.e_distance))))
+                                                              d=Tex(_expr_tex(sc.e_distance))))
     elif sc.e_kind == "triangle":
         out.append(strings.get("control.scheme.e_triangle").format(
-            link=sc.e_link, p=sc.e_from, q=sc.e_toward, d1=Markup(_expr_tex(sc.e_distances[0])),
-            d2=Markup(_expr_tex(sc.e_distances[1]))))
+            link=sc.e_link, p=sc.e_from, q=sc.e_toward, d1=Tex(_expr_tex(sc.e_distances[0])),
+            d2=Tex(_expr_tex(sc.e_distances[1]))))
     else:
         out.append(strings.get("control.scheme.e_none").format(p=sc.f_from, s=sc.slider))
     key = "control.scheme.guide_vertical" if abs(sc.guide_angle_deg - 90.0) < 1e-9 else "control.scheme.guide_horizontal"
     coord = sc.guide_through[0] if key.endswith("vertical") else sc.guide_through[1]
-    out.append(strings.get(key).format(s=sc.slider, x=Markup(_expr_tex(coord))))
+    out.append(strings.get(key).format(s=sc.slider, x=Tex(_expr_tex(coord))))
     return out
 
 
 def introduction_paragraphs(project, left_out) -> list:
     """Paragraphs about this task, from the strings catalogue (``intro.*``)."""
-    from markupsafe import Markup
+    from .render import Tex
     from .numbers import num
     strings = Strings(_lang(project))
     task = project.task
     out = []
     if task.mechanism is not None:
         mech = task.mechanism
-        name = mech.name.lower() if mech.name else strings.get("intro.default_name")
+        name = _in_sentence(mech.name) if mech.name else strings.get("intro.default_name")
         text = strings.get("intro.object").format(
-            name=name, link=mech.drive.link, omega=Markup(num(abs(mech.drive.omega))),
+            name=name, link=mech.drive.link, omega=Tex(num(abs(mech.drive.omega))),
             sense=strings.get("intro.ccw" if mech.drive.omega > 0 else "intro.cw"))
         st = project.strokes if task.document.kind != "control-work" else None
         if st is not None:
             key = "intro.output_slider" if st.output.kind == "slider" else "intro.output_rocker"
-            text = Markup(text + " ") + strings.get(key).format(
-                link=st.output.link, work=Markup(num(st.working_deg)), idle=Markup(num(st.idle_deg)))
+            text = Tex(text + " ") + strings.get(key).format(
+                link=st.output.link, work=Tex(num(st.working_deg)), idle=Tex(num(st.idle_deg)))
         out.append(text)
     if left_out:
-        out.append(strings.get("sections.left_out") + Markup(" ") + Markup("; ").join(left_out) + Markup("."))
+        out.append(strings.get("sections.left_out") + Tex(" ") + Tex("; ").join(left_out) + Tex("."))
     return out
+
+
+def _in_sentence(name: str) -> str:
+    """A name inside a sentence: its first letter lowered unless the first word is an abbreviation (КШМ)."""
+    first = name.split(" ", 1)[0]
+    if len(first) > 1 and first[1:2].isupper():
+        return name
+    return name[:1].lower() + name[1:]

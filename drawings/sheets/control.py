@@ -22,15 +22,10 @@ def available(project: Project) -> bool:
     return project.task.mechanism is not None and project.task.document.kind == "control-work"
 
 
-def code(project: Project, number: int) -> str:
-    cw = project.task.control_work
-    return f"ТММ.КР.{(cw.table or 0) if cw else 0:02d}.{(cw.variant or 0) if cw else 0:02d}.{number:03d}"
-
-
 def new_sheet(project: Project, number: int, count: int) -> Sheet:
     cw = project.task.control_work
     fmt = A3 if cw is not None and cw.sheet == "A3" else A1
-    return Sheet(fmt, TitleBlock.from_document(project.task.document, title=TITLE, code=code(project, number),
+    return Sheet(fmt, TitleBlock.from_document(project.task.document, title=TITLE, code=project.task.document.sheet_code(number),
                                                number=number, count=count, scale="", letter="У"))
 
 

@@ -25,7 +25,7 @@ def _page(path: Path, title: str, rows: list[tuple[str, dict | None, str | None]
     fig.text(0.5, 0.94, title, ha="center", fontsize=14)
     head = [str(strings.get("control.key.variant"))] + [str(strings.get(f"control.key.columns.{k}")) for k, _ in KEY_COLUMNS]
     cells = []
-    for name, row, err in rows:
+    for name, row, _err in rows:
         if row is None:
             cells.append([name, str(strings.get("control.key.failed"))] + [""] * (len(KEY_COLUMNS) - 1))
         else:

@@ -30,9 +30,9 @@ def register(sub) -> None:
 
 
 def examples_dir() -> Path | None:
-    """The shipped examples: ``reportgen/data/examples`` if packaged, else the source tree's ``examples``."""
+    """The shipped examples: the package's copy ``reportgen/examples``, else the source tree's ``examples``."""
     here = Path(__file__).resolve().parents[1]
-    for cand in (here / "data" / "examples", here.parent / "examples"):
+    for cand in (here / "examples", here.parent / "examples"):
         if cand.is_dir():
             return cand
     return None

@@ -90,7 +90,6 @@ def control_work_of(project, phi_deg: float | None = None) -> ControlWorkResult:
     lever = zhukovsky_lever(lk, kin, loads)
     m_power = float(virtual_power_moment(loads, kin, lk)[0])
     m_lever = float(lever.balancing_moment[0])
-    d = lk.drive_link
     l_AB = math.dist(lk.sketch[lk.drive_axis], lk.sketch[lk.drive_tip])
     moving = sorted(lk.moving)
     omegas = MappingProxyType({k: float(kin.links[k].omega[0]) for k in moving})

@@ -67,6 +67,7 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
         'city = ""',
         "year = 2026",
         'language = "ru"',
+        f'code = "ТММ.КР.{t.number:02d}.{v.number:02d}"            # designation: the note ….000 ПЗ, the sheet ….001',
         "",
         "[control_work]",
         f"table = {t.number}",

@@ -22,7 +22,7 @@ def _new(tmp_path, table: int, variant: int, a3: bool = False):
     return task
 
 
-def test_new_build_without_latex(tmp_path, capsys):
+def test_new_build_without_latex(tmp_path):
     task = _new(tmp_path, 22, 3, a3=True)
     out = tmp_path / "out"
     assert main(["build", str(task), "-o", str(out), "--no-pdf", "--quiet"]) == 0
@@ -40,7 +40,7 @@ def test_new_build_without_latex(tmp_path, capsys):
 
 @pytest.mark.slow
 @pytest.mark.skipif(shutil.which("latexmk") is None, reason="LaTeX is not installed")
-def test_new_build_pdf_prints_the_answers(tmp_path, capsys):
+def test_new_build_pdf_prints_the_answers(tmp_path):
     task = _new(tmp_path, 1, 1)
     out = tmp_path / "out"
     assert main(["build", str(task), "-o", str(out), "--quiet"]) == 0

@@ -19,7 +19,7 @@ def _snapshot(folder: Path) -> dict[str, bytes]:
 
 
 # ------------------------------------------------------------------------------------------- new
-def test_new_writes_a_task_that_solves(tmp_path, capsys):
+def test_new_writes_a_task_that_solves(tmp_path):
     out = tmp_path / "t.toml"
     assert main(["new", "--table", "1", "--variant", "1", "-o", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
@@ -70,12 +70,12 @@ def test_batch_three_variants_one_broken(tmp_path, capsys, monkeypatch):
     # a re-run does not solve again what did not change
     import reportgen.commands.batch as b
     calls = []
-    monkeypatch.setattr(b, "run_job", lambda job, o, a: calls.append(job.name) or b.Outcome(job.name))
+    monkeypatch.setattr(b, "run_job", lambda job, _o, _a: calls.append(job.name) or b.Outcome(job.name))
     assert main(["batch", "--csv", str(src), "--answers", "-o", str(out), "-j", "1", "--quiet"]) == 1
     assert calls == []
 
 
-def test_batch_refuses_a_folder_of_user_files(tmp_path, capsys):
+def test_batch_refuses_a_folder_of_user_files(tmp_path):
     out = tmp_path / "mine"
     out.mkdir()
     (out / "thesis.txt").write_text("x", encoding="utf-8")
@@ -133,7 +133,7 @@ def _four_bar(tmp_path, extra: str = "", analysis=zoo.START_AT_ZERO) -> Path:
     return p
 
 
-def test_single_position_of_a_crank_that_cannot_turn_fully(tmp_path, capsys):
+def test_single_position_of_a_crank_that_cannot_turn_fully(tmp_path):
     """Issue 11 item 6: refused before (the extreme positions were searched over the whole turn)."""
     p = _four_bar(tmp_path)
     assert main(["solve", str(p), "--at", "100", "--force-at", "100", "--json", str(tmp_path / "r.json")]) == 0

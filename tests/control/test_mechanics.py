@@ -89,7 +89,7 @@ def _independent(t: int, v: int) -> dict:
     out["vF"] = float(np.hypot(*vel(lambda p: p[slider])))
     out["aF"] = float(np.hypot(*acc(lambda p: p[slider])))
     # masses by (29)–(34); centres of mass: middle of a bar, centroid of a triangle (§5)
-    q, L = DEFAULT_Q, dict(sketch(sc, var).lengths)
+    q = DEFAULT_Q
     members = {1: ["A", "B"], 2: ["B", "C"], 3: ["D", "C"], 4: [start, slider]}
     if sc.e_kind != "none":
         members[sc.e_link].append("E")
@@ -101,9 +101,9 @@ def _independent(t: int, v: int) -> dict:
             l = sides[-1]
             mass[k] = q * l
             J[k] = mass[k] * l * l / 12
-            a, b = max(((a, b) for i, a in enumerate(names) for b in names[i + 1:]),
-                       key=lambda ab: float(np.hypot(*(p0[ab[0]] - p0[ab[1]]))))
-            com[k] = (lambda a, b: lambda p: (p[a] + p[b]) / 2)(a, b)
+            e1, e2 = max(((a, b) for i, a in enumerate(names) for b in names[i + 1:]),
+                         key=lambda ab: float(np.hypot(*(p0[ab[0]] - p0[ab[1]]))))
+            com[k] = (lambda u, w: lambda p: (p[u] + p[w]) / 2)(e1, e2)
         else:
             mass[k] = q * sum(sides)
             ml = mass[k] * sides[-1] / sum(sides)
