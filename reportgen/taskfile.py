@@ -23,7 +23,7 @@ from .task import (Analysis, ControlWork, Document, Drive, Dynamics, Flywheel, G
                    Link, Load, MassRules, Mechanism, Planetary, Slide, Task, Vec2, frozen_mapping)
 from .taskfile_values import (Array, Int, OneOf, Spec, Table, Word, array_of_tables, check_keys, fmt,
                               index, join, show, suggest)
-from .taskspec import (CONTROL_POSITIONS, INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, POINT_NAME,
+from .taskspec import (COURSE_POSITIONS, INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, POINT_NAME,
                        POINT_XY, SECTION)
 
 __all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "COLLINEAR_RTOL"]
@@ -592,8 +592,8 @@ def _load(value: Any, path: str, links: Mapping[int, Link]) -> Load:
 # ====================================================================== analysis, dynamics, gears…
 def _analysis(value: Any, path: str, control: bool = False) -> Analysis:
     t = Table(value, path, ANALYSIS_KEYS)
-    positions = t.get("positions", CONTROL_POSITIONS, SECTION["analysis"].default("positions")) if control \
-        else _get(t, "analysis", "positions")
+    positions = _get(t, "analysis", "positions") if control \
+        else t.get("positions", COURSE_POSITIONS, SECTION["analysis"].default("positions"))
     start = _get(t, "analysis", "start")
     fp_spec = OneOf(Word("max-load"), Int(ge=0, le=positions - 1, what="a position index"))
     force_position = t.get("force_position", fp_spec, SECTION["analysis"].default("force_position"))

@@ -105,7 +105,9 @@ LAW_PAIR = Array(Number(ge=0, le=1), 2, 2,
                  what="[fraction of the stroke, fraction of the maximum], both numbers in [0, 1]")
 LAW = Array(LAW_PAIR, 2, what="an array of at least 2 pairs [stroke fraction, load fraction] in [0, 1], "
                               "from [0, …] to [1, …]")
-POSITIONS = Int(ge=3, le=360)
+#: ``positions`` as documented (1 for a control work); the loader narrows a course project to ≥ 3.
+POSITIONS = Int(ge=1, le=360)
+COURSE_POSITIONS = Int(ge=3, le=360)
 #: ``force_position`` as documented; the loader narrows the index to ``positions - 1``.
 FORCE_POSITION = OneOf(Word("max-load"), Int(ge=0, le=359, what="a position index"))
 TEETH = Int(ge=5, le=1000, what="a number of teeth: an integer")
@@ -118,8 +120,7 @@ FLYWHEEL_SHAPES = ("disk", "rim")
 PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-row-int-int")
 DOCUMENT_KINDS = ("course-project", "control-work")
 SHEET_FORMATS = ("A1", "A3")
-#: a control work analyses one position: its ``[analysis] positions`` may be 1 or 2
-CONTROL_POSITIONS = Int(ge=1, le=360)
+
 
 def _dflt(cls: type, name: str) -> Any:
     """The default of field ``name`` of the task dataclass ``cls`` (the loader's default)."""
@@ -274,7 +275,8 @@ SECTIONS: tuple[Section, ...] = (
     Section("analysis", "what the sheets and tables show",
             "The crank angle φ1 is the angle of the crank vector (axis → moving point) from +x, "
             "counter-clockwise, in degrees.", (
-                Key("positions", POSITIONS, "equally spaced crank positions for plans and tables", 8,
+                Key("positions", POSITIONS, "equally spaced crank positions for plans and tables "
+                    "(at least 3 in a course project; 1 in a control work)", 8,
                     _dflt(Analysis, "positions")),
                 Key("start", OneOf(Word("extreme"), Number(ge=-360, le=360, unit="degrees (a crank angle)")),
                     "position 0: \"extreme\" (the output link at the start of the working stroke) or a "
