@@ -26,6 +26,10 @@ class VariantGeometryError(ReportgenInputError):
         super().__init__(f"table {table}, variant {variant}: the mechanism cannot be assembled: {condition}")
 
 
+class _Unassembled(ReportgenInputError):
+    """A closure condition of the scheme fails (internal: becomes VariantGeometryError)."""
+
+
 @dataclass(frozen=True)
 class Sketch:
     points: Mapping[str, Point]
@@ -37,7 +41,7 @@ def _circles(p: Point, r1: float, q: Point, r2: float, side: int, what: str) -> 
     dx, dy = q[0] - p[0], q[1] - p[1]
     d = math.hypot(dx, dy)
     if not (abs(r1 - r2) <= d <= r1 + r2) or d == 0.0:
-        raise ValueError(f"{what}: |{r1:.4g} − {r2:.4g}| ≤ {d:.4g} ≤ {r1:.4g} + {r2:.4g} m fails")
+        raise _Unassembled(f"{what}: |{r1:.4g} − {r2:.4g}| ≤ {d:.4g} ≤ {r1:.4g} + {r2:.4g} m fails")
     x = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
     h = math.sqrt(max(r1 * r1 - x * x, 0.0))
     ex, ey = dx / d, dy / d
@@ -51,7 +55,7 @@ def _on_line(p: Point, r: float, through: Point, angle: float, side: int, what: 
     t0 = wx * ux + wy * uy
     h = abs(wx * uy - wy * ux)                  # distance of p from the line
     if h > r:
-        raise ValueError(f"{what}: the distance {h:.4g} m of the point from the guide exceeds {r:.4g} m")
+        raise _Unassembled(f"{what}: the distance {h:.4g} m of the point from the guide exceeds {r:.4g} m")
     s = math.sqrt(r * r - h * h)
     t = t0 + side * s
     return (through[0] + t * ux, through[1] + t * uy)
@@ -88,6 +92,6 @@ def sketch(scheme: Scheme, v: Variant, phi_deg: float | None = None) -> Sketch:
         l4 = val[link4_key(scheme)]
         pts[scheme.slider] = _on_line(start, l4, through, math.radians(scheme.guide_angle_deg), scheme.f_side,
                             f"F on the guide from {scheme.f_from}")
-    except ValueError as exc:
+    except _Unassembled as exc:
         raise VariantGeometryError(v.table, v.number, str(exc)) from None
     return Sketch(MappingProxyType(pts), MappingProxyType({k: x for k, x in val.items() if k.startswith("l_")}))

@@ -15,7 +15,7 @@ from importlib import resources
 from types import MappingProxyType
 from typing import Mapping
 
-from ..errors import OptionError
+from ..errors import InternalError, OptionError
 
 #: Number of variants in every table of the manual.
 VARIANTS = 10
@@ -128,7 +128,7 @@ def evaluate(expr: str, values: Mapping[str, float]) -> float:
             return -v if isinstance(node.op, ast.USub) else v
         if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
             return _OPS[type(node.op)](ev(node.left), ev(node.right))
-        raise ValueError(f"unsupported expression {expr!r}")
+        raise InternalError("control_work/schemes.toml", f"unsupported expression {expr!r}")
     return ev(ast.parse(expr, mode="eval"))
 
 

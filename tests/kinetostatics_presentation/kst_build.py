@@ -11,7 +11,8 @@ from reportgen.project import Project
 from reportgen.taskfile import load_task
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml"))
+#: The course-project examples (the control work has no reactions and no sheet 2: tests/control).
+EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml") if p.parent.name != "control-work")
 
 
 def project_of(example: str) -> Project:
