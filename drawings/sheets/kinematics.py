@@ -69,7 +69,7 @@ def draw(project: Project, number: int, count: int, *, control: bool = False) ->
     diagrams and the small plans, on A1 or A3 as ``[control_work] sheet`` says."""
     i = analysed_position(project)
     data = ks.scheme_data(project, i)
-    b = ks.bounds(project, data)
+    b = ks.bounds(data, project.linkage)
     failure: BuildError | None = None
     for k, scale_text in scheme_scales(b):
         try:
@@ -107,6 +107,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     d = None if control else diagrams_of(project)
     if d is not None:
         st = project.strokes
+        assert st is not None  # the diagrams are drawn between the extreme positions
         start = math.degrees((d.sign * (st.phi_start - d.phi0)) % (2 * math.pi))
         kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
@@ -123,7 +124,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     titles = (f"План скоростей, положение {i}", f"План ускорений, положение {i}")
     # the plans and the small plans (as large as the room left allows) share out the free field
     arrangement = arrange(sheet, [kp.view_size(vplan, titles[0])[:2], kp.view_size(aplan, titles[1])[:2]],
-                          (lambda crank_mm: None) if control else (lambda crank_mm: small_plans(project, crank_mm)))
+                          (lambda _crank_mm: None) if control else (lambda crank_mm: small_plans(project, crank_mm)))
     for name, plan, title in (("plan_v", vplan, titles[0]), ("plan_a", aplan, titles[1])):
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
     if arrangement.small is not None:
@@ -169,9 +170,9 @@ def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
     corners = ("top-left", "bottom-left", "bottom-right")
     plans = [b for b in blocks if b.name != "plans_all"]
     rest = [b for b in blocks if b.name == "plans_all"]
-    out = []
+    out: list[list[tuple[Block, str]]] = []
     for c_plans in corners:
-        for c_rest in corners if rest else (None,):
+        for c_rest in corners if rest else corners[:1]:  # no rest: one pass, c_rest unused
             first = [(b, c_plans) for b in plans]
             second = [(b, c_rest) for b in rest]
             out.append(first + second)

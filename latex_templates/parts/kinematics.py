@@ -34,7 +34,7 @@ def _len(body, p: str, q: str) -> float:
     return math.dist(body.local[p], body.local[q])
 
 
-def _plan_rows(plan, with_exact=True):
+def _plan_rows(plan):
     rows = []
     for c in plan.components:
         rows.append({"name": c.name, "dir": c.direction, "mm": plan.measured_mm(c), "read": plan.read_value(c),
@@ -245,7 +245,7 @@ def content(project) -> PartContent:
         "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0),
     }
     concl = []
-    if stroke_ctx:
+    if stroke_ctx and strokes is not None:
         from ..numbers import num
         from ..render import Strings
         strings = Strings(project.task.document.language or "ru")

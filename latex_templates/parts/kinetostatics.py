@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from ..render import Tex
@@ -65,7 +67,7 @@ def _check(rec: CalcRecord, expected: float, what: str) -> None:
         raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
-def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: list[tuple[str, dict]] = ()
+def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: Sequence[tuple[str, dict]] = ()
                  ) -> tuple[list[CalcRecord], list[tuple[str, dict]]]:
     """Σ sign·F·h over ``terms`` (sign, force Var, arm Var) + ``extra`` (expression over X and its
     operands: {"X": Var, other names: Var}); split into partial sums of :data:`TERMS_PER_RECORD` terms
@@ -96,12 +98,13 @@ def _final(symbol: str, items, denominator: tuple[str, Var], unit: str, negate: 
         expr = expr[2:]
     if not expr:
         expr = "0"
-    named = {k: v for _, d in items for k, v in d.items()}
+    named: dict[str, Any] = {k: v for _, d in items for k, v in d.items()}
     dn, dv = denominator
     full = f"-({expr}) / {dn}" if negate else f"({expr}) / {dn}"
     if expr == "0":
         full = f"0 * {dn}"
-    return record(symbol, full, unit, **named, **{dn: dv}, meaning=meaning)
+    denom: dict[str, Any] = {dn: dv}
+    return record(symbol, full, unit, **named, **denom, meaning=meaning)
 
 
 def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counter, arms_shown: list
@@ -367,10 +370,10 @@ def _resistance(project, ks) -> list[dict]:
         if ld.kind != "resistance" or strokes is None:
             continue
         q = np.asarray(ks.reactions.kin.q)
-        x, kind = link_coordinate(lk, ld.link, q)
+        xs, kind = link_coordinate(lk, ld.link, q)
         ends, _ = project.model.positions(np.array([strokes.phi_start, strokes.phi_end]))
         xe, _ = link_coordinate(lk, ld.link, ends)
-        x = float(x[0])
+        x = float(xs[0])
         if kind == "rocker":
             x = float(xe[0]) + (x - float(xe[0]) + math.pi) % (2 * math.pi) - math.pi
         win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if lk.omega >= 0 else -1.0)
@@ -407,7 +410,9 @@ def _free_body(ks, grp, gg) -> tuple[list, list, list]:
     """Pairs, arrows and couples of a group's diagram (see :func:`free_body_figure`)."""
     r = ks.reactions
     repl = {x.link: x for x in ks.graphical.inertia}
-    pairs, arrows, couples = [], [], []
+    pairs: list[dict] = []
+    arrows: list[dict] = []
+    couples: list[dict] = []
     for p in r.pairs:
         if p.group != gg.key:
             continue
@@ -464,7 +469,8 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
-    arrows, couples = [], []
+    arrows: list[dict] = []
+    couples: list[dict] = []
     _loads_on(ks, (d,), {}, arrows, couples)
     for p in r.pairs_of(d):
         if p.name != fp.name:

@@ -88,7 +88,7 @@ def control_work_of(project, phi_deg: float | None = None) -> ControlWorkResult:
     s = project.structure
     loads = project.loads_at(kin, inertia=True)
     lever = zhukovsky_lever(lk, kin, loads)
-    m_power = float(virtual_power_moment(loads, kin, lk)[0])
+    m_power = float(virtual_power_moment(loads, kin)[0])
     m_lever = float(lever.balancing_moment[0])
     l_AB = math.dist(lk.sketch[lk.drive_axis], lk.sketch[lk.drive_tip])
     moving = sorted(lk.moving)

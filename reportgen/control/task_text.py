@@ -99,7 +99,7 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
             out.append(f"points = {toml_value(names)}")
             out.append(f"length = {L['l_' + ''.join(sorted(names))]!r}")
         else:
-            order, straight = _bar_or_triangle(P, tuple(names))
+            order, straight = _bar_or_triangle(P, (names[0], names[1], names[2]))
             out.append(f"points = {toml_value(order)}")
             sides = {}
             for a, b in itertools.combinations(order, 2):
