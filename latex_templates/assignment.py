@@ -3,11 +3,12 @@ the introduction's paragraphs about this mechanism."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
 from .note import Section
-from .render import Strings
+from .render import Strings, Tex
 
 
 def _lang(project) -> str:
@@ -16,7 +17,7 @@ def _lang(project) -> str:
 
 def assignment_section(project) -> Section:
     task = project.task
-    ctx: dict = {"mech": None, "gears": task.gears, "planetary": task.planetary, "dynamics": task.dynamics,
+    ctx: dict = {"mech": None, "control": None, "gears": task.gears, "planetary": task.planetary, "dynamics": task.dynamics,
                  "analysis": task.analysis}
     figures: dict = {}
     strings = Strings(_lang(project))
@@ -59,8 +60,56 @@ def assignment_section(project) -> Section:
                        "omega": mech.drive.omega, "drive": mech.drive.link, "g": mech.g,
                        "rules": mech.mass_rules, "any_rule": any(not ln.mass_given for ln in mech.links),
                        "n_rpm": abs(mech.drive.omega) * 30 / math.pi}
+    cw = task.control_work
+    if cw is not None and cw.table is not None and cw.variant is not None:
+        from reportgen.control.tables import table
+        t = table(cw.table)
+        ctx["control"] = {"table": t.number, "variant": cw.variant, "page": t.page,
+                          "columns": [(label_tex(c.label), c.printed[cw.variant - 1]) for c in t.columns],
+                          "scheme": scheme_phrases(t.scheme, strings)}
     return Section(key="assignment", title=strings.get("headings.assignment"), template="assignment.tex.j2",
                    context=ctx, figures=figures)
+
+
+def _expr_tex(expr: str) -> str:
+    """A scheme expression of the table's quantities as math: "l_AD + a" → "l_{AD} + a"."""
+    return re.sub(r"l_([A-Z]+)", r"l_{\1}", expr.replace("*", r" \cdot ")).replace("+ -", "- ")
+
+
+def label_tex(label: str) -> Tex:
+    """A printed column heading as LaTeX: "lCE =lEF, м" → "$l_{CE} = l_{EF}$, м", "ϕ , °" → "$\\varphi$, °"."""
+    name, _, unit = label.partition(",")
+    parts = []
+    for p in (x.strip() for x in name.split("=")):
+        p = p.replace("А", "A").replace("а", "a")
+        if p.startswith("l") and len(p) > 1:
+            parts.append(f"l_{{{p[1:].strip()}}}")
+        elif p == "ϕ":
+            parts.append(r"\varphi")
+        elif p == "ω1":
+            parts.append(r"\omega_1")
+        else:
+            parts.append(p)
+    unit = unit.strip()
+    return Tex("$" + " = ".join(parts) + "$" + (f", {unit}" if unit else ""))
+
+
+def scheme_phrases(sc, strings) -> list:
+    """The reconstructed scheme of a control-work table in words (strings control.scheme.*)."""
+    out = [strings.get("control.scheme.d").format(x=Tex(_expr_tex(sc.D[0])), y=Tex(_expr_tex(sc.D[1])))]
+    if sc.e_kind == "bar":
+        out.append(strings.get("control.scheme.e_bar").format(link=sc.e_link, p=sc.e_from, q=sc.e_toward,
+                                                              d=Tex(_expr_tex(sc.e_distance))))
+    elif sc.e_kind == "triangle":
+        out.append(strings.get("control.scheme.e_triangle").format(
+            link=sc.e_link, p=sc.e_from, q=sc.e_toward, d1=Tex(_expr_tex(sc.e_distances[0])),
+            d2=Tex(_expr_tex(sc.e_distances[1]))))
+    else:
+        out.append(strings.get("control.scheme.e_none").format(p=sc.f_from, s=sc.slider))
+    key = "control.scheme.guide_vertical" if abs(sc.guide_angle_deg - 90.0) < 1e-9 else "control.scheme.guide_horizontal"
+    coord = sc.guide_through[0] if key.endswith("vertical") else sc.guide_through[1]
+    out.append(strings.get(key).format(s=sc.slider, x=Tex(_expr_tex(coord))))
+    return out
 
 
 def introduction_paragraphs(project, left_out) -> list:
@@ -76,7 +125,7 @@ def introduction_paragraphs(project, left_out) -> list:
         text = strings.get("intro.object").format(
             name=name, link=mech.drive.link, omega=Tex(num(abs(mech.drive.omega))),
             sense=strings.get("intro.ccw" if mech.drive.omega > 0 else "intro.cw"))
-        st = project.strokes
+        st = project.strokes if task.document.kind != "control-work" else None
         if st is not None:
             key = "intro.output_slider" if st.output.kind == "slider" else "intro.output_rocker"
             text = Tex(text + " ") + strings.get(key).format(

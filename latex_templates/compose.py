@@ -27,8 +27,16 @@ CRANE_SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("trolley", ("crane_trolley",)),
 )
 
+
+#: The control work (``[document] kind = "control-work"``, manual §7): one position, the plans with the
+#: ω/ε table, the loads and Zhukovsky's lever with the power-balance check; no cycle, no reactions.
+CONTROL_SECTIONS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("linkage", ("structure", "kinematics")),
+    ("kinetostatics", ("kinetostatics",)),
+)
+
 #: The section lists of each kind of document ([document] kind, or Task.kind's inference).
-DOCUMENT_SECTIONS = {"course-project": SECTIONS, "crane": CRANE_SECTIONS}
+DOCUMENT_SECTIONS = {"course-project": SECTIONS, "crane": CRANE_SECTIONS, "control-work": CONTROL_SECTIONS}
 
 
 @dataclass(frozen=True)

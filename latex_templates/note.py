@@ -86,7 +86,8 @@ from reportgen.task import Document
         self.assignment = assignment
         self.extra_preamble = extra_preamble
         self.sections: list[Section] = []
-        self.strings = strings if strings is not None else Strings(self.language)
+        self.strings = strings if strings is not None else Strings(
+            self.language, overlay="control.overrides" if getattr(document, "kind", "") == "control-work" else None)
         self.symbols = SymbolTracker()
         self.last_build: BuildReport | None = None
 

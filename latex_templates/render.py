@@ -154,22 +154,30 @@ class Strings:
     naming the key and the language (no fallback to another language).
     """
 
-    def __init__(self, language: str) -> None:
+    def __init__(self, language: str, overlay: str | None = None) -> None:
+        """``overlay``: a table of the catalogue whose keys replace the same keys at the top level
+        (``control.overrides``: the words of a control work where a course project has its own)."""
         if language not in LANGUAGES:
             raise OptionError("language", f"{language!r} has no strings catalogue", "one of " + ", ".join(LANGUAGES))
         self.language = language
         self._data = _load_strings(language)
         self.fallbacks: set[str] = set()     # always empty: kept for callers that report it
+        self._overlay = overlay
+
+    def _find(self, key: str) -> Any:
+        found = _lookup(self._data, f"{self._overlay}.{key}") if self._overlay else None
+        return found if found is not None else _lookup(self._data, key)
 
     def raw(self, key: str) -> Any:
-        """The catalogue value at a dotted key (str, list or dict), unrendered."""
-        found = _lookup(self._data, key)
+        """The catalogue value at a dotted key (str, list or dict), unrendered; the overlay's
+        value first where it has the key."""
+        found = self._find(key)
         if found is None:
             raise MissingString(key, self.language)
         return found
 
     def has(self, key: str) -> bool:
-        return _lookup(self._data, key) is not None
+        return self._find(key) is not None
 
     def get(self, key: str) -> Any:
         """The string (or list, or table) at a dotted key, as ``Tex``."""

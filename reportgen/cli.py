@@ -22,7 +22,7 @@ from .errors import ReportgenError, ReportgenInputError
 # Sub-command modules, in the order `reportgen --help` lists them.
 DEBUG_ENV = "REPORTGEN_DEBUG"  # set to print the traceback of an internal error
 
-COMMANDS: tuple[str, ...] = ("build", "solve", "gear", "planetary", "crane", "bench")
+COMMANDS: tuple[str, ...] = ("build", "solve", "new", "batch", "check", "gear", "planetary", "crane", "bench")
 
 
 def make_parser() -> argparse.ArgumentParser:

@@ -120,6 +120,23 @@ class AssemblyError(ReportgenInputError):
         super().__init__(msg)
 
 
+class IncompleteCycleError(ReportgenInputError):
+    """A stage needs the crank's full turn but the mechanism assembles only over ``feasible`` (deg).
+
+    ``stage`` names what needs the full cycle (diagrams, dynamics, extreme positions, …). One-position
+    analyses (``solve --at``, the plans, the kinetostatics at an angle in range) still work.
+    """
+
+    def __init__(self, stage: str, feasible: tuple[tuple[float, float], ...]) -> None:
+        self.stage = stage
+        self.feasible = feasible
+        rng = ", ".join(f"{a:.1f}°…{b:.1f}°" for a, b in feasible) or "no crank angle"
+        super().__init__(f"{stage} needs the crank's full turn, but the mechanism cannot be assembled at "
+                         f"every crank angle: it assembles only for φ1 in {rng}; analyse single positions "
+                         f"in that range instead "
+                         f"(solve --at DEG, [analysis] start = DEG with positions = 1 in a control work)")
+
+
 class SingularPositionError(ReportgenError, ArithmeticError):
     """A linear system of a group is singular (a dead centre) at crank angle ``phi_deg``."""
 

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .errors import TaskError
+from .errors import IncompleteCycleError, TaskError
 from .kinematics import KinematicModel, KinematicsResult
 from .kinematics.extremes import NoExtremesError, Strokes, find_strokes
 from .linkage import Linkage, compile_linkage
@@ -62,8 +62,32 @@ class Project:
         return KinematicModel(self.linkage, self.structure)
 
     @cached_property
+    def feasible_deg(self) -> tuple[tuple[float, float], ...]:
+        """Crank-angle ranges (deg) where the mechanism assembles; ((0, 360),) when it turns fully."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return self.model.feasible_ranges()
+
+    @property
+    def full_cycle(self) -> bool:
+        """The crank can turn fully (every group assembles at every crank angle)."""
+        r = self.feasible_deg
+        return len(r) == 1 and r[0][0] <= 0.0 and r[0][1] >= 360.0
+
+    def need_full_cycle(self, stage: str) -> None:
+        """Refuse ``stage`` (IncompleteCycleError with the feasible range) if the crank cannot turn fully."""
+        if not self.full_cycle:
+            raise IncompleteCycleError(stage, self.feasible_deg)
+
+    @cached_property
     def strokes(self) -> Strokes | None:
-        """Extreme positions of the output; None if the output turns fully (no dead centres)."""
+        """Extreme positions of the output; None if the output turns fully (no dead centres), or if
+        the crank cannot turn fully and nothing needs them (a production resistance over the strokes
+        does: it is refused with the feasible range)."""
+        if not self.full_cycle:
+            mech = self._need_mechanism()
+            if any(ld.kind == "resistance" for ld in mech.loads):
+                self.need_full_cycle("the production resistance (given over the working stroke)")
+            return None
         try:
             return find_strokes(self.model)
         except NoExtremesError:
@@ -77,6 +101,7 @@ class Project:
         a = self.task.analysis
         sgn = 1.0 if self.model.omega >= 0 else -1.0
         if a.start == "extreme":
+            self.need_full_cycle('[analysis] start = "extreme" (the extreme positions)')
             if self.strokes is None:
                 raise TaskError("analysis.start", "the output link has no extreme position (it turns fully)",
                                 "a crank angle in degrees")
@@ -139,11 +164,15 @@ class Project:
         (None if the task has no [dynamics] or no [mechanism])."""
         if self.task.dynamics is None or self.task.mechanism is None:
             return None
+        self.need_full_cycle("[dynamics] (the motion over a cycle and the flywheel)")
         from .dynamics import dynamics_of
         return dynamics_of(self)
 
     def loads_at(self, kin: KinematicsResult, inertia: bool = True):
         """External loads (+ inertia) at the positions of ``kin``."""
         from .loads import external_loads, inertia_loads
-        ls = external_loads(self._need_mechanism(), self.linkage, self.model, kin, self.strokes)
+        mech = self._need_mechanism()
+        # the strokes (a search over the whole turn) only when a resistance is given over them
+        strokes = self.strokes if any(ld.kind == "resistance" for ld in mech.loads) else None
+        ls = external_loads(mech, self.linkage, self.model, kin, strokes)
         return ls + inertia_loads(self.linkage, kin) if inertia else ls

@@ -79,6 +79,12 @@ def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
         if "kinetostatics" in sections:
             from .kinetostatics.results import kinetostatics_block, kinetostatics_of
             out["kinetostatics"] = kinetostatics_block(kinetostatics_of(project, force_at_deg), project)
+    if project.task.mechanism is not None and project.task.document.kind == "control-work" \
+            and "kinetostatics" in sections:
+        from .control.analysis import control_work_of
+        cw = project.task.control_work
+        out["control_work"] = {"table": cw.table if cw else None, "variant": cw.variant if cw else None,
+                               **control_work_of(project).answers()}
     if "dynamics" in sections and project.task.mechanism is not None and project.task.dynamics is not None:
         from .dynamics import dynamics_block, dynamics_of
         out["dynamics"] = dynamics_block(dynamics_of(project))

@@ -188,6 +188,15 @@ class Planetary:
 
 
 @dataclass(frozen=True)
+class ControlWork:
+    """``[control_work]``: the assignment of a control work (seed 001, §7–8; docs/control-work.md)."""
+    table: int | None = None              # the manual's table 1…22 (None: a mechanism of one's own)
+    variant: int | None = None            # 1…10
+    sheet: str = "A1"                     # "A1" or "A3"
+    tolerance_percent: float = 5.0        # accepted deviation of a value read from a construction
+
+
+@dataclass(frozen=True)
 class Task:
     """The whole assignment. A section the file leaves out is None."""
     document: Document = Document()
@@ -197,6 +206,7 @@ class Task:
     gears: Gears | None = None
     planetary: Planetary | None = None
     crane: "Crane | None" = None    # the hoist and trolley travel of a bridge crane (docs/crane.md)
+    control_work: ControlWork | None = None
     source: str = ""
 
     @property

@@ -19,12 +19,12 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from .errors import TaskError, TaskSyntaxError
-from .task import (DEFAULT_LAW, Analysis, Document, Drive, Dynamics, Flywheel, Gears,
+from .task import (DEFAULT_LAW, Analysis, ControlWork, Document, Drive, Dynamics, Flywheel, Gears,
                    Link, Load, MassRules, Mechanism, Planetary, Slide, Task, Vec2, frozen_mapping)
 from .taskfile_values import (Array, Int, OneOf, Spec, Table, Word, array_of_tables, check_keys, fmt,
                               index, join, show, suggest)
-from .taskspec import (INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, MIN_LENGTH, POINT_NAME, POINT_XY,
-                       SECTION)
+from .taskspec import (COURSE_POSITIONS, INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, MIN_LENGTH,
+                       POINT_NAME, POINT_XY, SECTION)
 from .tolerances import RTOL_EQUAL
 
 __all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "MIN_LENGTH", "COLLINEAR_RTOL"]
@@ -50,6 +50,7 @@ DYNAMICS_KEYS = SECTION["dynamics"].names
 FLYWHEEL_KEYS = SECTION["dynamics.flywheel"].names
 GEARS_KEYS = SECTION["gears"].names
 PLANETARY_KEYS = SECTION["planetary"].names
+CONTROL_WORK_KEYS = SECTION["control_work"].names
 
 _LENGTH = LENGTH
 _INERTIA = INERTIA
@@ -112,7 +113,8 @@ def parse_task(data: dict, source: str = "") -> Task:
     top = Table(data, "", TOP_KEYS, "a TOML document (a table of sections)")
     document = _document(top.raw("document"), "document") if "document" in top else Document()
     mechanism = _mechanism(top.raw("mechanism"), "mechanism") if "mechanism" in top else None
-    analysis = _analysis(top.raw("analysis"), "analysis") if "analysis" in top else Analysis()
+    control = document.kind == "control-work"         # a control work: one position may be enough
+    analysis = _analysis(top.raw("analysis"), "analysis", control) if "analysis" in top else Analysis()
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
@@ -129,8 +131,15 @@ def parse_task(data: dict, source: str = "") -> Task:
             "at least one of the sections [mechanism] (a linkage: note sections 1–3, sheets 1–3), "
             "[gears] (a gear pair: section 4, sheet 4), [planetary] (a planetary reducer) or [crane] "
             "(a bridge crane: the crane note and its sheets)")
+    control_work = _control_work(top.raw("control_work"), "control_work") if "control_work" in top else None
+    if control:
+        if mechanism is None:
+            raise TaskError("document.kind", '"control-work" but the task has no [mechanism]',
+                            "a [mechanism] section (reportgen new --table T --variant V writes one)")
+        if control_work is None:
+            control_work = ControlWork()
     task = Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
-                gears=gears, planetary=planetary, crane=crane, source=str(source))
+                gears=gears, planetary=planetary, crane=crane, control_work=control_work, source=str(source))
     language = document.language or "ru"
     if task.kind in RUSSIAN_ONLY_KINDS and language != "ru":
         raise TaskError("document.language", f"{language!r}: the {task.kind} document is written in "
@@ -140,6 +149,11 @@ def parse_task(data: dict, source: str = "") -> Task:
 
 #: Kinds of document whose words exist only in the Russian catalogue (docs/languages.md).
 RUSSIAN_ONLY_KINDS = ("crane", "control-work")
+
+
+def _control_work(value: Any, path: str) -> ControlWork:
+    t = Table(value, path, CONTROL_WORK_KEYS)
+    return ControlWork(**{key: _get(t, "control_work", key) for key in CONTROL_WORK_KEYS})
 
 
 # ========================================================================================= document
@@ -594,9 +608,10 @@ def _load(value: Any, path: str, links: Mapping[int, Link]) -> Load:
 
 
 # ====================================================================== analysis, dynamics, gears…
-def _analysis(value: Any, path: str) -> Analysis:
+def _analysis(value: Any, path: str, control: bool = False) -> Analysis:
     t = Table(value, path, ANALYSIS_KEYS)
-    positions = _get(t, "analysis", "positions")
+    positions = _get(t, "analysis", "positions") if control \
+        else t.get("positions", COURSE_POSITIONS, SECTION["analysis"].default("positions"))
     start = _get(t, "analysis", "start")
     fp_spec = OneOf(Word("max-load"), Int(ge=0, le=positions - 1, what="a position index"))
     force_position = t.get("force_position", fp_spec, SECTION["analysis"].default("force_position"))

@@ -14,7 +14,7 @@ from typing import Any, Literal
 
 from .crane.taskspec import crane_sections
 from .errors import NameLookupError
-from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
+from .task import (LANGUAGES, LINK_KINDS, Analysis, ControlWork, Document, Dynamics, Flywheel, Gears, Load, MassRules,
                    Mechanism, Planetary)
 from .taskfile_values import REQUIRED, Array, Bool, Int, NameMap, Number, OneOf, Spec, Str, Word, vec2
 
@@ -27,8 +27,9 @@ MAX_LENGTH = 1000.0
 #: mechanism within a sheet (1:50000 … (100·n):1).
 MIN_LENGTH = 1e-6
 
-#: Kinds of document ([document] kind; docs/crane.md): the ТММ course project and the crane note.
-DOCUMENT_KINDS = ("course-project", "crane")
+#: Kinds of document ([document] kind): the ТММ course project, the crane note (docs/crane.md) and
+#: the control work (docs/control-work.md).
+DOCUMENT_KINDS = ("course-project", "crane", "control-work")
 
 
 class _Optional:
@@ -113,7 +114,9 @@ LAW_PAIR = Array(Number(ge=0, le=1), 2, 2,
                  what="[fraction of the stroke, fraction of the maximum], both numbers in [0, 1]")
 LAW = Array(LAW_PAIR, 2, what="an array of at least 2 pairs [stroke fraction, load fraction] in [0, 1], "
                               "from [0, …] to [1, …]")
-POSITIONS = Int(ge=3, le=360)
+#: ``positions`` as documented (1 for a control work); the loader narrows a course project to ≥ 3.
+POSITIONS = Int(ge=1, le=360)
+COURSE_POSITIONS = Int(ge=3, le=360)
 #: ``force_position`` as documented; the loader narrows the index to ``positions - 1``.
 FORCE_POSITION = OneOf(Word("max-load"), Int(ge=0, le=359, what="a position index"))
 TEETH = Int(ge=5, le=1000, what="a number of teeth: an integer")
@@ -124,6 +127,8 @@ LOAD_KINDS = ("resistance", "force", "moment")
 STROKES = ("working", "idle", "both")
 FLYWHEEL_SHAPES = ("disk", "rim")
 PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-row-int-int")
+SHEET_FORMATS = ("A1", "A3")
+
 
 def _dflt(cls: type, name: str) -> Any:
     """The default of field ``name`` of the task dataclass ``cls`` (the loader's default)."""
@@ -147,6 +152,8 @@ SECTIONS: tuple[Section, ...] = (
                     "no planetary gear", table="planetary"),
                 Key("crane", None, "a bridge crane: hoist and trolley travel (another kind of document, "
                     "docs/crane.md)", None, OPTIONAL, "no crane", table="crane"),
+                Key("control_work", None, "the assignment of a control work (seed 001)", None, OPTIONAL,
+                    "none; its defaults with document.kind = \"control-work\"", table="control_work"),
             )),
     Section("document", "title page", "Words of the title page and title blocks; all optional.", (
         Key("title", Str(), "title of the project", "Проектирование и исследование механизма пресса",
@@ -162,8 +169,10 @@ SECTIONS: tuple[Section, ...] = (
         Key("code", Str(nonempty=True), "the project's designation: sheet k is <code>.00k, the note "
             "<code>.000 ПЗ (title blocks, graph 2)", "ТММ.КП.01.00", _dflt(Document, "code")),
         Key("language", Word(*LANGUAGES), "language of the note and the sheets", "ru", _dflt(Document, "language")),
-        Key("kind", Word(*DOCUMENT_KINDS), "the kind of document; left out: \"crane\" for a task with "
-            "[crane], else \"course-project\" (the ТММ note)", "crane", _dflt(Document, "kind")),
+        Key("kind", Word(*DOCUMENT_KINDS), "the kind of document: \"course-project\" (the ТММ note of "
+            "sections 1–4 and its sheets), \"crane\" (docs/crane.md) or \"control-work\" (one position: the "
+            "note of the control work and its one sheet; needs [mechanism]); left out: \"crane\" for a task "
+            "with [crane], else \"course-project\"", "crane", _dflt(Document, "kind")),
     )),
     Section("mechanism", "the linkage", "The links, their pairs, the drive, masses and loads.", (
         Key("name", Str(), "name of the mechanism in the note", "Механизм пресса", ""),
@@ -277,13 +286,24 @@ SECTIONS: tuple[Section, ...] = (
     Section("analysis", "what the sheets and tables show",
             "The crank angle φ1 is the angle of the crank vector (axis → moving point) from +x, "
             "counter-clockwise, in degrees.", (
-                Key("positions", POSITIONS, "equally spaced crank positions for plans and tables", 8,
+                Key("positions", POSITIONS, "equally spaced crank positions for plans and tables "
+                    "(at least 3 in a course project; 1 in a control work)", 8,
                     _dflt(Analysis, "positions")),
                 Key("start", OneOf(Word("extreme"), Number(ge=-360, le=360, unit="degrees (a crank angle)")),
                     "position 0: \"extreme\" (the output link at the start of the working stroke) or a "
                     "crank angle", "extreme", _dflt(Analysis, "start")),
                 Key("force_position", FORCE_POSITION, "the position analysed on the kinetostatics sheet: "
                     "an index below `positions`, or \"max-load\"", 2, _dflt(Analysis, "force_position")),
+            )),
+    Section("control_work", "the control work", "The assignment of a control work (course manual of seed "
+            "001, §7–8; docs/control-work.md): `reportgen new --table T --variant V` writes it.", (
+                Key("table", Int(ge=1, le=22, what="a table of the manual, 1…22"), "the manual's table", 1,
+                    OPTIONAL, "none (a mechanism of one's own)"),
+                Key("variant", Int(ge=1, le=10, what="a variant, 1…10"), "the variant of the table", 1,
+                    OPTIONAL, "none"),
+                Key("sheet", Word(*SHEET_FORMATS), "format of the one sheet", "A1", _dflt(ControlWork, "sheet")),
+                Key("tolerance_percent", Number(gt=0, le=100, unit="%"), "accepted deviation of a value read "
+                    "from a construction (reportgen check)", 5.0, _dflt(ControlWork, "tolerance_percent")),
             )),
     Section("dynamics", "the flywheel", "", (
         Key("delta", Number(gt=0, lt=1), "coefficient of non-uniformity δ", 0.05),

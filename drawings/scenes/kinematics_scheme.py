@@ -41,6 +41,10 @@ class SchemeData:
 
 
 def scheme_data(project: Project, analysed: int) -> SchemeData:
+    if project.task.document.kind == "control-work" or not project.full_cycle:
+        # one position (a control work) or a crank that cannot turn fully: no traces, no strokes
+        kin = project.kinematics
+        return SchemeData(kin, kin, None, tuple(sorted({0, analysed})), analysed, False)
     phis = np.linspace(0.0, 2 * math.pi, DENSE, endpoint=False)
     dense = project.model.solve(project.phi[0] + phis)
     st = project.strokes
@@ -78,11 +82,16 @@ def _guide_dir(kin: KinematicsResult, i: int, slide) -> np.ndarray:
     return rot(np.array([kin.q[i][slide.guide, 2]]), tuple(slide.line_dir))[0]
 
 
-def bounds(data: SchemeData) -> tuple[float, float, float, float]:
-    """Model bounds of everything the view draws (m)."""
+def bounds(data: SchemeData, linkage=None) -> tuple[float, float, float, float]:
+    """Model bounds of everything the view draws (m); with ``linkage``, the crank circle's too
+    (one position: no traces hold it)."""
     arrs = [np.asarray(m.pos) for m in data.kin.points.values()]
     arrs += [np.asarray(m.pos) for m in data.dense.coms.values()]
     arrs += [np.asarray(m.pos) for m in data.dense.points.values()]
+    if linkage is not None:    # the crank circle is always drawn
+        o = np.asarray(data.kin.points[linkage.drive_axis].pos)[0]
+        r = float(np.hypot(*(np.asarray(data.kin.points[linkage.drive_tip].pos)[0] - o)))
+        arrs.append(np.array([o - r, o + r]))
     allp = np.vstack(arrs)
     return (float(allp[:, 0].min()), float(allp[:, 1].min()), float(allp[:, 0].max()), float(allp[:, 1].max()))
 
@@ -112,7 +121,13 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_link_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
                  tr("sheets.ks01", v1=format_significant(mu_l, 4), scale_text=scale_text), 5.0, "bottom-center")
-    view.title(tr("sheets.ks02", v1=len(data.kin.phi)))
+    if project.task.document.kind == "control-work":
+        phi = math.degrees(float(data.kin.phi[data.analysed])) % 360.0
+        cw = project.task.control_work
+        key = "control.sheet.scheme_title_a3" if cw is not None and cw.sheet == "A3" else "control.sheet.scheme_title"
+        view.title(tr(key, phi=format_number(phi, 2)))
+    else:
+        view.title(tr("sheets.ks02", v1=len(data.kin.phi)))
 
 
 def _inside(view: View) -> Polygon:

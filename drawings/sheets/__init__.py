@@ -24,9 +24,14 @@ def sheet_module(name: str) -> ModuleType | None:
     return optional_module(f"drawings.sheets.{name}")
 
 
+#: The control work (``[document] kind = "control-work"``) has one sheet of its own.
+CONTROL_SHEETS: tuple[str, ...] = ("control",)
+
+
 def available_sheets(project) -> list[tuple[str, ModuleType]]:
     out: list[tuple[str, ModuleType]] = []
-    for name in SHEETS:
+    control = project.task.document.kind == "control-work"
+    for name in (CONTROL_SHEETS if control else SHEETS):
         mod = sheet_module(name)
         if mod is not None and mod.available(project):
             out.append((f"sheet{len(out) + 1}-{name}", mod))

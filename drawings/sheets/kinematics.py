@@ -72,15 +72,17 @@ def image_keys(project: Project) -> set[str]:
     return set(v.points)
 
 
-def draw(project: Project, number: int, count: int) -> Sheet:
-    """The sheet at the largest ГОСТ scale of the scheme with which every view fits."""
+def draw(project: Project, number: int, count: int, *, control: bool = False) -> Sheet:
+    """The sheet at the largest ГОСТ scale of the scheme with which every view fits. ``control``:
+    the control work's one sheet (:mod:`drawings.sheets.control`): the lever instead of the
+    diagrams and the small plans, on A1 or A3 as ``[control_work] sheet`` says."""
     i = analysed_position(project)
     data = ks.scheme_data(project, i)
-    b = ks.bounds(data)
+    b = ks.bounds(data, project.linkage)
     failure: BuildError | None = None
     for k, scale_text in scheme_scales(b):
         try:
-            return draw_at(project, number, count, data, b, k, scale_text)
+            return draw_at(project, number, count, data, b, k, scale_text, control=control)
         except BuildError as exc:
             if exc.stage != "sheet layout":
                 raise
@@ -97,13 +99,19 @@ def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str
 
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
-            b: tuple[float, float, float, float], k: float, scale_text: str) -> Sheet:
-    sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
+            b: tuple[float, float, float, float], k: float, scale_text: str, *, control: bool = False) -> Sheet:
+    if control:
+        from . import control as cs
+        sheet = cs.new_sheet(project, number, count)
+    else:
+        sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     i = data.analysed
-    scheme = add_scheme_view(sheet, b, k)
+    scheme = add_scheme_view(sheet, b, k, min_width=cs.SCHEME_MIN_WIDTH_MM["A3" if cs.is_a3(project) else "A1"] if control else 0.0)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
+    if control:
+        cs.place_lever(sheet, project)
     # the diagrams
-    d = diagrams_of(project)
+    d = None if control else diagrams_of(project)
     if d is not None:
         st = project.strokes
         assert st is not None  # the diagrams are drawn between the extreme positions
@@ -111,12 +119,19 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
     keys = image_keys(project)
-    vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
+    if control and cs.is_a3(project):   # A3: the plans at round scales of their own (printed on it)
+        kin = project.kinematics
+        far_v = max(float(np.hypot(*np.asarray(m.vel[i]))) for m in kin.points.values())
+        far_a = max(float(np.hypot(*np.asarray(m.acc[i]))) for m in kin.points.values())
+        vplan, aplan = build_plans(project.linkage, project.structure, kin, i,
+                                   mu_v=round_scale(far_v, cs.A3_PLAN_MM), mu_a=round_scale(far_a, cs.A3_PLAN_MM))
+    else:
+        vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
     add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
     titles = (tr("sheets.sk103", i=i), tr("sheets.sk104", i=i))
     # the plans and the small plans (as large as the room left allows) share out the free field
     arrangement = arrange(sheet, [kp.view_size(vplan, titles[0])[:2], kp.view_size(aplan, titles[1])[:2]],
-                          lambda crank_mm: small_plans(project, crank_mm))
+                          (lambda _crank_mm: None) if control else (lambda crank_mm: small_plans(project, crank_mm)))
     for name, plan, title in (("plan_v", vplan, titles[0]), ("plan_a", aplan, titles[1])):
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
     if arrangement.small is not None:
@@ -237,11 +252,12 @@ def _grow(region, blocks: list[Block], rects: list[Rect], placed: list[Rect]) ->
     return rects
 
 
-def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float) -> View:
+def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float,
+                    min_width: float = 0.0) -> View:
     """The scheme's view: model bounds ``b`` at ``k`` mm per metre with padding, more below (the
-    scale caption) and above (the title)."""
+    scale caption) and above (the title); at least ``min_width`` mm wide (its title's width)."""
     left, bottom, right, top = SCHEME_PADS_MM
-    w = (b[2] - b[0]) * k + left + right
+    w = max((b[2] - b[0]) * k + left + right, min_width)
     h = (b[3] - b[1]) * k + bottom + top
     view = sheet.add_view("scheme", w, h, preferred="top-left")
     view.transform = Transform(k, (b[0], b[1]), (view.rect.x0 + left, view.rect.y0 + bottom))

@@ -117,11 +117,38 @@ def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
     return None
 
 
+def lever_panel_of(project: Project, max_mm: float | None = None):
+    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's);
+    ``max_mm``: the turned plan at a round μv of its own within that many mm (an A3 control sheet)."""
+    from drawings.scenes import kinetostatics_views as kv
+    from reportgen.kinetostatics.results import kinetostatics_of
+    from reportgen.kinetostatics.zhukovsky import turn_cw
+    ks = kinetostatics_of(project)
+    lk, g = project.linkage, kinetostatics_of(project).graphical
+    kin = ks.reactions.kin
+    mu_v = g.lever.scale
+    if max_mm is not None:
+        far = max(float(np.hypot(*np.asarray(m.vel)[0])) for m in kin.points.values())
+        mu_v = max(mu_v, round_scale(far, max_mm))
+    k_arm = g.lever.scale / mu_v            # the measured arms (mm at the note's μv) at this μv
+    points = {}
+    for name, mo in kin.points.items():
+        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
+        if float(np.hypot(*img)) > 1e-9:
+            points[name.lower()] = img
+    segments = []
+    for k in lk.moving:
+        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
+        segments += [("p", n) for n in names] + list(zip(names, names[1:]))
+    loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured * k_arm)
+             for t, f in zip(g.lever.terms, ks.lever.forces) if t.magnitude > 0.0]
+    return kv.lever_panel("lever", points, segments, loads, mu_v)
+
+
 def draw(project: Project, number: int, count: int) -> Sheet:
     from drawings import style
     from drawings.scenes import kinetostatics_views as kv
     from reportgen.kinetostatics.results import kinetostatics_of
-    from reportgen.kinetostatics.zhukovsky import turn_cw
 
     ks = kinetostatics_of(project)
     lk, st = project.linkage, project.structure
@@ -148,20 +175,8 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     polygons = [kv.polygon_panel(f"polygon {gg.key}", tr("sheets.sk205", v1=by_key[gg.key].label), gg.polygon)
                 for gg in g.groups]
     polygons.append(kv.polygon_panel("polygon crank", tr("sheets.sk206"), g.crank.polygon))
+    lever = lever_panel_of(project)
     kin = ks.reactions.kin
-    mu_v = g.lever.scale
-    points = {}
-    for name, mo in kin.points.items():
-        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
-        if float(np.hypot(*img)) > 1e-9:
-            points[name.lower()] = img
-    segments = []
-    for k in lk.moving:
-        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
-        segments += [("p", n) for n in names] + list(zip(names, names[1:]))
-    loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured)
-             for t, f in zip(g.lever.terms, ks.lever.forces) if t.magnitude > 0.0]
-    lever = kv.lever_panel("lever", points, segments, loads, mu_v)
 
     # the groups at the replica's μl (the note's); a smaller round scale only if nothing else fits
     pts = np.array([np.asarray(m.pos)[0] for m in kin.points.values()])

@@ -86,12 +86,19 @@ def content(project) -> PartContent:
     mu_l = Var("mu_l", r"\mu_l", mu_l_val, "м/мм", tr("kinematics.m01"))
     l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", tr("kinematics.m02", axis=axis, tip=tip))
     OA_mm = record(f"{axis}{tip}", "l_OA / mu_l", "мм", l_oa, mu_l, meaning=tr("kinematics.m09", axis=axis, tip=tip))
-    dense = np.linspace(0, 2 * math.pi, 121)
-    dk = project.model.solve(dense)
-    traces = {f"S{k}": np.asarray(dk.coms[k].pos) for k in lk.moving if lk.bodies[k].mass > 0}
-    traces[tip] = np.asarray(dk.points[tip].pos)
+    # a control work (one position) or a crank that cannot turn fully: no cycle, no traces, no strokes
+    control = project.task.document.kind == "control-work"
+    cycle = not control and project.full_cycle
+    traces = {}
+    dense_trans = {}
+    if cycle:
+        dense = np.linspace(0, 2 * math.pi, 121)
+        dk = project.model.solve(dense)
+        traces = {f"S{k}": np.asarray(dk.coms[k].pos) for k in lk.moving if lk.bodies[k].mass > 0}
+        traces[tip] = np.asarray(dk.points[tip].pos)
+        dense_trans = {g.key: float(np.min(dk.transmission_deg[g.key])) for g in st.groups[1:]}
     figures["kin_positions"] = positions_figure(lk, np.asarray(kin.q), (0, i) if i != 0 else (0,), traces)
-    strokes = project.strokes
+    strokes = project.strokes if cycle else None
     stroke_ctx = None
     if strokes is not None:
         wk = Var("phi_w", r"\varphi_\text{р.х}", strokes.working_deg, "°", tr("kinematics.m10"))
@@ -193,6 +200,12 @@ def content(project) -> PartContent:
                     [float(np.hypot(*np.asarray(kin.coms[k].acc[j]))) for k in moving] +
                     [float(kin.links[k].epsilon[j]) for k in moving if not _translates(lk, k)])
     rot_links = [k for k in moving if not _translates(lk, k)]
+    omega_eps_rows = []
+    if control:
+        sense = lambda x: tr("control.note.ccw" if x > 0 else "control.note.cw") if x != 0 else "---"  # noqa: E731
+        for k in [d] + rot_links:
+            w, e = float(kin.links[k].omega[i]), float(kin.links[k].epsilon[i])
+            omega_eps_rows.append([k, abs(w), sense(w), abs(e), sense(e)])
     # --- diagrams ------------------------------------------------------------------------------
     diag = None
     if strokes is not None:
@@ -216,10 +229,8 @@ def content(project) -> PartContent:
     figures["kin_aplan"] = plan_figure(aplan)
     trans = [{"key": g.key, "label": g.label, "min": float(np.min(kin.transmission_deg[g.key])),
               "at": int(np.argmin(kin.transmission_deg[g.key]))} for g in st.groups[1:]]
-    # minimal transmission angle over the whole turn
-    dense_trans = {g.key: float(np.min(dk.transmission_deg[g.key])) for g in st.groups[1:]}
     ctx = {
-        "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi),
+        "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi), "control": control, "omega_eps_rows": omega_eps_rows,
         "mu_l": mu_l, "OA_mm": OA_mm, "strokes": stroke_ctx, "out_rows": out_rows,
         "groups": [g.label for g in st.groups[1:]],
         "VA": VA, "mu_v": mu_v, "pa_mm": pa_mm, "pia_mm": aA.value / aplan.scale, "vplan": vplan, "vrows": vrows, "omega": omega_recs,
@@ -232,7 +243,7 @@ def content(project) -> PartContent:
         "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0),
     }
     concl = []
-    if stroke_ctx:
+    if stroke_ctx and strokes is not None:
         from ..numbers import num
         from ..render import Strings
         strings = Strings(project.task.document.language or "ru")

@@ -215,7 +215,8 @@ def content(project) -> PartContent:
     read_mags: dict[str, float] = {}
     groups_ctx = []
     by_key = {gr.key: gr for gr in st.groups}
-    for gg in g.groups:
+    control = project.task.document.kind == "control-work"   # the lever only: no reactions (manual §7)
+    for gg in (() if control else g.groups):
         grp = by_key[gg.key]
         tag = gg.key.replace("-", "_")
         figures[f"kst_group_{tag}"] = kf.free_body_figure(lk, q, grp.links, *_free_body(ks, grp, gg))
@@ -246,20 +247,49 @@ def content(project) -> PartContent:
                            "rows": _polygon_rows(gg.polygon), "reads": reads,
                            "unknown": [Tex(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
                            "mu_tr": ks.transmission_deg.get(gg.key)})
-    crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
-    lever_ctx = _lever(project, ks, counter, figures)
-    comparison = _comparison(ks, crank_ctx, lever_ctx)
-    cycle = _cycle(project, ks, figures)
+    if control:
+        lever_ctx = _lever(project, ks, counter, figures)
+        crank_ctx, comparison, cycle = None, None, None
+        power = _power_check(project, ks, lever_ctx)
+    else:
+        crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
+        lever_ctx = _lever(project, ks, counter, figures)
+        comparison = _comparison(ks, crank_ctx, lever_ctx)
+        cycle = _cycle(project, ks, figures)
+        power = None
     warnings = [{"group": gk, "label": by_key[gk].label, "mu": mu} for gk, mu in ks.transmission_deg.items()
                 if mu < WARN_TRANSMISSION_DEG]
     ctx = {"has_dynamics": project.task.dynamics is not None, "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
+           "control": control, "power": power,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
            "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky, "disc": ks.discrepancy_percent,
            "first_group": groups_ctx[0]["label"] if groups_ctx else "",
            "trans": [{"label": by_key[k].label, "mu": v} for k, v in ks.transmission_deg.items()],
            "width": {name: _width(fig) for name, fig in figures.items()}}
-    return PartContent("sections/kinetostatics.tex.j2", ctx, figures, _conclusions(project, ks, comparison))
+    concl = _control_conclusions(project, power) if control else _conclusions(project, ks, comparison)
+    return PartContent("sections/kinetostatics.tex.j2", ctx, figures, concl)
+
+
+def _power_check(project, ks, lever) -> dict:
+    """The check of P_у by the power balance (exact): M_у = −(ΣF·v + ΣM·ω)/ω1, and the deviation of
+    the lever's graphical value from it."""
+    from reportgen.control.analysis import control_work_of
+    cw = control_work_of(project, ks.phi_deg)
+    Mg = Var("M_g", "M_{\\text{у}}^{\\text{Ж}}", lever["M"].value, "Н·м", "уравновешивающий момент по рычагу")
+    Me = Var("M_e", "M_{\\text{у}}^{N}", cw.M_y_power, "Н·м", "уравновешивающий момент по балансу мощностей")
+    delta = record("\\delta_M", "100 * (M_g - M_e) / M_e", "%", Mg, Me, meaning="отклонение графического значения")
+    return {"M_exact": cw.M_y_power, "P_exact": cw.M_y_power / cw.l_AB, "delta": delta,
+            "M_lever_exact": cw.M_y, "dev_exact": cw.deviation_percent, "l_AB": cw.l_AB}
+
+
+def _control_conclusions(project, power) -> tuple[str, ...]:
+    from ..numbers import num
+    from ..render import Strings
+    strings = Strings(project.task.document.language or "ru")
+    return (strings.get("control.note.conclusion").format(
+        P=Tex(num(power["P_exact"], 5)), M=Tex(num(power["M_exact"], 5)),
+        delta=Tex(num(power["delta"].value, 2))),)
 
 
 def _width(fig) -> str:

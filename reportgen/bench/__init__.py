@@ -57,6 +57,8 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
     rep.tables.append(speed.builds_table(Path(task_path), quick))
     say("the solver")
     rep.tables.append(speed.solver_table(Path(task_path), quick))
+    say("control work: reportgen batch")
+    rep.tables.append(runs.batch_table(quick))
     say("pylinkage")
     rep.tables.append(speed.pylinkage_table(36 if quick else 360, 5 if quick else 25))
     rep.seconds = time.perf_counter() - t0

@@ -9,6 +9,11 @@ this module measures the press example (or the example given) across the stages 
 from __future__ import annotations
 
 import math
+import os
+import shutil
+import tempfile
+import time
+from pathlib import Path
 
 import numpy as np
 
@@ -204,4 +209,31 @@ def planetary_table(project, bounds) -> Table:
     dt, d = best_time(lambda: synthesize(scheme, target, tol, p.satellites, p.module), 3)
     t.notes.append(f"what `build` runs (synthesize: bounds grow from 128 until 6 sets are found): {ms(dt)} ms, "
                    f"z = {'/'.join(map(str, d.z))}, K = {d.satellites}")
+    return t
+
+
+# -- 7. the control work: answer keys and notes of many variants (reportgen batch) --------------------
+
+def batch_table(quick: bool) -> Table:
+    """Wall time of `reportgen batch`: the answer keys of every variant of the 22 tables, and the full
+    notes (PDF + sheet) of one table's 10 variants, with 1 and 2 processes (a cold output folder each)."""
+    from ..commands.batch import batch, variant_job
+    from ..control.tables import tables
+
+    t = Table("batch", "Wall time of `reportgen batch` (control work, seed 001)",
+              ["run", "variants", "processes", "time, s", "per variant, s"])
+    every = [variant_job(tb.number, v) for tb in tables() for v in range(1, 11)]
+    runs = [("answer keys, all tables", every if not quick else every[:20], True, (1, 2))]
+    if not quick and shutil.which("latexmk") is not None:
+        runs.append(("full notes (PDF + sheet), table 1", every[:10], False, (1, 2)))
+    for name, jobs, answers, procs in runs:
+        for j in procs:
+            with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
+                t0 = time.perf_counter()
+                out = batch(jobs, Path(tmp) / "out", answers_only=answers, workers=j, quiet=True)
+                dt = time.perf_counter() - t0
+            failed = sum(o.error is not None for o in out)
+            t.add(name, f"{len(jobs)}" + (f" ({failed} failed)" if failed else ""), j, sec(dt), sec(dt / len(jobs)))
+    t.notes.append("the failed variant is table 5, variant 7 (its printed triangle cannot be formed)")
+    t.notes.append(f"{os.cpu_count()} cores, shared with other work: times vary from run to run")
     return t

@@ -22,12 +22,13 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def write_atomic(path: str, text: str) -> None:
-    """Write through a temporary file in the same folder, so no half-written file is left."""
+def write_atomic(path: str, text: str, option: str = "--json") -> None:
+    """Write through a temporary file in the same folder, so no half-written file is left
+    (``option`` names the command-line option of ``path`` in the error)."""
     folder = os.path.dirname(os.path.abspath(path)) or "."
     if not os.path.isdir(folder):
-        raise OptionError("--json", f"the folder {folder} does not exist", "a path in an existing folder")
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".reportgen-", suffix=".json")
+        raise OptionError(option, f"the folder {folder} does not exist", "a path in an existing folder")
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".reportgen-", suffix=os.path.splitext(path)[1] or ".tmp")
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as f:
             f.write(text)

@@ -100,5 +100,6 @@ def dynamics_of(project) -> DynamicsResult:
     command's summary share it; until ``Project`` has a ``dynamics`` stage of its own)."""
     r = _CACHE.get(project)
     if r is None:
+        project.need_full_cycle("[dynamics] (the motion over a cycle and the flywheel)")
         r = _CACHE[project] = solve_dynamics(project)
     return r

@@ -17,9 +17,11 @@ def _russian(path) -> bool:
     return tomllib.loads(path.read_text(encoding="utf-8")).get("document", {}).get("language", "ru") == "ru"
 
 
-#: Russian examples with a linkage (examples/crane-hoist is another kind of document, docs/crane.md).
+#: Russian course-project examples with a linkage (examples/crane-hoist is another kind of document,
+#: docs/crane.md; the control work has no reactions and no sheet 2: tests/control).
 EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
-                  if _russian(p) and "\n[mechanism]" in "\n" + p.read_text(encoding="utf-8"))
+                  if _russian(p) and "\n[mechanism]" in "\n" + p.read_text(encoding="utf-8")
+                  and p.parent.name != "control-work")
 
 
 def project_of(example: str) -> Project:
