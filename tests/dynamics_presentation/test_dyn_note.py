@@ -51,7 +51,7 @@ def _content(project):
 
 def _note(project):
     # section 1 too: section 3 refers to its velocity plan (\ref{sec:kin-vplan})
-    sections, _ = compose(project, Strings("ru"), only=("kinematics", "dynamics"))
+    sections, _ = compose(project, Strings("ru"), only=("linkage", "dynamics"))
     assert [s.parts for s in sections][-1] == ("dynamics",)
     note = NoteBuilder(project.task.document)
     for s in sections:
