@@ -17,6 +17,8 @@ from .kinematics import KinematicModel, KinematicsResult
 from .kinematics.extremes import NoExtremesError, Strokes, find_strokes
 from .linkage import Linkage, compile_linkage
 from .structure import Structure, analyse_structure
+from .scenes.boxes import DEFAULT as DEFAULT_BOXES
+from .scenes.boxes import SceneBoxes
 from .task import Task
 
 
@@ -34,9 +36,10 @@ class PlanetaryStage:
 class Project:
     """Lazy, cached stages of one task. ``at_deg`` replaces the [analysis] positions."""
 
-    def __init__(self, task: Task, at_deg: list[float] | None = None):
+    def __init__(self, task: Task, at_deg: list[float] | None = None, boxes: SceneBoxes = DEFAULT_BOXES):
         self.task = task
         self.at_deg = list(at_deg) if at_deg else None
+        self.boxes = boxes
 
     def _need_mechanism(self):
         if self.task.mechanism is None:
@@ -86,6 +89,27 @@ class Project:
 
     def kinematics_at(self, phi_rad) -> KinematicsResult:
         return self.model.solve(phi_rad)
+
+    @cached_property
+    def analysed(self) -> int:
+        """The position analysed in detail (plans, kinetostatics): ``[analysis] force_position`` if
+        it is a position number, else 2 (clipped to the positions)."""
+        fp = self.task.analysis.force_position
+        n = len(self.phi)
+        i = fp if isinstance(fp, int) and not isinstance(fp, bool) else 2
+        return min(max(i, 0), n - 1)
+
+    @cached_property
+    def plans(self):
+        """The velocity and acceleration plans of the analysed position (reportgen.plans.Plan)."""
+        from .plans import build_plans
+        return build_plans(self.linkage, self.structure, self.kinematics, self.analysed)
+
+    @cached_property
+    def scenes(self):
+        """The constructions that the note and the sheets both draw (reportgen.scenes.stage.Scenes)."""
+        from .scenes.stage import Scenes
+        return Scenes(self)
 
     @cached_property
     def gears(self):

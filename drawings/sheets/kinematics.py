@@ -25,7 +25,8 @@ from reportgen.project import Project
 NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
 TITLE = "Кинематический анализ рычажного механизма"
 
-#: The scheme's view (with its padding) is at most this big, mm.
+#: The scheme's view (with its padding) is at most this big, mm (the drawing's own box is
+#: ``project.boxes.scheme``, this less ``SCHEME_PADS_MM``).
 SCHEME_MAX_MM = (470.0, 400.0)
 #: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
@@ -48,11 +49,8 @@ def code(number: int) -> str:
 
 
 def analysed_position(project: Project) -> int:
-    """The position the note analyses: ``[analysis] force_position`` if it is an index, else 2."""
-    fp = project.task.analysis.force_position
-    n = len(project.phi)
-    i = fp if isinstance(fp, int) else 2
-    return min(max(i, 0), n - 1)
+    """The position the note analyses (the project's stage)."""
+    return project.analysed
 
 
 def diagrams_of(project: Project) -> Diagrams | None:
@@ -64,17 +62,17 @@ def diagrams_of(project: Project) -> Diagrams | None:
 
 def image_keys(project: Project) -> set[str]:
     """Plan letters that are images of mechanism points (not the helper points n…, k…)."""
-    v, _ = build_plans(project.linkage, project.structure, project.kinematics, 0)
-    return set(v.points)
+    return set(project.plans[0].points)
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:
-    """The sheet at the largest ГОСТ scale of the scheme with which every view fits."""
+    """The sheet at the scale of the plan of positions (``project.scenes.positions``, the largest
+    ГОСТ scale that fits the scheme's box); a smaller one only if the other views do not fit."""
     i = analysed_position(project)
     data = ks.scheme_data(project, i)
     b = ks.bounds(project, data)
     failure: BuildError | None = None
-    for k, scale_text in scheme_scales(b):
+    for k, scale_text in project.scenes.positions_scales:
         try:
             return draw_at(project, number, count, data, b, k, scale_text)
         except BuildError as exc:
@@ -83,15 +81,6 @@ def draw(project: Project, number: int, count: int) -> Sheet:
             failure = exc
     assert failure is not None
     raise failure
-
-
-def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str]]:
-    """ГОСТ 2.302 scales to try for the scheme, the largest that fits ``SCHEME_MAX_MM`` first."""
-    width, height = b[2] - b[0], b[3] - b[1]
-    k, _ = ks.gost_scale(width, height, SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
-                         SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
-    out = [(1000.0 * p / r, f"{format_number(p, 1)}:{format_number(r, 1)}") for p, r in ks.GOST_SCALES]
-    return [c for c in out if c[0] <= k * (1 + 1e-9)]
 
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
@@ -108,7 +97,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
     keys = image_keys(project)
-    vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
+    vplan, aplan = project.plans
     add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
     titles = (f"План скоростей, положение {i}", f"План ускорений, положение {i}")
     # the plans and the small plans (as large as the room left allows) share out the free field

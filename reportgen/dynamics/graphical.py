@@ -24,26 +24,20 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle
 
 #: Reading accuracy of a length measured on the sheet, mm.
 READING_MM = 0.5
-#: Mantissas of the scale factors (ГОСТ 2.302-like round values).
-NICE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0)
+#: Mantissas of the scale factors (ГОСТ 2.302-like round values; 10 closes the decade).
+NICE = (*PLAN_SERIES, 10.0)
 #: Enlargements allowed from the work diagram to the ΔE diagram (μE = μA / k).
 ENLARGE = (1, 2, 4, 5, 10)
 
 
 def nice_ceil(x: float) -> float:
-    """The smallest round scale factor ≥ x (mantissa in NICE)."""
-    if x <= 0 or not math.isfinite(x):
-        return 1.0
-    e = math.floor(math.log10(x))
-    for m in NICE:
-        v = m * 10.0 ** e
-        if v >= x * (1 - 1e-12):
-            return v
-    return 10.0 ** (e + 1)
+    """The smallest round scale factor ≥ x (:func:`reportgen.scenes.scales.round_up`)."""
+    return round_up(x, PLAN_SERIES)
 
 
 @dataclass(frozen=True)

@@ -2,7 +2,8 @@
 what a student draws and measures, computed from the exact solution, with the deviation of each read
 value from the exact one.
 
-- Scales: a round scale μ = m·10^k with m ∈ {1, 2, 2.5, 5} (:data:`ROUND_MANTISSAS`), the smallest
+- Scales: a round scale μ = m·10^k with m ∈ {1, 2, 2.5, 5} (:data:`ROUND_MANTISSAS`; the one rule of
+  :mod:`reportgen.scenes.scales`), the smallest
   one that draws the largest vector within ``max_mm`` — so the largest vector lies in
   (max_mm/2, max_mm] mm. Forces μF (N/mm): the largest vector within 200 mm, or — where that draws
   the polygon larger — the whole polygon within 400 × 180 mm (a flat polygon of two large, nearly
@@ -33,12 +34,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..linkage import Linkage
+from ..scenes.scales import FORCE_SERIES
+from ..scenes.scales import round_scale as _round_scale
 from ..structure import Group, Structure
 from .reactions import Reactions, _cross, _Known, _ro, pair_name, perp, solve_group
 from .zhukovsky import Lever, turn_cw
 
-#: Mantissas of a round scale.
-ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0)
+#: Mantissas of a round scale (:data:`reportgen.scenes.scales.FORCE_SERIES`).
+ROUND_MANTISSAS = FORCE_SERIES
 #: Longest vector of a force polygon or of the lever's plan, mm; extent (diagonal) of the scheme, mm.
 POLYGON_MM = 200.0
 SCHEME_MM = 450.0
@@ -56,17 +59,9 @@ REPLACEMENT_LIMIT = 100.0
 
 
 def round_scale(largest: float, max_mm: float) -> float:
-    """The smallest μ = m·10^k (m in :data:`ROUND_MANTISSAS`) with ``largest/μ ≤ max_mm``."""
-    if not (largest > 0 and math.isfinite(largest)):
-        return 1.0
-    target = largest / max_mm
-    k = math.floor(math.log10(target)) - 1
-    while True:
-        for m in ROUND_MANTISSAS:
-            mu = m * 10.0 ** k
-            if largest / mu <= max_mm * (1 + 1e-12):
-                return float(f"{mu:.12g}")
-        k += 1
+    """The smallest μ = m·10^k (m in :data:`ROUND_MANTISSAS`) with ``largest/μ ≤ max_mm``
+    (:func:`reportgen.scenes.scales.round_scale`)."""
+    return _round_scale(largest, max_mm, FORCE_SERIES)
 
 
 def box_scale(points: np.ndarray, box: tuple[float, float]) -> float:

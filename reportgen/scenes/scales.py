@@ -1,0 +1,70 @@
+"""Scale factors of the drawings — one rule, one place.
+
+A scale factor μ (SI units per mm of paper) is *round*: a mantissa of a series times 10^k, the
+smallest such μ that draws ``value`` within ``max_mm`` (so the drawing is between about half and
+all of ``max_mm``). The series differs by construction, as the course's manuals take them:
+
+- :data:`PLAN_SERIES` (1, 2, 2.5, 4, 5): velocity and acceleration plans, the s–v–a diagrams, the
+  diagrams of section 3 (seed 000, § 1.3; ГОСТ 2.302 ratios 1:2, 1:2,5, 1:4, 1:5);
+- :data:`FORCE_SERIES` (1, 2, 2.5, 5): force polygons, the lever, the scheme of section 2 (seed 001,
+  §§ 5–6).
+
+A drawing of the mechanism itself is at a ГОСТ 2.302 scale (:data:`GOST_SCALES`):
+:func:`gost_scale` picks the largest that fits a box.
+"""
+from __future__ import annotations
+
+import math
+
+#: Mantissas of round scale factors (see the module's docstring).
+PLAN_SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
+FORCE_SERIES = (1.0, 2.0, 2.5, 5.0)
+
+#: ГОСТ 2.302 scales as (paper, real): 1:2,5 is (1, 2.5).
+GOST_SCALES: tuple[tuple[float, float], ...] = (
+    (10, 1), (5, 1), (4, 1), (2.5, 1), (2, 1), (1, 1), (1, 2), (1, 2.5), (1, 4), (1, 5), (1, 10),
+    (1, 15), (1, 20), (1, 25), (1, 40), (1, 50), (1, 75), (1, 100))
+
+
+def round_up(x: float, series: tuple[float, ...] = PLAN_SERIES) -> float:
+    """The smallest m·10^k ≥ x with m in ``series`` (1.0 for a non-positive or infinite x)."""
+    if x <= 0 or not math.isfinite(x):
+        return 1.0
+    k = math.floor(math.log10(x)) - 1
+    while True:
+        for m in series:
+            mu = float(f"{m * 10.0 ** k:.12g}")
+            if mu >= x * (1 - 1e-12):
+                return mu
+        k += 1
+
+
+def round_scale(value: float, max_mm: float, series: tuple[float, ...] = PLAN_SERIES) -> float:
+    """The smallest round μ (``series``) that draws ``value`` within ``max_mm``: value/μ ≤ max_mm."""
+    if not (value > 0 and math.isfinite(value)):
+        return 1.0
+    return round_up(value / max_mm, series)
+
+
+def ratio_text(paper: float, real: float) -> str:
+    """«1:2,5», «2:1»."""
+    def f(x: float) -> str:
+        return (f"{x:.1f}".rstrip("0").rstrip(".")).replace(".", ",")
+    return f"{f(paper)}:{f(real)}"
+
+
+def gost_scale(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> tuple[float, str]:
+    """The largest ГОСТ 2.302 scale at which width × height (m) fits max_w × max_h (mm); returns
+    (paper mm per metre, «1:2,5»). The smallest scale of the list if none fits."""
+    for paper, real in GOST_SCALES:
+        k = 1000.0 * paper / real
+        if width_m * k <= max_w_mm and height_m * k <= max_h_mm:
+            return k, ratio_text(paper, real)
+    paper, real = GOST_SCALES[-1]
+    return 1000.0 * paper / real, ratio_text(paper, real)
+
+
+def gost_scales_from(k: float) -> list[tuple[float, str]]:
+    """The ГОСТ 2.302 scales (paper mm per metre, ratio text) not larger than ``k``, largest first."""
+    out = [(1000.0 * p / r, ratio_text(p, r)) for p, r in GOST_SCALES]
+    return [c for c in out if c[0] <= k * (1 + 1e-9)]
