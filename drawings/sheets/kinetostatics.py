@@ -116,7 +116,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     from drawings import style
     from drawings.scenes import kinetostatics_views as kv
     from reportgen.kinetostatics.results import kinetostatics_of
-    from reportgen.kinetostatics.zhukovsky import turn_cw
+    from reportgen.scenes.lever import lever_scene
 
     ks = kinetostatics_of(project)
     lk, st = project.linkage, project.structure
@@ -144,19 +144,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
                 for gg in g.groups]
     polygons.append(kv.polygon_panel("polygon crank", "План сил ведущего звена", g.crank.polygon))
     kin = ks.reactions.kin
-    mu_v = g.lever.scale
-    points = {}
-    for name, mo in kin.points.items():
-        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
-        if float(np.hypot(*img)) > 1e-9:
-            points[name.lower()] = img
-    segments = []
-    for k in lk.moving:
-        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
-        segments += [("p", n) for n in names] + list(zip(names, names[1:]))
-    loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured)
-             for t, f in zip(g.lever.terms, ks.lever.forces) if t.magnitude > 0.0]
-    lever = kv.lever_panel("lever", points, segments, loads, mu_v)
+    lever = kv.lever_panel("lever", lever_scene(ks, lk))
 
     # the groups at the replica's μl (the note's); a smaller round scale only if nothing else fits
     pts = np.array([np.asarray(m.pos)[0] for m in kin.points.values()])

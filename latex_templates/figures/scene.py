@@ -26,16 +26,17 @@ from . import new_figure
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
 #: caption).
-TEXT_W_MM, TEXT_H_MM = 165.0, 215.0
+TEXT_W_MM, TEXT_H_MM = 160.0, 215.0
 #: Letter size of labels, pt, and its height in page mm.
 LABEL_PT = 9.0
 LABEL_MM = LABEL_PT * 25.4 / 72.0
 PAD_MM = 6.0          # page mm round the drawing
 
-PENS = {"contour": (1.1, "-"), "thin": (0.45, "-"), "phantom": (0.5, (0, (6, 2, 1, 2, 1, 2))),
+PENS = {"contour": (1.1, "-"), "thin": (0.45, "-"), "hidden": (0.9, (0, (4, 2))), "phantom": (0.5, (0, (6, 2, 1, 2, 1, 2))),
         "axis": (0.45, (0, (8, 2, 1, 2))), "vectors": (1.0, "-"), "construction": (0.3, ":")}
 COLOURS = {"absolute": "black", "relative": "tab:blue", "normal": "tab:green", "tangential": "tab:red",
-           "coriolis": "tab:purple", "sliding": "tab:orange"}
+           "coriolis": "tab:purple", "sliding": "tab:orange",
+           "load": "black", "found": "tab:red", "read": "tab:blue"}
 
 
 @dataclass(frozen=True)
@@ -46,6 +47,7 @@ class PlacedLabel:
     anchor: str
     box: tuple[float, float, float, float]
     distance: float
+    leader: bool = False
 
 
 def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = TEXT_H_MM) -> float:
@@ -67,6 +69,7 @@ def reduction_text(r: float) -> str:
 def _mathtext(tex: str) -> str:
     """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
+        tex = tex.replace("\\text{", "\\mathrm{")
         parts = tex.split(",")
         return ", ".join(f"${p}$" for p in parts)
     return tex
@@ -154,7 +157,17 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
     scene's middle first), or beside the middle of a vector on either side."""
     w, h = size
     cands: list[tuple[float, float]] = []
-    if lb.role == "vector" and lb.along is not None:
+    if lb.role == "vector" and lb.along is not None and lb.leader:
+        p = np.asarray(lb.at)
+        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
+        d = b - a
+        base = math.atan2(d[0], -d[1])             # across the vector
+        for off in (4.0, 6.0, 8.0, 11.0):
+            for k in range(16):
+                ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
+                cands.append((float(p[0] + math.cos(ang) * (w / 2 + gap * off)),
+                              float(p[1] + math.sin(ang) * (h / 2 + gap * off))))
+    elif lb.role == "vector" and lb.along is not None:
         a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
         d = b - a
         n = float(np.hypot(*d)) or 1.0
@@ -216,7 +229,7 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...]) -> list[tuple[L
             continue
         c, b = _place(lb, _text_size(lb.text, h), boxes, centre, gap, lines)
         boxes.append(b)
-        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b))))
+        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), lb.leader)))
     return out
 
 
@@ -274,7 +287,11 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
             ax.plot([a[0], base[0]], [a[1], base[1]], color=colour, lw=lw, solid_capstyle="butt")
             ax.add_patch(MplPolygon([b, base + nrm * head / 6, base - nrm * head / 6], closed=True,
                                     facecolor=colour, edgecolor=colour, lw=0.3, zorder=3))
-    for lb, c, _ in labels:
+    for lb, c, pl in labels:
+        if lb.leader:
+            bx = min(max(lb.at[0], pl.box[0]), pl.box[2])
+            by = min(max(lb.at[1], pl.box[1]), pl.box[3])
+            ax.plot([bx, lb.at[0]], [by, lb.at[1]], color="0.3", lw=0.4)
         ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
                 style="italic" if lb.role == "point" else "normal",
                 color="tab:blue" if lb.role == "number" else "black", zorder=6)

@@ -194,7 +194,9 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
 
 def content(project) -> PartContent:
     from reportgen.kinetostatics.results import kinetostatics_of
+    from reportgen.scenes.forces import polygon_scene
     from ..figures import kinetostatics as kf
+    from ..figures.scene import scene_figure
 
     ks = kinetostatics_of(project)
     lk, st = project.linkage, project.structure
@@ -215,7 +217,7 @@ def content(project) -> PartContent:
         grp = by_key[gg.key]
         tag = gg.key.replace("-", "_")
         figures[f"kst_group_{tag}"] = kf.free_body_figure(lk, q, grp.links, *_free_body(ks, grp, gg))
-        figures[f"kst_poly_{tag}"] = kf.polygon_figure(gg.polygon)
+        figures[f"kst_poly_{tag}"] = scene_figure(polygon_scene(gg.polygon))
         mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
         splits = []
         for sp in gg.splits:
@@ -429,7 +431,9 @@ def _loads_on(ks, links, repl, arrows, couples) -> None:
 
 
 def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
+    from reportgen.scenes.forces import polygon_scene
     from ..figures import kinetostatics as kf
+    from ..figures.scene import scene_figure
     lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
@@ -444,7 +448,7 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
              {"point": r.balancing_point[0], "kind": "R", "name": r.crank_pin}]
     arrows = [a for a in arrows if float(np.hypot(*a["vector"])) > 0]
     figures["kst_crank"] = kf.free_body_figure(lk, np.asarray(r.kin.q)[0], (d,), pairs, arrows, couples, w_cm=10.0)
-    figures["kst_poly_crank"] = kf.polygon_figure(c.polygon, w_cm=11.0)
+    figures["kst_poly_crank"] = scene_figure(polygon_scene(c.polygon))
     arms: list = []
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
     OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
@@ -470,29 +474,12 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
 
 
 def _lever(project, ks, counter, figures) -> dict:
-    """Zhukovsky's lever: the record F_ур = ∓ΣF·h/pa with the measured arms, and its figure."""
-    from reportgen.kinetostatics.zhukovsky import turn_cw
-    from ..figures import kinetostatics as kf
+    """Zhukovsky's lever: the record F_ур = ∓ΣF·h/pa with the measured arms, and its figure (the
+    lever's scene, as sheet 2 draws it)."""
+    from reportgen.scenes.lever import lever_scene
+    from ..figures.scene import scene_figure
     lk, r, lev, L = project.linkage, ks.reactions, ks.lever, ks.graphical.lever
-    kin = r.kin
     mu_v = L.scale
-    points: dict[str, np.ndarray] = {}
-    for name, mo in kin.points.items():
-        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
-        if float(np.hypot(*img)) > 1e-9:
-            points[name.lower()] = img
-    for k in lk.moving:
-        if lk.bodies[k].mass > 0 and f"S{k}" not in [n.upper() for n in points]:
-            img = turn_cw(np.asarray(kin.coms[k].vel))[0] / mu_v
-            if float(np.hypot(*img)) > 1e-9 and not any(np.allclose(img, p) for p in points.values()):
-                points[f"s_{k}"] = img
-    segments = []
-    for k in lk.moving:
-        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
-        for n in names:
-            segments.append(("p", n))
-        for a, b in zip(names, names[1:]):
-            segments.append((a, b))
     terms, loads = [], []
     for t, f in zip(L.terms, lev.forces):
         if t.magnitude == 0.0:
@@ -525,7 +512,8 @@ def _lever(project, ks, counter, figures) -> dict:
     M = record("M_{\\text{ур}}^{\\text{Ж}}", "F * l_OA", "Н·м", l_oa, F=F,
                meaning="уравновешивающий момент по рычагу Жуковского")
     _check(M, L.balancing_moment_measured, "M_ур (lever)")
-    figures["kst_lever"] = kf.lever_figure(points, segments, loads)
+    arm_names = {ld["name"]: ld["h"] for ld in loads if ld["h"]}
+    figures["kst_lever"] = scene_figure(lever_scene(ks, lk, arm_names))
     eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
     sign_pa = "-" if lev.omega1 >= 0 else "+"
     return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(),

@@ -17,7 +17,7 @@ from typing import Mapping, Union
 Point = tuple[float, float]
 
 #: Line kinds a renderer maps to its own pens (sheet layers, matplotlib widths).
-LINE_KINDS = ("contour", "thin", "phantom", "axis", "vectors", "construction")
+LINE_KINDS = ("contour", "thin", "phantom", "axis", "hidden", "vectors", "construction")
 
 
 @dataclass(frozen=True)
@@ -85,6 +85,7 @@ class Label:
     at: Point
     role: str = "point"
     along: tuple[Point, Point] | None = None     # for role "vector": the vector's ends
+    leader: bool = False                         # too short to carry its name: a leader to it
 
 
 @dataclass(frozen=True)
