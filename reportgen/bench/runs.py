@@ -212,9 +212,8 @@ def planetary_table(project, bounds) -> Table:
 
 # -- 5. stages of `reportgen build` --------------------------------------------------------------------
 
-def build_table(task_path: Path, quick: bool) -> Table:
-    from ..commands.build import build
-
+def build_table(task_path: Path, quick: bool, build) -> Table:
+    """``build`` is :func:`reportgen.commands.build.build` (passed in by the command layer)."""
     pdf = not quick and shutil.which("latexmk") is not None
     t = Table("build", f"Wall time of the stages of `reportgen build {task_path.parent.name}/{task_path.name}`",
               ["stage", "time, s"])
