@@ -8,6 +8,8 @@ from __future__ import annotations
 import importlib
 from dataclasses import dataclass
 
+from reportgen.project import Needs
+
 from .note import Section
 from .parts import PartContent
 
@@ -49,7 +51,7 @@ def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list
             mod = part_module(name)
             if mod is None or not mod.available(project):
                 continue
-            contents.append((name, mod.content(project)))
+            contents.append((name, mod.content(Needs(project, mod.NEEDS, f"part {name}"))))
         if not contents:
             left_out.append(title)
             continue

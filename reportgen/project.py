@@ -22,6 +22,40 @@ from .scenes.boxes import SceneBoxes
 from .task import Task
 
 
+#: Angles of the dense cycle of M_ур (section 2's graph).
+CYCLE_POINTS = 361
+
+#: The stages of a project: what a part of the note or a sheet declares in its ``NEEDS``.
+STAGES = frozenset({"linkage", "structure", "model", "strokes", "phi", "kinematics", "analysed", "plans",
+                    "scenes", "kinetostatics", "balancing_cycle", "balancing_cycle_dense", "resistance",
+                    "gears", "planetary", "dynamics"})
+
+
+class UndeclaredStage(AttributeError):
+    """A part or a sheet read a stage it does not declare in its ``NEEDS``."""
+
+    def __init__(self, owner: str, stage: str, needs: tuple[str, ...]):
+        self.owner, self.stage, self.needs = owner, stage, needs
+        super().__init__(f"{owner} reads the stage {stage!r} but declares NEEDS = {needs!r}")
+
+
+class Needs:
+    """``project`` as a part or a sheet may see it: the stages of its ``NEEDS`` (and what they are
+    built from, which the stages read themselves), the task, the boxes and the helpers; any other
+    stage raises :class:`UndeclaredStage`, so a part that reads more than it says fails its test."""
+
+    def __init__(self, project: "Project", needs: tuple[str, ...], owner: str):
+        unknown = set(needs) - STAGES
+        if unknown:
+            raise ValueError(f"{owner}: NEEDS names unknown stages {sorted(unknown)}; stages: {sorted(STAGES)}")
+        self._project, self._needs, self._owner = project, tuple(needs), owner
+
+    def __getattr__(self, name: str):
+        if name in STAGES and name not in self._needs:
+            raise UndeclaredStage(self._owner, name, self._needs)
+        return getattr(self._project, name)
+
+
 @dataclass(frozen=True)
 class PlanetaryStage:
     """The reducer chosen for the task: the drive's required ratio (if "auto"), the design, its
@@ -152,6 +186,31 @@ class Project:
             return None
         from .dynamics import dynamics_of
         return dynamics_of(self)
+
+    @cached_property
+    def kinetostatics(self):
+        """Section 2 at the task's force position (reportgen.kinetostatics.Kinetostatics)."""
+        from .kinetostatics.results import kinetostatics_of
+        return kinetostatics_of(self)
+
+    @cached_property
+    def balancing_cycle(self):
+        """M_ур by the groups and by the lever at every analysed position (BalancingCycle)."""
+        from .kinetostatics import balancing_cycle
+        return balancing_cycle(self, self.phi)
+
+    @cached_property
+    def balancing_cycle_dense(self):
+        """M_ur over one turn at ``CYCLE_POINTS`` angles from position 0 (for the graph of section 2)."""
+        from .kinetostatics import balancing_cycle
+        sgn = 1.0 if self.model.omega >= 0 else -1.0
+        return balancing_cycle(self, float(self.phi[0]) + sgn * np.linspace(0.0, 2 * math.pi, CYCLE_POINTS))
+
+    @cached_property
+    def resistance(self):
+        """The production resistance at the force position from its law (reportgen.loads.resistance_at)."""
+        from .loads import resistance_at
+        return resistance_at(self)
 
     def loads_at(self, kin: KinematicsResult, inertia: bool = True):
         """External loads (+ inertia) at the positions of ``kin``."""

@@ -11,7 +11,7 @@ from drawings.scenes import dynamics_flywheel as df
 from drawings.sheet import Sheet
 from reportgen.project import Project
 
-NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics")
+NEEDS: tuple[str, ...] = ("dynamics",)
 TITLE = "Динамический анализ машинного агрегата"
 
 #: Clearance from the frame and from graph 26 / the title block, mm.

@@ -22,7 +22,8 @@ from reportgen.diagrams import Diagrams, build_diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
 
-NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
+NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
+                            "plans", "scenes")
 TITLE = "Кинематический анализ рычажного механизма"
 
 #: The scheme's view (with its padding) is at most this big, mm (the drawing's own box is

@@ -10,7 +10,7 @@ from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
 
-NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "kinetostatics")
+NEEDS: tuple[str, ...] = ("linkage", "structure", "phi", "kinetostatics")
 TITLE = "Силовой расчёт рычажного механизма"
 
 
@@ -115,10 +115,9 @@ def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
 def draw(project: Project, number: int, count: int) -> Sheet:
     from drawings import style
     from drawings.scenes import kinetostatics_views as kv
-    from reportgen.kinetostatics.results import kinetostatics_of
     from reportgen.scenes.lever import lever_scene
 
-    ks = kinetostatics_of(project)
+    ks = project.kinetostatics
     lk, st = project.linkage, project.structure
     g = ks.graphical
     sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)

@@ -22,7 +22,7 @@ from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step
 
 from . import PartContent
 
-NEEDS = ("kinematics", "strokes", "dynamics")
+NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics")
 
 #: A force or couple whose power is below this share of the largest one is still shown (gravity of
 #: a light crank is small but is part of M_red); exactly zero ones (resistance off) are left out.

@@ -14,7 +14,8 @@ from reportgen.plans import MEASURE_MM
 
 from . import PartContent
 
-NEEDS = ("structure", "kinematics")
+NEEDS = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
+         "scenes")
 
 
 def available(project) -> bool:

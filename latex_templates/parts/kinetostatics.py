@@ -22,12 +22,11 @@ from reportgen.kinetostatics.reactions import pair_name, perp
 
 from . import PartContent
 
-NEEDS = ("structure", "kinematics", "kinetostatics")
+NEEDS = ("linkage", "structure", "kinetostatics", "resistance", "balancing_cycle", "balancing_cycle_dense")
 
 #: Terms of one summed moment equation per printed line; longer sums are split into partial sums.
 TERMS_PER_RECORD = 3
 #: Points of the M_ур(φ1) curve over one turn.
-CYCLE_POINTS = 361
 
 
 def available(project) -> bool:
@@ -193,12 +192,11 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
 # -- the part --------------------------------------------------------------------------------------
 
 def content(project) -> PartContent:
-    from reportgen.kinetostatics.results import kinetostatics_of
     from reportgen.scenes.forces import polygon_scene
     from ..figures import kinetostatics as kf
     from ..figures.scene import scene_figure
 
-    ks = kinetostatics_of(project)
+    ks = project.kinetostatics
     lk, st = project.linkage, project.structure
     r = ks.reactions
     kin = r.kin
@@ -324,52 +322,27 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
 
 
 def _resistance(project, ks) -> list[dict]:
-    """The production resistance at the analysed position from its law: s/H, the law's factor and
-    F = F_max·k; checked against the solver's load."""
-    from reportgen.loads import StrokeWindow, law_value, link_coordinate
-
-    mech, lk, strokes = project.task.mechanism, project.linkage, project.strokes
+    """The production resistance at the analysed position (the stage ``resistance``): s/H, the
+    law's factor and F = F_max·k as records; checked against the solver's load."""
     out = []
-    solver = {f.link: float(np.hypot(*np.asarray(f.vector)[0])) for f in ks.reactions.loads.forces
-              if f.kind == "resistance"}
-    solver.update({m.link: abs(float(np.asarray(m.value)[0])) for m in ks.reactions.loads.moments
-                   if m.kind == "resistance"})
-    for ld in mech.loads:
-        if ld.kind != "resistance" or strokes is None:
-            continue
-        q = np.asarray(ks.reactions.kin.q)
-        x, kind = link_coordinate(lk, ld.link, q)
-        ends, _ = project.model.positions(np.array([strokes.phi_start, strokes.phi_end]))
-        xe, _ = link_coordinate(lk, ld.link, ends)
-        x = float(x[0])
-        if kind == "rocker":
-            x = float(xe[0]) + (x - float(xe[0]) + math.pi) % (2 * math.pi) - math.pi
-        win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if lk.omega >= 0 else -1.0)
-        working = bool(win.on_working(np.array([ks.phi]))[0])
-        travel = float(xe[1] - xe[0])
-        on = (working and ld.stroke in ("working", "both")) or (not working and ld.stroke in ("idle", "both"))
-        value = solver.get(ld.link, 0.0)
-        is_force = ld.force is not None
-        ent = {"link": ld.link, "working": working, "on": on, "force": is_force, "value": value,
-               "law": ld.law, "rec": None, "frac": None, "kfac": None}
-        if on and travel != 0:
-            s_val = abs(x - float(xe[0])) if working else abs(float(xe[1]) - x)
-            unit = "м" if kind == "slider" else "рад"
-            s = Var("s", "s", s_val, unit, "перемещение выходного звена от начала хода" if kind == "slider"
+    for r in project.resistance:
+        ent = {"link": r.link, "working": r.working, "on": r.on, "force": r.is_force, "value": r.value,
+               "law": r.law, "rec": None, "frac": None, "kfac": None}
+        if r.k is not None:
+            slider = r.unit == "м"
+            s = Var("s", "s", r.s, r.unit, "перемещение выходного звена от начала хода" if slider
                     else "угол поворота выходного звена от начала хода")
-            H = Var("H", "H", abs(travel), unit, "полный ход выходного звена" if kind == "slider"
-                    else "размах выходного звена")
+            H = Var("H", "H", r.H, r.unit, "полный ход выходного звена" if slider else "размах выходного звена")
             frac = record("s/H", "s / H", "", s, H, meaning="доля пройденного хода")
-            kf = float(law_value(ld.law, np.array([frac.value]))[0])
-            kv = Var("k", "k", kf, "", Markup("доля наибольшего сопротивления по~закону нагружения"))
-            if is_force:
-                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", ld.force, "Н", "наибольшая сила сопротивления")
+            kv = Var("k", "k", r.k, "", Markup("доля наибольшего сопротивления по~закону нагружения"))
+            if r.is_force:
+                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", r.maximum, "Н", "наибольшая сила сопротивления")
                 rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning="сила производственного сопротивления")
             else:
-                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", ld.moment, "Н·м", "наибольший момент сопротивления")
+                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", r.maximum, "Н·м", "наибольший момент сопротивления")
                 rec = record("M_{\\text{пс}}", "Mmax * k", "Н·м", mmax, kv, meaning="момент производственного сопротивления")
-            _check(rec, value, "the production resistance")
-            ent.update(rec=rec, frac=frac, kfac=kf)
+            _check(rec, r.value, "the production resistance")
+            ent.update(rec=rec, frac=frac, kfac=r.k)
         out.append(ent)
     return out
 
@@ -532,12 +505,10 @@ def _comparison(ks, crank, lever) -> dict:
 
 
 def _cycle(project, ks, figures) -> dict:
-    from reportgen.kinetostatics import balancing_cycle
+    """M_ур over the cycle from the stages ``balancing_cycle`` (the positions) and
+    ``balancing_cycle_dense`` (the curve)."""
     from ..figures import kinetostatics as kf
-    at = balancing_cycle(project, project.phi)
-    sgn = 1.0 if project.model.omega >= 0 else -1.0
-    dense_phi = float(project.phi[0]) + sgn * np.linspace(0.0, 2 * math.pi, CYCLE_POINTS)
-    dense = balancing_cycle(project, dense_phi)
+    at, dense = project.balancing_cycle, project.balancing_cycle_dense
     order = np.argsort(np.mod(np.degrees(dense.phi), 360.0))
     deg = np.mod(np.degrees(dense.phi), 360.0)[order]
     figures["kst_cycle"] = kf.cycle_figure(deg, np.asarray(dense.groups)[order], np.mod(np.degrees(at.phi), 360.0),

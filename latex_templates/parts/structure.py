@@ -8,7 +8,7 @@ from reportgen.calc import Var, record
 
 from . import PartContent
 
-NEEDS = ("structure",)
+NEEDS = ("linkage", "structure", "kinematics")
 
 MOTION = {"crank": "вращательное", "rocker": "вращательное (качательное)", "slotted": "вращательное (качательное)",
           "coupler": "плоскопараллельное", "slider": "поступательное", "block": "плоскопараллельное"}

@@ -121,6 +121,8 @@ def _sheets(project: Project, tmp: Path, progress: Progress) -> None:
     from drawings.preview import render_png
     from drawings.sheets import available_sheets
 
+    from ..project import Needs
+
     todo = available_sheets(project)
     if not todo:
         return
@@ -128,7 +130,7 @@ def _sheets(project: Project, tmp: Path, progress: Progress) -> None:
     folder.mkdir()
     for i, (stem, mod) in enumerate(todo, start=1):
         with progress.stage(f"sheet {i}: {stem}"):
-            sheet = mod.draw(project, i, len(todo))
+            sheet = mod.draw(Needs(project, mod.NEEDS, f"sheet {mod.__name__}"), i, len(todo))
             dxf = folder / f"{stem}.dxf"
             sheet.save(dxf)
             render_png(dxf, folder / f"{stem}.png", dpi=60)
