@@ -96,3 +96,43 @@ def test_boxes_are_passed_in():
     p = Project(load_task(ROOT / "examples" / "press" / "task.toml"), boxes=SceneBoxes(scheme=(150.0, 120.0)))
     q = Project(load_task(ROOT / "examples" / "press" / "task.toml"))
     assert p.scenes.positions.scale().value > q.scenes.positions.scale().value
+
+
+def test_lever_scene_draws_the_balancing_force(project):
+    """F_ур is drawn on the lever at the image of the crank pin, and with it the lever balances:
+    Σ (image × F) + Σ M·ω about the pole = 0 (Zhukovsky)."""
+    import numpy as np
+
+    from reportgen.scenes.lever import lever_scene
+    ks = project.kinetostatics
+    sc = lever_scene(ks, project.linkage)
+    fb = sc.entity("force:Fур")
+    pin = np.asarray(ks.lever.crank_pin_image)[0] / ks.graphical.lever.scale
+    assert math.dist(fb.a, tuple(pin)) < 1e-9
+    F = np.asarray(ks.reactions.balancing_force)[0]
+    d = np.subtract(fb.b, fb.a)
+    assert float(np.dot(d, F)) > 0 and abs(float(d[0] * F[1] - d[1] * F[0])) < 1e-6 * float(np.hypot(*d) * np.hypot(*F))
+    total = sum(float(np.asarray(f.moment)[0]) for f in ks.lever.forces)
+    total += sum(float(np.asarray(x[2])[0]) for x in ks.lever.direct)
+    total += float(np.asarray(ks.lever.crank_pin_image)[0] @ np.array([-F[1], F[0]])) * -1.0
+    assert abs(total) < 1e-9 * max(1.0, sum(abs(float(np.asarray(f.moment)[0])) for f in ks.lever.forces))
+    # every force is named beside its own arrow
+    for lb in sc.labels:
+        if lb.role == "vector" and lb.anchor.startswith("force:"):
+            e = sc.entity(lb.anchor)
+            assert lb.along == (e.a, e.b)
+
+
+def test_polygon_scenes_name_their_own_vectors(project):
+    from reportgen.scenes.forces import LEADER_MM, polygon_scene
+    g = project.kinetostatics.graphical
+    for poly in [gg.polygon for gg in g.groups] + [g.crank.polygon]:
+        sc = polygon_scene(poly)
+        assert sc.scale().value == poly.scale
+        for lb in sc.labels:
+            e = sc.entity(lb.anchor)
+            assert lb.along == (e.a, e.b)
+            assert lb.leader == (e.length < LEADER_MM)
+        # the sides close the polygon: the last head is the first tail
+        sides = [e for e in sc.entities if e.id.startswith("vec:")]
+        assert math.dist(sides[0].a, sides[-1].b) < 0.5
