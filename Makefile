@@ -8,7 +8,7 @@ DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
 	texlive-fonts-recommended latexmk fonts-liberation fonts-texgyre-math poppler-utils librecad xvfb xauth
 DEMO_OUT ?= demo
 
-.PHONY: demo test system venv bench clean
+.PHONY: demo test check generated system venv bench clean
 
 # Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets.
 system:
@@ -38,6 +38,11 @@ demo: system venv
 # The whole test suite (what CI runs).
 test: system venv
 	$(PY) -m pytest -n 2 -p no:cacheprovider tests
+
+# Files written from reportgen/taskspec.py and examples/: docs/task-format.md, the JSON Schema
+# examples/task.schema.json and the package's copy of the examples (reportgen/examples/).
+generated: venv
+	$(PY) -m reportgen.taskdoc
 
 bench: venv
 	$(VENV)/bin/reportgen bench

@@ -22,6 +22,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from . import style
+from reportgen.errors import ParameterError
 
 Vec = tuple[float, float]
 
@@ -35,7 +36,7 @@ def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str
     ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept.
     """
     if not math.isfinite(value):
-        raise ValueError(f"cannot format {value!r}")
+        raise ParameterError("value", value, "a finite number to print")
     s = f"{value:.{decimals}f}"
     if strip and "." in s:
         s = s.rstrip("0").rstrip(".")
@@ -71,7 +72,7 @@ class Transform:
 
     def __post_init__(self) -> None:
         if not (self.scale > 0 and math.isfinite(self.scale)):
-            raise ValueError(f"scale must be positive and finite, not {self.scale!r}")
+            raise ParameterError("scale", self.scale, "a positive finite number")
 
     def __call__(self, p: Sequence[float]) -> Vec:
         return (self.at[0] + self.scale * (float(p[0]) - self.origin[0]),
@@ -172,7 +173,7 @@ class Canvas:
     # -- plain geometry ------------------------------------------------------------------------
     def _attrs(self, layer: str) -> dict:
         if layer not in style.LAYER_NAMES:
-            raise ValueError(f"unknown layer {layer!r}; use one of {style.LAYER_NAMES}")
+            raise ParameterError("layer", layer, f"one of {style.LAYER_NAMES}")
         return {"layer": layer}
 
     def _sheet_polyline(self, pts: Sequence[Vec], layer: str, closed: bool = False) -> None:
@@ -247,7 +248,7 @@ class Canvas:
             for part in geom.geoms:
                 self.geometry(part, layer)
         else:  # pragma: no cover - shapely has no other kinds
-            raise TypeError(f"cannot draw {kind}")
+            raise ParameterError("geometry", kind, "a shapely geometry")
 
     # -- text ----------------------------------------------------------------------------------
     def text_mm(self, pos: Vec, text: str, height: float = 3.5, align: str = "bottom-left",

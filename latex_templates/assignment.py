@@ -65,23 +65,31 @@ def assignment_section(project) -> Section:
 
 def introduction_paragraphs(project, left_out) -> list:
     """Paragraphs about this task, from the strings catalogue (``intro.*``)."""
-    from markupsafe import Markup
+    from .render import Tex
     from .numbers import num
     strings = Strings(_lang(project))
     task = project.task
     out = []
     if task.mechanism is not None:
         mech = task.mechanism
-        name = mech.name.lower() if mech.name else strings.get("intro.default_name")
+        name = _in_sentence(mech.name) if mech.name else strings.get("intro.default_name")
         text = strings.get("intro.object").format(
-            name=name, link=mech.drive.link, omega=Markup(num(abs(mech.drive.omega))),
+            name=name, link=mech.drive.link, omega=Tex(num(abs(mech.drive.omega))),
             sense=strings.get("intro.ccw" if mech.drive.omega > 0 else "intro.cw"))
         st = project.strokes
         if st is not None:
             key = "intro.output_slider" if st.output.kind == "slider" else "intro.output_rocker"
-            text = Markup(text + " ") + strings.get(key).format(
-                link=st.output.link, work=Markup(num(st.working_deg)), idle=Markup(num(st.idle_deg)))
+            text = Tex(text + " ") + strings.get(key).format(
+                link=st.output.link, work=Tex(num(st.working_deg)), idle=Tex(num(st.idle_deg)))
         out.append(text)
     if left_out:
-        out.append(strings.get("sections.left_out") + Markup(" ") + Markup("; ").join(left_out) + Markup("."))
+        out.append(strings.get("sections.left_out") + Tex(" ") + Tex("; ").join(left_out) + Tex("."))
     return out
+
+
+def _in_sentence(name: str) -> str:
+    """A name inside a sentence: its first letter lowered unless the first word is an abbreviation (КШМ)."""
+    first = name.split(" ", 1)[0]
+    if len(first) > 1 and first[1:2].isupper():
+        return name
+    return name[:1].lower() + name[1:]

@@ -22,11 +22,13 @@ from typing import Mapping
 
 import numpy as np
 
+from .geometry import perp as _perp
 from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .scenes.scales import PLAN_SERIES
 from .scenes.scales import round_scale as _round_scale
 from .structure import Group, Structure
+from .errors import NameLookupError
 
 #: The crank's vector is drawn 50–100 mm long (the one round-scale rule of
 #: :mod:`reportgen.scenes.scales`, series 1, 2, 2.5, 4, 5), unless another point's vector would then
@@ -95,11 +97,7 @@ class Plan:
         for c in self.components:
             if c.name == name:
                 return c
-        raise KeyError(name)
-
-
-def _perp(v: np.ndarray) -> np.ndarray:
-    return np.array([-v[1], v[0]])
+        raise NameLookupError("plan component", name, tuple(c.name for c in self.components))
 
 
 class _Builder:

@@ -81,7 +81,7 @@ def test_presentation_packages_do_not_import_each_other(package, other):
     assert not offenders, offenders
 
 
-def test_the_scanner_sees_every_kind_of_import(tmp_path, monkeypatch):
+def test_the_scanner_sees_every_kind_of_import():
     """Relative imports resolve, imports inside functions count: the tests above can fail."""
     pkg = ROOT / "reportgen" / "kinematics"
     fake = pkg / "_layering_probe.py"

@@ -14,7 +14,7 @@ from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
 from reportgen.scenes.forces import force_tex
 
-from . import comma_axes, new_figure
+from . import comma_axes, math_name, new_figure
 from .mechanism import world_points
 
 #: Colours: loads, reactions found in this step, reactions known from an earlier step.
@@ -124,7 +124,7 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
         c = xy.mean(axis=0)
         d = p - c
         d = d / (np.hypot(*d) + 1e-300)
-        _label(ax, p - d * 0.06 * L + np.array([0.0, 0.04 * L]), f"${n}$", "black", placed, L)
+        _label(ax, p - d * 0.06 * L + np.array([0.0, 0.04 * L]), math_name(n), "black", placed, L)
     colour = {"load": LOAD, "found": FOUND, "known": KNOWN}
     for a, (tail, head) in zip(arrows, ends):
         col = colour[a["role"]]

@@ -208,15 +208,15 @@ def content(project) -> PartContent:
 
 
 def _point_label(label: str):
-    from markupsafe import Markup
+    from ..render import Tex
     names = {"N1": "$N_1$", "N2": "$N_2$", "a": "$a$", "b": "$b$", "P": "$P$", "": ""}
-    return Markup(names[label])
+    return Tex(names[label])
 
 
 def _lam(v: float):
-    from markupsafe import Markup
+    from ..render import Tex
     if math.isinf(v):
-        return Markup(r"$-\infty$" if v < 0 else r"$\infty$")
+        return Tex(r"$-\infty$" if v < 0 else r"$\infty$")
     return v
 
 
@@ -230,7 +230,7 @@ def _zones(pic, pb: float) -> dict:
 
 def _conclusion(pair, failed) -> str:
     """A sentence for the conclusions (trusted LaTeX, numbers with a decimal comma)."""
-    from markupsafe import Markup
+    from ..render import Tex
     from latex_templates.numbers import mnum
     g = pair.geometry
     text = (f"Спроектирована эвольвентная передача $z_1 = {g.z1}$, $z_2 = {g.z2}$, $m = {mnum(g.m)}$~мм "
@@ -246,4 +246,4 @@ def _conclusion(pair, failed) -> str:
         text += " Не выполнены условия: " + "; ".join(names[c.name] for c in failed) + "."
     else:
         text += " Все проверки качества зацепления выполнены."
-    return Markup(text)
+    return Tex(text)

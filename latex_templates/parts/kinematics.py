@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from markupsafe import Markup
+from ..render import Tex
 
 from reportgen.calc import Var, record
 from reportgen.diagrams import build_diagrams
@@ -27,13 +27,13 @@ def detail_position(project) -> int:
     return project.analysed
 
 
-def scene_caption(project, fig, sheet: int = 1) -> Markup:
+def scene_caption(project, fig, sheet: int = 1) -> Tex:
     """«рисунок уменьшен, масштаб по листу 1» for a scene's figure (from the strings)."""
     from ..render import Strings
     strings = Strings(project.task.document.language or "ru")
     if fig.reportgen_reduction < 1.0:
-        return Markup(str(strings.get("scenes.reduced"))).format(sheet=sheet)
-    return Markup(str(strings.get("scenes.natural"))).format(sheet=sheet)
+        return Tex(str(strings.get("scenes.reduced"))).format(sheet=sheet)
+    return Tex(str(strings.get("scenes.natural"))).format(sheet=sheet)
 
 
 def _len(body, p: str, q: str) -> float:
@@ -64,7 +64,7 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
     an = record(f"a^n_{{{rel}}}", "w**2 * l", "м/с²", w_exact, lv)
     comp_t = aplan.component(f"a^{{\\tau}}_{{{rel}}}")
     segt = Var("segt", segt_symbol, aplan.measured_mm(comp_t), "мм",
-               Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{rel}}}$"))
+               Tex(f"отрезок плана ускорений, изображающий $a^\\tau_{{{rel}}}$"))
     erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
                   mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
                   meaning=f"угловое ускорение звена {k}")
@@ -141,7 +141,7 @@ def content(project) -> PartContent:
                 l = _len(body, P, Q)
                 comp = vplan.component(f"V_{{{Q}{P}}}")
                 seg = Var("seg", f"{comp.start}{comp.end}",
-                          vplan.measured_mm(comp), "мм", Markup(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
+                          vplan.measured_mm(comp), "мм", Tex(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
                 lv = Var("l", f"l_{{{P}{Q}}}", l, "м", f"длина звена {P}{Q}")
                 omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
                 omega_recs.append(omega_rec)
@@ -158,7 +158,7 @@ def content(project) -> PartContent:
                 comp = vplan.component(f"V_{{{Hg}{G}}}")
                 gh = float(np.hypot(*(np.asarray(kin.points[H].pos[i]) - np.asarray(kin.points[G].pos[i]))))
                 seg = Var("seg", f"{comp.start}{comp.end}", vplan.measured_mm(comp), "мм",
-                          Markup(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
+                          Tex(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
                 lv = Var("l", f"l_{{{G}{H}}}", gh, "м", f"расстояние {G}{H} в данном положении")
                 omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
                 omega_recs.append(omega_rec)
@@ -203,7 +203,7 @@ def content(project) -> PartContent:
     if strokes is not None:
         dg = build_diagrams(project.model, strokes, float(project.phi[0]), n=24)
         figures["kin_diagrams"] = diagrams_figure(dg)
-        L = Var("L", "L", dg.axis_mm, "мм", Markup("длина оси $\\varphi_1$, изображающая один оборот кривошипа"))
+        L = Var("L", "L", dg.axis_mm, "мм", Tex("длина оси $\\varphi_1$, изображающая один оборот кривошипа"))
         mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
         mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning="масштабный коэффициент времени")
         H1 = Var("H1", "H_1", dg.H1, "мм", "полюсное расстояние графика скорости")
@@ -248,8 +248,8 @@ def content(project) -> PartContent:
         from ..render import Strings
         strings = Strings(project.task.document.language or "ru")
         concl.append(strings.get("findings.strokes").format(
-            work=Markup(num(strokes.working_deg)), idle=Markup(num(strokes.idle_deg)),
-            K=Markup(num(stroke_ctx["K"].value))))
+            work=Tex(num(strokes.working_deg)), idle=Tex(num(strokes.idle_deg)),
+            K=Tex(num(stroke_ctx["K"].value))))
     return PartContent("sections/kinematics.tex.j2", ctx, figures, tuple(concl))
 
 

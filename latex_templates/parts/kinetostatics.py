@@ -14,9 +14,10 @@ import math
 import re
 
 import numpy as np
-from markupsafe import Markup
+from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.errors import InternalError
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
 
@@ -60,7 +61,7 @@ def _canon(name: str) -> str | None:
 
 def _check(rec: CalcRecord, expected: float, what: str) -> None:
     if not math.isclose(rec.value, expected, rel_tol=1e-9, abs_tol=1e-9 * max(1.0, abs(expected))):
-        raise RuntimeError(f"kinetostatics note: {what} printed as {rec.value!r}, the replica has {expected!r}")
+        raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
 def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: list[tuple[str, dict]] = ()
@@ -120,27 +121,27 @@ def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counte
         s = sym(t.name)
         F = Var("F", s, mag, "Н", _meaning(t.name, c in read_mags))
         h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
-                Markup(f"плечо силы ${s}$ относительно точки ${centre}$, измеренное на схеме"))
+                Tex(f"плечо силы ${s}$ относительно точки ${centre}$, измеренное на схеме"))
         arms_shown.append({"n": n, "name": t.name, "mm": abs(t.arm_mm_measured)})
         out.append((math.copysign(1.0, t.arm_mm_measured), F, h))
     return out, extra, through
 
 
-def _meaning(name: str, read: bool) -> Markup:
+def _meaning(name: str, read: bool) -> Tex:
     """The «где» phrase of a force by its solver name."""
     m = re.fullmatch(r"(G|Fи|F|Fпс|R)(\d*)(′?)", name.split(",")[0]) if ":" not in name else None
     s = sym(name)
     if name.startswith("Fпс"):
-        return Markup("сила производственного сопротивления")
+        return Tex("сила производственного сопротивления")
     if m and m.group(1) == "G":
-        return Markup(f"сила тяжести звена {m.group(2)}")
+        return Tex(f"сила тяжести звена {m.group(2)}")
     if m and m.group(1) == "Fи":
-        return Markup(f"сила инерции звена {m.group(2)}" + (", перенесённая на~плечо $h_\\text{{и}}$" if m.group(3) else ""))
+        return Tex(f"сила инерции звена {m.group(2)}" + (", перенесённая на~плечо $h_\\text{{и}}$" if m.group(3) else ""))
     if name.startswith("R"):
-        return Markup(f"реакция ${s}$" + (", найденная по~плану сил предыдущего шага" if read else ""))
+        return Tex(f"реакция ${s}$" + (", найденная по~плану сил предыдущего шага" if read else ""))
     if ":" in name:
-        return Markup(f"одна из~сил пары, заменяющей момент ${sym(name.split(':')[0])}$")
-    return Markup(f"сила ${s}$")
+        return Tex(f"одна из~сил пары, заменяющей момент ${sym(name.split(':')[0])}$")
+    return Tex(f"сила ${s}$")
 
 
 def _couples(extra_terms, mu_l: Var, link: int) -> list[tuple[str, dict]]:
@@ -154,8 +155,8 @@ def _polygon_rows(polygon) -> list[list]:
     rows = []
     for v in list(polygon.vectors) + list(polygon.extra):
         dev = v.deviation_percent if math.isfinite(v.deviation_percent) and v.exact_value > 0 else None
-        rows.append([Markup(f"$\\bar {sym(v.name)}$"), _read_mm(polygon, v), v.read_value, v.exact_value,
-                     dev if dev is not None else Markup("---"), "найдена" if not v.known else "задана"])
+        rows.append([Tex(f"$\\bar {sym(v.name)}$"), _read_mm(polygon, v), v.read_value, v.exact_value,
+                     dev if dev is not None else Tex("---"), "найдена" if not v.known else "задана"])
     return rows
 
 
@@ -164,14 +165,14 @@ def _read_mm(polygon, v) -> float:
     return round(v.read_value / polygon.scale, 6)
 
 
-def _equation(eq: str) -> Markup:
+def _equation(eq: str) -> Tex:
     lhs = eq.replace(" = 0", "").split(" + ")
     parts = [f"\\bar {sym(x)}" for x in lhs]
     lines = [" + ".join(parts[i:i + 9]) for i in range(0, len(parts), 9)]
     if len(lines) == 1:
-        return Markup(f"\\[\n{lines[0]} = 0.\n\\]")
+        return Tex(f"\\[\n{lines[0]} = 0.\n\\]")
     body = " \\\\\n+ ".join(lines)
-    return Markup(f"\\begin{{multline*}}\n{body} = 0.\n\\end{{multline*}}")
+    return Tex(f"\\begin{{multline*}}\n{body} = 0.\n\\end{{multline*}}")
 
 
 def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
@@ -182,7 +183,7 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
             continue
         s = sym(v.name)
         ln = Var("len", f"l_{{{s}}}", _read_mm(polygon, v), "мм",
-                 Markup(f"длина вектора ${s}$ на плане сил"))
+                 Tex(f"длина вектора ${s}$ на плане сил"))
         rec = record(s, "len * mu_F", "Н", ln, mu_F=mu_f)
         _check(rec, v.read_value, f"the reading of {v.name}")
         recs.append(rec)
@@ -226,10 +227,10 @@ def content(project) -> PartContent:
                     f"длина звена {P}{sp.centre} на схеме")
             parts, items = _sum_records(terms, f"{sp.link}", _couples(extra, mu_l, sp.link))
             rec = _final(f"R^{{\\tau}}_{{{sp.name[1:]}}}", items, ("l", l), "Н", False,
-                         Markup(f"касательная составляющая реакции ${sym(sp.name)}$"))
+                         Tex(f"касательная составляющая реакции ${sym(sp.name)}$"))
             _check(rec, sp.tau_measured, f"R^τ {sp.name}")
             splits.append({"name": sp.name, "link": sp.link, "centre": sp.centre, "pair": P, "parts": parts,
-                           "rec": rec, "terms": terms, "through": [Markup(f"${sym(x)}$") for x in through],
+                           "rec": rec, "terms": terms, "through": [Tex(f"${sym(x)}$") for x in through],
                            "negative": rec.value < 0, "exact": sp.tau, "dev": sp.deviation_percent,
                            "moment_eq": _moment_equation(sp, P, terms, extra)})
         reads = _read_records(gg.polygon, mu_f)
@@ -240,7 +241,7 @@ def content(project) -> PartContent:
         groups_ctx.append({"key": gg.key, "tag": tag, "label": grp.label, "kind": gg.kind, "links": grp.links,
                            "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
                            "rows": _polygon_rows(gg.polygon), "reads": reads,
-                           "unknown": [Markup(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
+                           "unknown": [Tex(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
                            "mu_tr": ks.transmission_deg.get(gg.key)})
     crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
     lever_ctx = _lever(project, ks, counter, figures)
@@ -268,14 +269,14 @@ def _pair_letter(r, sp, key: str) -> str:
     return next(p.joint for p in r.pairs if p.group == key and p.external and sp.link in (p.lo, p.hi))
 
 
-def _moment_equation(sp, P: str, terms, extra) -> Markup:
+def _moment_equation(sp, P: str, terms, extra) -> Tex:
     """ΣM_Q(link) = −R^τ·l + Σ ±F·h = 0 in symbols."""
     body = [f"-R^{{\\tau}}_{{{sp.name[1:]}}} \\cdot {P}{sp.centre}"]
     for s, F, h in terms:
         body.append(("+ " if s > 0 else "- ") + f"{F.latex} \\cdot {h.latex}")
     for t in extra:
         body.append(("+ " if t.moment >= 0 else "- ") + f"M_{{{sp.link}}}")
-    return Markup(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}} = " + " ".join(body) + " = 0")
+    return Tex(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}} = " + " ".join(body) + " = 0")
 
 
 def _loads_section(project, ks, mu_l: Var) -> dict:
@@ -308,13 +309,13 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
                        meaning=f"плечо переноса силы инерции звена {k}")
             ent["h"] = h
             ent["h_mm"] = record(f"h_{{\\text{{и}}{k}}}^{{\\text{{сх}}}}", "h / mu_l", "мм", mu_l, h=h,
-                                 meaning=f"плечо переноса на схеме")
+                                 meaning="плечо переноса на схеме")
             ent["repl"] = {"measured": x.h_mm_measured, "swing": x.swing_point is not None,
                            "sense": "против" if x.moment > 0 else "по"}
         links.append(ent)
         rows.append([k, b.mass, b.inertia, ent["G"].value if ent["G"] else 0.0, a_s,
                      ent["F"].value if ent["F"] else 0.0, eps, ent["M"].value if ent["M"] else 0.0,
-                     ent["h"].value if ent["h"] else Markup("---")])
+                     ent["h"].value if ent["h"] else Tex("---")])
     not_replaced = [k for k in lk.moving
                     if lk.bodies[k].inertia > 0 and k not in repl and
                     abs(float(np.asarray(kin.links[k].epsilon)[0])) > 0 and lk.bodies[k].mass > 0]
@@ -334,7 +335,7 @@ def _resistance(project, ks) -> list[dict]:
                     else "угол поворота выходного звена от начала хода")
             H = Var("H", "H", r.H, r.unit, "полный ход выходного звена" if slider else "размах выходного звена")
             frac = record("s/H", "s / H", "", s, H, meaning="доля пройденного хода")
-            kv = Var("k", "k", r.k, "", Markup("доля наибольшего сопротивления по~закону нагружения"))
+            kv = Var("k", "k", r.k, "", Tex("доля наибольшего сопротивления по~закону нагружения"))
             if r.is_force:
                 fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", r.maximum, "Н", "наибольшая сила сопротивления")
                 rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning="сила производственного сопротивления")
@@ -437,12 +438,12 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
     eq = [f"-F_{{\\text{{ур}}}} \\cdot {OA.latex}"] + [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}"
                                                       for s, Fv, h in terms]
-    return {"F": F, "M": M, "parts": parts, "through": [Markup(f"${sym(x)}$") for x in through],
-            "moment_eq": Markup(f"\\sum M_{{{r.crank_axis}}} = " + " ".join(eq) + " = 0"),
+    return {"F": F, "M": M, "parts": parts, "through": [Tex(f"${sym(x)}$") for x in through],
+            "moment_eq": Tex(f"\\sum M_{{{r.crank_axis}}} = " + " ".join(eq) + " = 0"),
             "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
-            "pin_forces": [Markup(f"${sym(a['name'])}$") for a in arrows if a["role"] == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
+            "pin_forces": [Tex(f"${sym(a['name'])}$") for a in arrows if a["role"] == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
             "R_couple": float(np.hypot(*r.frame_reaction_with_moment[0]))}
 
 
@@ -464,14 +465,14 @@ def _lever(project, ks, counter, figures) -> dict:
             s = sym(t.name)
             Fv = Var("F", s, t.magnitude, "Н", _meaning(t.name, False))
             h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
-                    Markup(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
+                    Tex(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
             sign = -math.copysign(1.0, t.arm_mm_measured) * (1.0 if lev.omega1 >= 0 else -1.0)
             terms.append((sign, Fv, h))
             ent["h"] = f"h_{{{n}}}"
         loads.append(ent)
     mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", "масштабный коэффициент повёрнутого плана скоростей")
     extra = [("- X / mu_v" if (p >= 0) == (lev.omega1 >= 0) else "+ X / mu_v",
-              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Markup(f"мощность пары ${sym(name)}$")), "mu_v": mu})
+              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Tex(f"мощность пары ${sym(name)}$")), "mu_v": mu})
              for name, p in L.direct if p != 0.0]
     parts, items = _sum_records(terms, "\\text{Ж}", extra)
     pa = Var("pa", f"p{r.crank_pin.lower()}", L.pa_mm_measured, "мм",
@@ -490,7 +491,7 @@ def _lever(project, ks, counter, figures) -> dict:
     eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
     sign_pa = "-" if lev.omega1 >= 0 else "+"
     return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(),
-            "moment_eq": Markup(f"\\sum M_{{p}} = {sign_pa}F_{{\\text{{ур}}}}^{{\\text{{Ж}}}} \\cdot {pa.latex} "
+            "moment_eq": Tex(f"\\sum M_{{p}} = {sign_pa}F_{{\\text{{ур}}}}^{{\\text{{Ж}}}} \\cdot {pa.latex} "
                                 + " ".join(eq) + " = 0"),
             "n_zero": sum(1 for t in L.terms if t.arm_mm_measured == 0.0 and t.magnitude > 0),
             "direct": bool(extra)}
@@ -517,7 +518,7 @@ def _cycle(project, ks, figures) -> dict:
     for j in range(len(at.phi)):
         mg, mz = float(at.groups[j]), float(at.zhukovsky[j])
         dev = 100.0 * (mg - mz) / mz if mz != 0 else 0.0
-        rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Markup(f"${_sci(dev)}$")])
+        rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Tex(f"${_sci(dev)}$")])
     return {"rows": rows, "max": float(np.max(dense.groups)), "min": float(np.min(dense.groups)),
             "mean": float(np.mean(np.asarray(dense.groups)[:-1]))}
 
@@ -532,8 +533,8 @@ def _conclusions(project, ks, comparison) -> tuple[str, ...]:
     from ..render import Strings
     strings = Strings(project.task.document.language or "ru")
     out = [strings.get("findings_kinetostatics.balancing").format(
-        phi=Markup(num(ks.phi_deg)), M=Markup(num(ks.balancing_moment, 6)),
-        Mz=Markup(num(ks.balancing_moment_zhukovsky, 6)), delta=Markup(num(comparison["delta"].value, 2)))]
+        phi=Tex(num(ks.phi_deg)), M=Tex(num(ks.balancing_moment, 6)),
+        Mz=Tex(num(ks.balancing_moment_zhukovsky, 6)), delta=Tex(num(comparison["delta"].value, 2)))]
     if any(mu < WARN_TRANSMISSION_DEG for mu in ks.transmission_deg.values()):
         out.append(strings.get("findings_kinetostatics.dead_centre"))
     return tuple(out)

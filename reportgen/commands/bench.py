@@ -1,5 +1,5 @@
 """``reportgen bench [TASK] [--quick] [--out DIR] [--markdown FILE]``: tables of time against error
-of every approximation of the project, a plot, and docs/performance.md (see reportgen.bench)."""
+of every approximation of the project, a plot, and docs/performance.md (see reportgen.commands.benchmarks)."""
 from __future__ import annotations
 
 import argparse
@@ -31,8 +31,7 @@ def register(sub) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..bench import _stderr, markdown, run_bench, text
-    from .build import build
+    from .benchmarks import _stderr, markdown, run_bench, text
 
     task = Path(args.task) if args.task else DEFAULT_TASK
     if not task.is_file():
@@ -45,7 +44,7 @@ def run(args: argparse.Namespace) -> int:
         raise OptionError("--out", f"neither {out} nor its parent folder exists", "a folder that exists or can be made")
     if md is not None and not md.parent.is_dir() and md.parent != out:
         raise OptionError("--markdown", f"the folder {md.parent} does not exist", "a path in an existing folder")
-    rep = run_bench(task, quick=args.quick, progress=_stderr, build=build)
+    rep = run_bench(task, quick=args.quick, progress=_stderr)
     sys.stdout.write(text(rep))
     plot = None
     if out is not None:
