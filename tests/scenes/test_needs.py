@@ -19,7 +19,7 @@ def test_an_undeclared_stage_fails():
     assert view.structure is project.structure
     assert view.task is project.task                  # not a stage: always readable
     with pytest.raises(UndeclaredStage) as exc:
-        view.kinematics
+        _ = view.kinematics
     assert exc.value.stage == "kinematics" and "part probe" in str(exc.value)
     with pytest.raises(ValueError):
         Needs(project, ("no-such-stage",), "part probe")
