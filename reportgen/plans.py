@@ -153,9 +153,9 @@ def build_plans(linkage: Linkage, structure: Structure, kin: KinematicsResult, i
     for k in kin.coms:
         vpts[f"s{k}"] = tuple(np.asarray(kin.coms[k].vel[i]) / mu_v)
         apts[f"s{k}"] = tuple(np.asarray(kin.coms[k].acc[i]) / mu_a)
-    for g in linkage.ground:
-        vpts[letter(g)] = (0.0, 0.0)
-        apts[letter(g)] = (0.0, 0.0)
+    for name in linkage.ground:
+        vpts[letter(name)] = (0.0, 0.0)
+        apts[letter(name)] = (0.0, 0.0)
     vc: list[PlanComponent] = []
     ac: list[PlanComponent] = []
     veq: list[tuple[str, str]] = []
@@ -171,9 +171,9 @@ def build_plans(linkage: Linkage, structure: Structure, kin: KinematicsResult, i
     for g in structure.groups[1:]:
         key = g.key
         if g.group_class == 2 and g.kind == "RRR":
-            _rrr(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts)
+            _rrr(b, g, mu_a, vc, ac, veq, aeq, apts)
         elif g.group_class == 2 and g.kind == "RRP":
-            _rrp(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts)
+            _rrp(b, g, mu_a, vc, ac, veq, aeq, apts)
         elif g.group_class == 2 and g.kind == "RPR":
             _rpr(b, g, mu_v, mu_a, vc, ac, veq, aeq, vpts, apts)
         else:
@@ -205,7 +205,7 @@ def _relative(b: _Builder, k: int, Q: str, P: str, mu_a: float, group: str, apts
     ac.append(PlanComponent(f"a^{{\\tau}}_{{{Q}{P}}}", "tangential", helper, letter(Q), tuple(at), rf"\perp {Q}{P}", group))
 
 
-def _rrr(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts):
+def _rrr(b, g, mu_a, vc, ac, veq, aeq, apts):
     a, c = g.links
     Q = _inner(g).point
     P, S = _ext(g, a).point, _ext(g, c).point
@@ -219,7 +219,7 @@ def _rrr(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts):
                        rf"\bar a_{{{Q}}} = \bar a_{{{S}}} + \bar a^{{n}}_{{{Q}{S}}} + \bar a^{{\tau}}_{{{Q}{S}}}"))
 
 
-def _rrp(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts):
+def _rrp(b, g, mu_a, vc, ac, veq, aeq, apts):
     a, c = g.links
     r, pl = (a, c) if _ext(g, a).kind == "R" else (c, a)
     Q = _inner(g).point

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -20,6 +21,11 @@ from .structure import Structure, analyse_structure
 from .scenes.boxes import DEFAULT as DEFAULT_BOXES
 from .scenes.boxes import SceneBoxes
 from .task import Task
+
+if TYPE_CHECKING:  # the planetary package is imported when a task has [planetary]
+    from .planetary.drive import DriveCheck, DriveRatio
+    from .planetary.search import PlanetaryDesign
+    from .planetary.velocity import VelocityTriangle
 
 
 #: Angles of the dense cycle of M_ур (section 2's graph).
@@ -63,10 +69,10 @@ class PlanetaryStage:
     """The reducer chosen for the task: the drive's required ratio (if "auto"), the design, its
     velocity triangle (if a module is given) and the achieved crank speed."""
     target: float
-    drive: object | None        # reportgen.planetary.drive.DriveRatio
-    design: object              # reportgen.planetary.search.PlanetaryDesign
-    triangle: object | None     # reportgen.planetary.velocity.VelocityTriangle
-    check: object | None        # reportgen.planetary.drive.DriveCheck
+    drive: DriveRatio | None
+    design: PlanetaryDesign
+    triangle: VelocityTriangle | None
+    check: DriveCheck | None
 
 
 class Project:

@@ -14,6 +14,7 @@ from drawings import style
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
+from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
 from reportgen.plans import Plan
@@ -69,7 +70,7 @@ def _groups(plan: Plan, keys: list[str]) -> list[tuple[tuple[float, float], list
                 names.append(k)
                 break
         else:
-            out.append((tuple(p), [k]))
+            out.append((vec2(p), [k]))
     return out
 
 

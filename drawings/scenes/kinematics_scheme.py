@@ -13,6 +13,7 @@ from drawings.primitives import format_number
 from drawings.sheet import View
 from drawings.scenes import kinematics_labels as rl
 from drawings.scenes import render
+from reportgen.geometry import vec2
 from reportgen.kinematics import KinematicsResult
 from reportgen.project import Project
 from reportgen.scenes import positions
@@ -31,7 +32,7 @@ def scheme_data(project: Project, analysed: int) -> SchemeData:
     return positions.scheme_data(project, analysed)
 
 
-def bounds(project: Project, data: SchemeData) -> tuple[float, float, float, float]:
+def bounds(data: SchemeData) -> tuple[float, float, float, float]:
     """Model bounds of everything the view draws (m)."""
     return positions.bounds(data)
 
@@ -40,7 +41,7 @@ def _pts(kin: KinematicsResult, i: int) -> dict[str, np.ndarray]:
     return positions.pts(kin, i)
 
 
-def _guide_dir(project: Project, kin: KinematicsResult, i: int, slide) -> np.ndarray:
+def _guide_dir(kin: KinematicsResult, i: int, slide) -> np.ndarray:
     return positions.guide_dir(kin, i, slide)
 
 
@@ -104,8 +105,8 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
     a_start = math.atan2(*(np.asarray(data.extremes.points[lk.drive_tip].pos[0]) - o)[::-1])
     a_end = math.atan2(*(np.asarray(data.extremes.points[lk.drive_tip].pos[1]) - o)[::-1])
     for a in (a_start, a_end):
-        tip = o + (r_mm + 22.0) / k * np.array([math.cos(a), math.sin(a)])
-        view.line(o, tuple(tip), "thin")
+        ray_end = o + (r_mm + 22.0) / k * np.array([math.cos(a), math.sin(a)])
+        view.line(o, tuple(ray_end), "thin")
     work = math.radians(st.working_deg)
     arcs = ((a_start, sgn * work, r_mm + 12.0, f"φр.х. = {format_number(st.working_deg, 1)}°"),
             (a_end, sgn * (2 * math.pi - work), r_mm + 18.0, f"φх.х. = {format_number(st.idle_deg, 1)}°"))
@@ -127,6 +128,8 @@ def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
     if st is None or data.extremes is None:
         return
     out = st.output
+    if out.point is None:
+        return
     if out.kind != "slider":
         piv = np.asarray(data.extremes.points[out.point].pos[0])
         rich = rl.Rich(f"ψ = {format_number(math.degrees(st.stroke), 1)}°")
@@ -204,8 +207,8 @@ def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i
     slide = next((sl for sl in lk.slides if sl.link == k), None)
     p = np.asarray(pts[names[0]])
     if slide is None:
-        return [tuple(c) for c in rl.around(tuple(p), rl.Rich("0"), 2 * r, 90.0, gaps=(4.0, 7.0))]
-    d = _guide_dir(project, data.kin, i, slide)
+        return [vec2(c) for c in rl.around(vec2(p), rl.Rich("0"), 2 * r, 90.0, gaps=(4.0, 7.0))]
+    d = _guide_dir(data.kin, i, slide)
     d = d / (np.hypot(*d) or 1.0)
     nrm = np.array([-d[1], d[0]])
     half_l, half_h = BLOCK_MM[0] / 2, BLOCK_MM[1] / 2

@@ -118,8 +118,8 @@ def free_body_panel(name: str, title: str, segments: list[tuple[np.ndarray, np.n
             view.hinge(p, HINGE_MM)
         for p, ang in sliders:
             view.slider(p, ang, 12.0, 6.0, guide_mm=None, hinge_mm=HINGE_MM)
-        for a in arrows:
-            view.arrow(a.point, arrow_end(a, mu_f, mu_l), plain(a.name), head_mm=4.0, label_height=LABEL_MM)
+        for arw in arrows:
+            view.arrow(arw.point, arrow_end(arw, mu_f, mu_l), plain(arw.name), head_mm=4.0, label_height=LABEL_MM)
         for letter, p in letters.items():
             view.label(p, letter, 5.0, prefer_deg=135.0)
         _title_and_scales(view, title, f"μl = {format_significant(mu_l, 4)} м/мм",
@@ -157,6 +157,8 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
                     view.arrow(e.a, e.b, None, head_mm=min(4.0, e.length))
         inside = view.rect.polygon()
         for lb in scene.labels:
+            if lb.along is None:
+                continue
             a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
             rich = rl.Rich(plain(lb.anchor.split(":", 1)[1]))
             if lb.leader:

@@ -17,8 +17,8 @@ def draw_scene(view, scene: Scene, label_height: float = 5.0) -> None:
     names = {"vA": "vA", "vB": "vB"}
     for p, q, lab in scene.arrows:
         view.arrow(p, q, names.get(lab, lab))
-    for lab in scene.labels:
-        view.text(lab.point, lab.text, label_height, "center")
+    for scene_label in scene.labels:
+        view.text(scene_label.point, scene_label.text, label_height, "center")
 
 
 def draw_reducer(sheet, stage, region) -> None:

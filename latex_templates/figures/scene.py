@@ -191,16 +191,16 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
     best = None
     for rank, c in enumerate(cands):
-        b = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
-        if _boxes_hit(b, boxes):
+        box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+        if _boxes_hit(box, boxes):
             continue
-        near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= b[2] and max(s[0][0], s[1][0]) >= b[0]
-                and min(s[0][1], s[1][1]) <= b[3] and max(s[0][1], s[1][1]) >= b[1]]
-        hits = sum(1 for s in near if _crosses(b, s))
+        near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
+                and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
+        hits = sum(1 for s in near if _crosses(box, s))
         if hits == 0:
-            return c, b
+            return c, box
         if best is None or (hits, rank) < best[0]:
-            best = ((hits, rank), c, b)
+            best = ((hits, rank), c, box)
     if best is not None:
         return best[1], best[2]
     c = cands[0]

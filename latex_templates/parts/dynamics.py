@@ -12,6 +12,7 @@ other two flywheels give), through calculation records or filters.
 from __future__ import annotations
 
 import math
+from typing import Any, cast
 from dataclasses import dataclass
 
 import numpy as np
@@ -114,7 +115,7 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
 
 def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, CalcRecord]:
     """ΣP of the loads and M_red = ΣP / ω1 for the analysed position."""
-    named = {f"P{j}": t.record for j, t in enumerate(terms)}
+    named: dict[str, Any] = {f"P{j}": t.record for j, t in enumerate(terms)}
     expr = " + ".join(named) if named else "0 * omega1"
     total = record(r"P_\Sigma", expr, "Вт", *(() if named else (omega1,)),
                    meaning="суммарная мощность сил сопротивления и сил тяжести", **named)
@@ -156,7 +157,7 @@ def inertia_records(project, i: int, omega1: Var) -> tuple[list[CalcRecord], Cal
     dyn = project.task.dynamics
     J0 = Var("J0", r"J_0", dyn.crank_inertia, "кг·м²",
              "момент инерции ротора двигателя и колёс передачи, приведённый к кривошипу")
-    named_sh = {f"S{j}": s for j, s in enumerate(shares)}
+    named_sh: dict[str, Any] = {f"S{j}": s for j, s in enumerate(shares)}
     expr = " + ".join(["J0", *named_sh])
     total = record(r"J_\text{пр}", expr, "кг·м²", J0, meaning="приведённый момент инерции механизма", **named_sh)
     return shares, total
@@ -204,7 +205,7 @@ def scale_records(res) -> dict[str, CalcRecord | Var]:
     return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
 
 
-def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord]:
+def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     g = res.graphical
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
     psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
@@ -217,7 +218,7 @@ def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcReco
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
 
 
-def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord]:
+def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     ex = res.exact
     w_max = record(r"\omega_{\max}", "omega1 * (1 + delta / 2)", "рад/с", omega, delta,
                    meaning="наибольшая допускаемая угловая скорость кривошипа")
@@ -311,7 +312,7 @@ def method_rows(project, res) -> tuple[list[MethodRow], dict[str, np.ndarray]]:
     return rows, omegas
 
 
-def motion_records(res, omega: Var) -> dict[str, CalcRecord | Var]:
+def motion_records(res) -> dict[str, CalcRecord | Var]:
     mo = res.motion
     w_hi = Var("w_hi", r"\omega_{\max}'", mo.omega_max, "рад/с", "наибольшая угловая скорость установившегося движения")
     w_lo = Var("w_lo", r"\omega_{\min}'", mo.omega_min, "рад/с", "наименьшая угловая скорость установившегося движения")
@@ -346,10 +347,10 @@ def content(project) -> PartContent:
     tg = tangent_records(res, sc, omega, delta)
     ex = exact_records(res, omega, delta)
     mz = merzalov_records(res, omega, delta)
-    fw = flywheel_records(res, ex["J_ex"]) if res.exact.J_fly > 0 else None
+    fw = flywheel_records(res, cast(CalcRecord, ex["J_ex"])) if res.exact.J_fly > 0 else None
     drv = drive_records(res)
     rows, omegas = method_rows(project, res)
-    mot = motion_records(res, omega)
+    mot = motion_records(res)
     figures = {
         "dyn_work": fig.work_figure(res, labels),
         "dyn_wittenbauer": fig.wittenbauer_figure(res),
@@ -358,7 +359,7 @@ def content(project) -> PartContent:
     }
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
-        "i": _position_ref(project, res, i, i_dyn, short=True), "i_ref": _position_ref(project, res, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
+        "i": _position_ref(project, i, i_dyn, short=True), "i_ref": _position_ref(project, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
         "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(x.startswith("и") for x in labels),
@@ -381,7 +382,7 @@ def content(project) -> PartContent:
     return PartContent("sections/dynamics.tex.j2", ctx, figures, tuple(concl))
 
 
-def _position_ref(project, res, i: int, i_dyn: str | None, short: bool = False) -> Tex:
+def _position_ref(project, i: int, i_dyn: str | None, short: bool = False) -> Tex:
     """The analysed position named in the diagrams' grid (table 3.1, sheet 3) and, when its number
     differs there, in the grid of the kinematic analysis too: «3 по нумерации диаграмм листа 3
     (положение 2 плана положений)»; ``short``: the diagrams' number alone. An angle that is not on

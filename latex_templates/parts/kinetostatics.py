@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from ..render import Tex
@@ -64,7 +66,7 @@ def _check(rec: CalcRecord, expected: float, what: str) -> None:
         raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
-def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: list[tuple[str, dict]] = ()
+def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: Sequence[tuple[str, dict]] = ()
                  ) -> tuple[list[CalcRecord], list[tuple[str, dict]]]:
     """Σ sign·F·h over ``terms`` (sign, force Var, arm Var) + ``extra`` (expression over X and its
     operands: {"X": Var, other names: Var}); split into partial sums of :data:`TERMS_PER_RECORD` terms
@@ -95,12 +97,13 @@ def _final(symbol: str, items, denominator: tuple[str, Var], unit: str, negate: 
         expr = expr[2:]
     if not expr:
         expr = "0"
-    named = {k: v for _, d in items for k, v in d.items()}
+    named: dict[str, Any] = {k: v for _, d in items for k, v in d.items()}
     dn, dv = denominator
     full = f"-({expr}) / {dn}" if negate else f"({expr}) / {dn}"
     if expr == "0":
         full = f"0 * {dn}"
-    return record(symbol, full, unit, **named, **{dn: dv}, meaning=meaning)
+    denom: dict[str, Any] = {dn: dv}
+    return record(symbol, full, unit, **named, **denom, meaning=meaning)
 
 
 def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counter, arms_shown: list
@@ -208,7 +211,7 @@ def content(project) -> PartContent:
     mu_l = Var("mu_l", r"\mu_l", g.length_scale, "м/мм", "масштабный коэффициент длин схемы")
 
     loads_ctx = _loads_section(project, ks, mu_l)
-    resistance = _resistance(project, ks)
+    resistance = _resistance(project)
     read_mags: dict[str, float] = {}
     groups_ctx = []
     by_key = {gr.key: gr for gr in st.groups}
@@ -322,7 +325,7 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
     return {"links": links, "rows": rows, "g": gvar, "not_replaced": not_replaced}
 
 
-def _resistance(project, ks) -> list[dict]:
+def _resistance(project) -> list[dict]:
     """The production resistance at the analysed position (the stage ``resistance``): s/H, the
     law's factor and F = F_max·k as records; checked against the solver's load."""
     out = []
@@ -352,7 +355,9 @@ def _free_body(ks, grp, gg) -> tuple[list, list, list]:
     """Pairs, arrows and couples of a group's diagram (see :func:`free_body_figure`)."""
     r = ks.reactions
     repl = {x.link: x for x in ks.graphical.inertia}
-    pairs, arrows, couples = [], [], []
+    pairs: list[dict] = []
+    arrows: list[dict] = []
+    couples: list[dict] = []
     for p in r.pairs:
         if p.group != gg.key:
             continue
@@ -411,7 +416,8 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
-    arrows, couples = [], []
+    arrows: list[dict] = []
+    couples: list[dict] = []
     _loads_on(ks, (d,), {}, arrows, couples)
     for p in r.pairs_of(d):
         if p.name != fp.name:

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 from ..planetary.schemes import expand
 
-Point = tuple[float, float]
+from reportgen.geometry import Vec2 as Point
 
 ROW_GAP = 36.0        # distance between the two rows of a two-row planet block, sheet mm
 FACE = 5.0            # half-width of a wheel's rim tick, sheet mm

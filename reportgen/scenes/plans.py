@@ -34,6 +34,10 @@ def helpers(plan: Plan, keys: set[str]) -> set[str]:
     return {k for k in plan.points if k not in keys and k != pole(plan)}
 
 
+def _pt(p) -> tuple[float, float]:
+    return (float(p[0]), float(p[1]))
+
+
 def letter_tex(key: str, helper: bool = False) -> str:
     """A plan letter with its index: ``s2`` → ``s_{2}``; a helper point ``nba`` → ``n_{ba}``."""
     if helper and len(key) > 1:
@@ -52,7 +56,7 @@ def groups(plan: Plan, keys: list[str]) -> list[tuple[tuple[float, float], list[
                 names.append(k)
                 break
         else:
-            out.append((tuple(p), [k]))
+            out.append(((float(p[0]), float(p[1])), [k]))
     return out
 
 
@@ -76,16 +80,16 @@ def plan_scene(plan: Plan, keys: set[str] | None = None, name: str | None = None
         if math.hypot(*p) < SAME_MM or key in ends_done:
             continue
         ends_done.add(key)
-        ents.append(Arrow(f"{letter}_{{{k.upper()}}}", (0.0, 0.0), tuple(map(float, p)), "absolute"))
+        ents.append(Arrow(f"{letter}_{{{k.upper()}}}", (0.0, 0.0), _pt(p), "absolute"))
     values: dict[str, float] = {}
     for c in plan.components:
         a, b = plan.points[c.start], plan.points[c.end]
-        ents.append(Arrow(c.name, tuple(map(float, a)), tuple(map(float, b)), c.kind))
+        ents.append(Arrow(c.name, _pt(a), _pt(b), c.kind))
         values[c.name] = plan.measured_mm(c)
         values[f"{c.name}:read"] = plan.read_value(c)
         if math.dist(a, b) >= 1.0:
             labels.append(Label(c.name, c.name, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), "vector",
-                                (tuple(map(float, a)), tuple(map(float, b)))))
+                                (_pt(a), _pt(b))))
     for pos, names in groups(plan, order):
         text = ",".join(letter_tex(k, k in helper) for k in names)
         labels.append(Label(text, "point:" + ",".join(names), (float(pos[0]), float(pos[1])), "point"))

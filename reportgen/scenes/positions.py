@@ -208,9 +208,9 @@ def positions_scene(project, data: SchemeData, k: float, ratio: str) -> Scene:
     for name in ps:
         labels.append(Label(name, f"pos{i}:{name}", mm(ps[name]), "point"))
     if i != 0:
-        for name, p in pts(data.kin, 0).items():
+        for name, p0 in pts(data.kin, 0).items():
             if name not in lk.ground:
-                labels.append(Label(f"{name}_{{0}}", f"pos0:{name}", mm(p), "point"))
+                labels.append(Label(f"{name}_{{0}}", f"pos0:{name}", mm(p0), "point"))
     for kk, m in sorted(data.kin.coms.items()):
         pos = np.asarray(m.pos[i])
         if any(np.allclose(pos, ps[n]) for n in ps):
