@@ -9,6 +9,7 @@ import re
 
 import numpy as np
 
+from ..geometry import vec2 as _pt
 from .scene import Arrow, Entity, Label, Scale, Scene, frozen
 
 #: A vector shorter than this (mm) is named with a leader.
@@ -51,10 +52,6 @@ def diagonal(polygon, v) -> tuple[np.ndarray, np.ndarray]:
             if e < err:
                 best, err = (a, b), e
     return best
-
-
-def _pt(p) -> tuple[float, float]:
-    return (float(p[0]), float(p[1]))
 
 
 def polygon_scene(polygon, name: str | None = None) -> Scene:

@@ -9,16 +9,13 @@ from __future__ import annotations
 import numpy as np
 
 from .scales import FORCE_SERIES, round_scale
+from ..geometry import vec2 as _pt
 from .scene import Arrow, Entity, Label, Scale, Scene, Segment, frozen
 from .forces import force_tex
 
 #: The lever's loads: the largest drawn this long (mm), none shorter than MIN_ARROW_MM.
 LEVER_ARROW_MM = 40.0
 MIN_ARROW_MM = 7.0
-
-
-def _pt(p) -> tuple[float, float]:
-    return (float(p[0]), float(p[1]))
 
 
 def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None) -> Scene:

@@ -11,6 +11,7 @@ import re
 import numpy as np
 
 from ..plans import Plan
+from ..geometry import vec2 as _pt
 from .scene import Arrow, Entity, Label, Scale, Scene, frozen
 
 #: Plan points closer than this (mm) share one label.
@@ -32,10 +33,6 @@ def image_keys(plan: Plan) -> set[str]:
 
 def helpers(plan: Plan, keys: set[str]) -> set[str]:
     return {k for k in plan.points if k not in keys and k != pole(plan)}
-
-
-def _pt(p) -> tuple[float, float]:
-    return (float(p[0]), float(p[1]))
 
 
 def letter_tex(key: str, helper: bool = False) -> str:

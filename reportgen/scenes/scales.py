@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import math
 
+from ..tolerances import RTOL_ROUNDOFF
+
 #: Mantissas of round scale factors (see the module's docstring).
 PLAN_SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 FORCE_SERIES = (1.0, 2.0, 2.5, 5.0)
@@ -34,7 +36,7 @@ def round_up(x: float, series: tuple[float, ...] = PLAN_SERIES) -> float:
     while True:
         for m in series:
             mu = float(f"{m * 10.0 ** k:.12g}")
-            if mu >= x * (1 - 1e-12):
+            if mu >= x * (1 - RTOL_ROUNDOFF):
                 return mu
         k += 1
 

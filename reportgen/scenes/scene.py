@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping, Union
 
-Point = tuple[float, float]
+from ..geometry import Vec2 as Point  # a point of a scene, paper mm
 
 #: Line kinds a renderer maps to its own pens (sheet layers, matplotlib widths).
 LINE_KINDS = ("contour", "thin", "phantom", "axis", "hidden", "vectors", "construction")
