@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .errors import TaskError
+from .errors import InternalError, ParameterError, TaskError
 from .kinematics import KinematicModel, KinematicsResult
 from .kinematics.extremes import NoExtremesError, Strokes, find_strokes
 from .linkage import Linkage, compile_linkage
@@ -37,12 +37,12 @@ STAGES = frozenset({"linkage", "structure", "model", "strokes", "phi", "kinemati
                     "gears", "planetary", "dynamics"})
 
 
-class UndeclaredStage(AttributeError):
-    """A part or a sheet read a stage it does not declare in its ``NEEDS``."""
+class UndeclaredStage(InternalError, AttributeError):
+    """A part or a sheet read a stage it does not declare in its ``NEEDS`` (a bug of that part)."""
 
     def __init__(self, owner: str, stage: str, needs: tuple[str, ...]):
         self.owner, self.stage, self.needs = owner, stage, needs
-        super().__init__(f"{owner} reads the stage {stage!r} but declares NEEDS = {needs!r}")
+        super().__init__(f"{owner} reads the stage {stage!r}", f"it declares NEEDS = {needs!r}")
 
 
 class Needs:
@@ -53,7 +53,7 @@ class Needs:
     def __init__(self, project: "Project", needs: tuple[str, ...], owner: str):
         unknown = set(needs) - STAGES
         if unknown:
-            raise ValueError(f"{owner}: NEEDS names unknown stages {sorted(unknown)}; stages: {sorted(STAGES)}")
+            raise ParameterError(f"{owner}: NEEDS", sorted(unknown), f"stages among {sorted(STAGES)}")
         self._project, self._needs, self._owner = project, tuple(needs), owner
 
     def __getattr__(self, name: str):

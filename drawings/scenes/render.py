@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Iterable
 
+from reportgen.errors import InternalError
 from reportgen.scenes.scene import Arrow, Circle, Entity, Polyline, Scene, Segment
 
 from drawings.primitives import Canvas
@@ -28,7 +29,7 @@ def draw_entities(view: Canvas, entities: Iterable[Entity], unit: float = 1.0, *
         elif isinstance(e, Circle):
             view.circle_mm(m(e.c), e.r, e.kind)
         else:  # pragma: no cover - the scene has no other entities
-            raise TypeError(f"cannot draw {type(e).__name__}")
+            raise InternalError("scene entity", f"cannot draw {type(e).__name__}")
 
 
 def draw_scene(view: Canvas, scene: Scene, unit: float = 1.0, *, head_mm: float = 5.0) -> None:

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping, Union
 
+from ..errors import NameLookupError
 from ..geometry import Vec2 as Point  # a point of a scene, paper mm
 
 #: Line kinds a renderer maps to its own pens (sheet layers, matplotlib widths).
@@ -119,13 +120,13 @@ class Scene:
         for s in self.scales:
             if s.symbol == symbol:
                 return s
-        raise KeyError(symbol)
+        raise NameLookupError("scale", symbol, tuple(s.symbol for s in self.scales))
 
     def entity(self, id_: str) -> Entity:
         for e in self.entities:
             if e.id == id_:
                 return e
-        raise KeyError(id_)
+        raise NameLookupError("entity", id_, tuple(e.id for e in self.entities))
 
     def bounds(self) -> tuple[float, float, float, float]:
         """xmin, ymin, xmax, ymax of the drawn geometry (mm), labels' points included."""

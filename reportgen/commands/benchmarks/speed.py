@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import ComputationError
+from ...errors import ComputationError
 from .tables import Table, ms, rel, sec
 
 
