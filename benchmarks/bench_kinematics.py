@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from reportgen.bench.tables import best_time as shortest_time
+from reportgen.commands.benchmarks.tables import best_time as shortest_time
 from reportgen.kinematics import build_model
 from reportgen.taskfile import load_task
 

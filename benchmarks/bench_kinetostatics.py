@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from reportgen.bench.tables import best_time as shortest_time
+from reportgen.commands.benchmarks.tables import best_time as shortest_time
 from reportgen.kinetostatics import kinetostatics_at, solve_reactions, zhukovsky_lever
 from reportgen.project import Project
 from reportgen.taskfile import load_task

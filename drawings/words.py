@@ -9,26 +9,38 @@ sheet sentence with its ``\\VAR{name}`` placeholders filled (values are printed 
 from __future__ import annotations
 
 from contextlib import contextmanager
-from typing import Iterator
+from typing import Any, Callable, Iterator
+
+from reportgen.errors import InternalError
 
 _STACK: list = []
+#: The catalogue loader (``latex_templates.render.Strings``: one loader for the note and the sheets),
+#: given by the command layer with :func:`use_catalogue` — the sheets never import the note.
+_CATALOGUE: list[Callable[[str], Any]] = []
+
+
+def use_catalogue(factory: Callable[[str], Any]) -> None:
+    """Read the sheets' words with ``factory(language)`` (the command layer passes the note's
+    catalogue loader, so that both speak from the same ``latex_templates/strings``)."""
+    _CATALOGUE[:] = [factory]
+
+
+def _new(code: str) -> Any:
+    if not _CATALOGUE:
+        raise InternalError("drawings.words", "no catalogue: the command layer calls use_catalogue() first")
+    return _CATALOGUE[0](code)
 
 
 def _strings():
-    from latex_templates.render import Strings
-    return _STACK[-1] if _STACK else Strings("ru")
+    return _STACK[-1] if _STACK else _new("ru")
 
 
 @contextmanager
 def language(code: str | None) -> Iterator[None]:
     """Draw the sheets inside this block in ``code`` (default Russian)."""
-    from latex_templates.parts import active_strings
-    from latex_templates.render import Strings
-    strings = Strings(code or "ru")
-    _STACK.append(strings)
+    _STACK.append(_new(code or "ru"))
     try:
-        with active_strings(strings):       # the note's helpers that sheets reuse speak it too
-            yield
+        yield
     finally:
         _STACK.pop()
 

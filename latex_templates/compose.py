@@ -10,6 +10,8 @@ from types import ModuleType
 
 from reportgen.modules import optional_module
 
+from reportgen.project import Needs
+
 from .note import Section
 from .parts import PartContent, active_strings
 
@@ -65,7 +67,7 @@ def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list
             if mod is None or not mod.available(project):
                 continue
             with active_strings(strings):
-                contents.append((name, mod.content(project)))
+                contents.append((name, mod.content(Needs(project, mod.NEEDS, f"part {name}"))))
         if not contents:
             left_out.append(title)
             continue

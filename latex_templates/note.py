@@ -189,7 +189,8 @@ def _place_figure(obj: Any, fig_dir: Path, stem: str, section_key: str, name: st
     safe = re.sub(r"[^A-Za-z0-9-]", "-", stem)
     if hasattr(obj, "savefig"):
         target = fig_dir / f"{safe}.pdf"
-        obj.savefig(target, format="pdf", bbox_inches="tight",
+        # a scene's figure keeps its exact size (it is drawn at a true scale); others are cropped
+        obj.savefig(target, format="pdf", bbox_inches=None if getattr(obj, "reportgen_exact", False) else "tight",
                     metadata={"CreationDate": None, "ModDate": None, "Producer": None})
         _release(obj)
     else:

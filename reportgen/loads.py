@@ -211,3 +211,58 @@ def power(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
     for m in loads.moments:
         P += np.asarray(m.value) * qd[:, m.link, 2]
     return P
+
+
+@dataclass(frozen=True)
+class ResistanceAt:
+    """The production resistance of one load at the force position, from its law: the output's
+    travel from the start of its stroke ``s`` and the whole stroke ``H`` (m or rad), the law's
+    factor ``k`` = law(s/H), the load's value (N or N·m, as the solver applied it)."""
+    link: int
+    law: str
+    is_force: bool
+    maximum: float             # F_max (N) or M_max (N·m)
+    working: bool              # the force position is on the working stroke
+    on: bool                   # the load acts there
+    value: float               # |F| or |M| applied by the solver
+    unit: str                  # "м" (a slider) or "рад" (a rocker)
+    s: float | None = None
+    H: float | None = None
+    k: float | None = None
+
+
+def resistance_at(project) -> tuple[ResistanceAt, ...]:
+    """The production resistance at the force position of ``project`` (section 2 prints it; the
+    solver's load is the same number)."""
+    ks = project.kinetostatics
+    mech, lk, strokes = project.task.mechanism, project.linkage, project.strokes
+    solver = {f.link: float(np.hypot(*np.asarray(f.vector)[0])) for f in ks.reactions.loads.forces
+              if f.kind == "resistance"}
+    solver.update({m.link: abs(float(np.asarray(m.value)[0])) for m in ks.reactions.loads.moments
+                   if m.kind == "resistance"})
+    out = []
+    for ld in mech.loads:
+        if ld.kind != "resistance" or strokes is None:
+            continue
+        q = np.asarray(ks.reactions.kin.q)
+        x_arr, kind = link_coordinate(lk, ld.link, q)
+        ends, _ = project.model.positions(np.array([strokes.phi_start, strokes.phi_end]))
+        xe, _ = link_coordinate(lk, ld.link, ends)
+        x = float(x_arr[0])
+        if kind == "rocker":
+            x = float(xe[0]) + (x - float(xe[0]) + math.pi) % (2 * math.pi) - math.pi
+        win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if lk.omega >= 0 else -1.0)
+        working = bool(win.on_working(np.array([ks.phi]))[0])
+        travel = float(xe[1] - xe[0])
+        on = (working and ld.stroke in ("working", "both")) or (not working and ld.stroke in ("idle", "both"))
+        is_force = ld.force is not None
+        maximum = float(ld.force if is_force else ld.moment)
+        unit = "м" if kind == "slider" else "рад"
+        s_val = H = k = None
+        if on and travel != 0:
+            s_val = abs(x - float(xe[0])) if working else abs(float(xe[1]) - x)
+            H = abs(travel)
+            k = float(law_value(ld.law, np.array([s_val / H]))[0])
+        out.append(ResistanceAt(ld.link, ld.law, is_force, maximum, working, on, solver.get(ld.link, 0.0), unit,
+                                s_val, H, k))
+    return tuple(out)

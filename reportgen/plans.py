@@ -25,13 +25,15 @@ import numpy as np
 from .geometry import perp as _perp
 from .kinematics import KinematicsResult
 from .linkage import Linkage
+from .scenes.scales import PLAN_SERIES
+from .scenes.scales import round_scale as _round_scale
 from .structure import Group, Structure
-from .tolerances import RTOL_ROUNDOFF
 from .errors import NameLookupError
 
-#: Scale factors are 1, 2, 2.5, 4 or 5 × 10^k (so the crank's vector is 50–100 mm, unless another
-#: point's vector would then stand beyond ``PLAN_MAX_MM``).
-ROUND_STEPS = (1.0, 2.0, 2.5, 4.0, 5.0)
+#: The crank's vector is drawn 50–100 mm long (the one round-scale rule of
+#: :mod:`reportgen.scenes.scales`, series 1, 2, 2.5, 4, 5), unless another point's vector would then
+#: stand beyond ``PLAN_MAX_MM``.
+ROUND_STEPS = PLAN_SERIES
 #: The drawn length of the crank's vector is at most this, mm.
 CRANK_VECTOR_MAX_MM = 100.0
 #: No point of a plan stands farther than this from the pole, mm (a link that turns much faster
@@ -42,17 +44,8 @@ MEASURE_MM = 0.1
 
 
 def round_scale(value: float, max_mm: float = CRANK_VECTOR_MAX_MM) -> float:
-    """The smallest round μ (``ROUND_STEPS`` × 10^k) with value/μ ≤ max_mm; value/μ ≥ max_mm/2."""
-    if value <= 0 or not math.isfinite(value):
-        return 1.0
-    target = value / max_mm
-    k = math.floor(math.log10(target))
-    for exp in (k, k + 1):
-        for step in ROUND_STEPS:
-            mu = step * 10.0 ** exp
-            if mu >= target * (1 - RTOL_ROUNDOFF):
-                return mu
-    return 10.0 ** (k + 1)
+    """The plans' round μ: :func:`reportgen.scenes.scales.round_scale` (series 1, 2, 2.5, 4, 5)."""
+    return _round_scale(value, max_mm, PLAN_SERIES)
 
 
 def letter(name: str) -> str:

@@ -13,17 +13,55 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .errors import IncompleteCycleError, TaskError
+from .errors import IncompleteCycleError, InternalError, ParameterError, TaskError
 from .kinematics import KinematicModel, KinematicsResult
 from .kinematics.extremes import NoExtremesError, Strokes, find_strokes
 from .linkage import Linkage, compile_linkage
 from .structure import Structure, analyse_structure
+from .scenes.boxes import DEFAULT as DEFAULT_BOXES
+from .scenes.boxes import SceneBoxes
 from .task import Task
 
 if TYPE_CHECKING:  # the planetary package is imported when a task has [planetary]
     from .planetary.drive import DriveCheck, DriveRatio
     from .planetary.search import PlanetaryDesign
     from .planetary.velocity import VelocityTriangle
+
+
+#: Angles of the dense cycle of M_ур (section 2's graph).
+CYCLE_POINTS = 361
+
+#: The stages of a project: what a part of the note or a sheet declares in its ``NEEDS``.
+STAGES = frozenset({"linkage", "structure", "model", "strokes", "phi", "kinematics", "analysed", "plans",
+                    "scenes", "kinetostatics", "balancing_cycle", "balancing_cycle_dense", "resistance",
+                    "gears", "planetary", "dynamics", "crane"})
+
+
+class UndeclaredStage(InternalError, AttributeError):
+    """A part or a sheet read a stage it does not declare in its ``NEEDS`` (a bug of that part)."""
+
+    def __init__(self, owner: str, stage: str, needs: tuple[str, ...]):
+        self.owner, self.stage, self.needs = owner, stage, needs
+        super().__init__(f"{owner} reads the stage {stage!r}", f"it declares NEEDS = {needs!r}")
+
+
+class Needs:
+    """``project`` as a part or a sheet may see it: the stages of its ``NEEDS`` (and what they are
+    built from, which the stages read themselves), the task, the boxes and the helpers; any other
+    stage raises :class:`UndeclaredStage`, so a part that reads more than it says fails its test."""
+
+    def __init__(self, project: "Project", needs: tuple[str, ...], owner: str):
+        unknown = set(needs) - STAGES
+        if unknown:
+            raise ParameterError(f"{owner}: NEEDS", sorted(unknown), f"stages among {sorted(STAGES)}")
+        self._project, self._needs, self._owner = project, tuple(needs), owner
+
+    def __getattr__(self, name: str):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name in STAGES and name not in self._needs:
+            raise UndeclaredStage(self._owner, name, self._needs)
+        return getattr(self._project, name)
 
 
 @dataclass(frozen=True)
@@ -40,9 +78,10 @@ class PlanetaryStage:
 class Project:
     """Lazy, cached stages of one task. ``at_deg`` replaces the [analysis] positions."""
 
-    def __init__(self, task: Task, at_deg: list[float] | None = None):
+    def __init__(self, task: Task, at_deg: list[float] | None = None, boxes: SceneBoxes = DEFAULT_BOXES):
         self.task = task
         self.at_deg = list(at_deg) if at_deg else None
+        self.boxes = boxes
 
     def _need_mechanism(self):
         if self.task.mechanism is None:
@@ -119,6 +158,27 @@ class Project:
         return self.model.solve(phi_rad)
 
     @cached_property
+    def analysed(self) -> int:
+        """The position analysed in detail (plans, kinetostatics): ``[analysis] force_position`` if
+        it is a position number, else 2 (clipped to the positions)."""
+        fp = self.task.analysis.force_position
+        n = len(self.phi)
+        i = fp if isinstance(fp, int) and not isinstance(fp, bool) else 2
+        return min(max(i, 0), n - 1)
+
+    @cached_property
+    def plans(self):
+        """The velocity and acceleration plans of the analysed position (reportgen.plans.Plan)."""
+        from .plans import build_plans
+        return build_plans(self.linkage, self.structure, self.kinematics, self.analysed)
+
+    @cached_property
+    def scenes(self):
+        """The constructions that the note and the sheets both draw (reportgen.scenes.stage.Scenes)."""
+        from .scenes.stage import Scenes
+        return Scenes(self)
+
+    @cached_property
     def gears(self):
         """The external involute pair of [gears] (None if the task has none)."""
         if self.task.gears is None:
@@ -167,6 +227,31 @@ class Project:
         self.need_full_cycle("[dynamics] (the motion over a cycle and the flywheel)")
         from .dynamics import dynamics_of
         return dynamics_of(self)
+
+    @cached_property
+    def kinetostatics(self):
+        """Section 2 at the task's force position (reportgen.kinetostatics.Kinetostatics)."""
+        from .kinetostatics.results import kinetostatics_of
+        return kinetostatics_of(self)
+
+    @cached_property
+    def balancing_cycle(self):
+        """M_ур by the groups and by the lever at every analysed position (BalancingCycle)."""
+        from .kinetostatics import balancing_cycle
+        return balancing_cycle(self, self.phi)
+
+    @cached_property
+    def balancing_cycle_dense(self):
+        """M_ur over one turn at ``CYCLE_POINTS`` angles from position 0 (for the graph of section 2)."""
+        from .kinetostatics import balancing_cycle
+        sgn = 1.0 if self.model.omega >= 0 else -1.0
+        return balancing_cycle(self, float(self.phi[0]) + sgn * np.linspace(0.0, 2 * math.pi, CYCLE_POINTS))
+
+    @cached_property
+    def resistance(self):
+        """The production resistance at the force position from its law (reportgen.loads.resistance_at)."""
+        from .loads import resistance_at
+        return resistance_at(self)
 
     def loads_at(self, kin: KinematicsResult, inertia: bool = True):
         """External loads (+ inertia) at the positions of ``kin``."""

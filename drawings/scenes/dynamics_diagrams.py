@@ -83,7 +83,7 @@ class Layout:
 
 
 def spans(g, labels: list[str] | None = None) -> dict[str, Span]:
-    chord_line = np.array([0.0, float(g.a_mm[-1])])
+    chord_line = np.array([0.0, float(g.drive_mm[-1])])       # A_дв rises to −A_с(2π)
     tangents = np.array([g.K_mm, g.L_mm])
     names = [n for n in (labels or []) if not n.isdigit()]
     bottom_m = BOTTOM_MM + (max(len(n) for n in names) * 2.6 + 6.0 if names else 0.0)
@@ -209,18 +209,20 @@ def _nodes_polyline(v: View, xs, ys) -> list[tuple[float, float]]:
 
 
 def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
-    """A_с by chords and the straight line of A_дв (from the origin to the end of A_с)."""
+    """A_с by chords and the straight line of A_дв = −A_с(2π)·φ/2π (from the origin to the end of
+    A_с mirrored: the note's convention ΔE = A_дв + A_с)."""
     sp = spans(g)["A"]
     v = _view(sheet, "work", lay.work, lay.o_work)
     _title(v, tr("sheets.dd04"),
            tr("sheets.dd05", v1=format_significant(g.mu_A, 4)))
     _phi_axes(v, g, sp, "A", labels, numbers=False)
     pts = _nodes_polyline(v, g.x, g.a_mm)
-    end = pts[-1]
+    end = (float(g.x[-1]), float(g.drive_mm[-1]))
     v.line((0.0, 0.0), end, "contour")
+    v.line(pts[-1], end, "thin")               # the end ordinate of A_с carried over with its sign changed
     i_mid = len(pts) // 2
     v.label(pts[i_mid], tr("sheets.dd06"), 5.0, prefer_deg=-60.0)
-    v.label((end[0] * 0.5, end[1] * 0.5), tr("sheets.dd07"), 5.0, prefer_deg=60.0)
+    v.label((end[0] * 0.5, end[1] * 0.5), tr("sheets.dd07"), 5.0, prefer_deg=120.0)
     return v
 
 

@@ -20,13 +20,16 @@ from reportgen.errors import BuildError
 from reportgen.plans import Plan
 from ..words import tr
 from ..words import unit as words_unit
+from reportgen.scenes.plans import UNITS, plan_scene
+from reportgen.scenes.scene import Arrow, Scene
+
+from drawings.scenes import render
 
 #: Room for letters and names around a plan's points, and the caption / title strips, mm.
 PAD_LABELS, STRIP = 16.0, 12.0
 #: Points of a plan closer than this (mm) share one label.
 SAME_MM = 0.3
 
-UNITS = {"velocity": ("μv", "(м/с)/мм", "V"), "acceleration": ("μa", "(м/с²)/мм", "a")}
 
 
 def pole(plan: Plan) -> str:
@@ -82,52 +85,43 @@ class Drawn:
 
 
 def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names: bool = True,
-              letter_height: float = 5.0, small: bool = False) -> list[Drawn]:
-    """The plan in ``view`` (model = plan mm). Returns the arrows drawn."""
-    drawn: list[Drawn] = []
-    pl = pole(plan)
+              letter_height: float = 5.0, small: bool = False, scene: Scene | None = None) -> list[Drawn]:
+    """The plan's scene (:func:`reportgen.scenes.plans.plan_scene`) in ``view`` (model = plan mm).
+    Returns the arrows drawn."""
+    scene = scene if scene is not None else plan_scene(plan, image_keys)
     helper = helpers(plan, image_keys)
-    order = [pl] + [k for k in plan.points if k != pl and k not in helper] + sorted(helper)
-    # absolute vectors from the pole to the images not reached by a component from the pole
     symbol, unit, _ = UNITS[plan.kind]
     unit = words_unit(unit)
     if small:
         view.text_mm((view.rect.x0 + 2.0, view.rect.y1 - 1.0), title, 3.5, "top-left")
     else:
-        caption = f"{symbol} = {format_significant(plan.scale, 4)} {unit}"
+        scale = scene.scale()
+        caption = f"{scale.symbol} = {format_significant(scale.value, 4)} {scale.unit}"
         view.text_mm((view.rect.center[0], view.rect.y0 + 4.0), caption, 5.0, "bottom-center")
         view.title(title)
-    from_pole = {c.end for c in plan.components if c.start == pl}
-    ends_done = {tuple(np.round(plan.points[e], 6)) for e in from_pole}
     head = 3.5 if small else 5.0
-    for k in order:
-        if k == pl or k in helper or k in from_pole:
-            continue
-        p = plan.points[k]
-        key = tuple(np.round(p, 6))
-        if math.hypot(*p) < SAME_MM or key in ends_done:
-            continue
-        ends_done.add(key)
-        view.arrow((0.0, 0.0), p, head_mm=head)
-        drawn.append(Drawn(f"{UNITS[plan.kind][2]}_{{{k.upper()}}}", (0.0, 0.0), vec2(p)))
-    for c in plan.components:
-        a, b = plan.points[c.start], plan.points[c.end]
-        view.arrow(a, b, head_mm=head)
-        drawn.append(Drawn(c.name, vec2(a), vec2(b)))
+    arrows = [e for e in scene.entities if isinstance(e, Arrow)]
+    render.draw_entities(view, arrows, head_mm=head)
+    drawn = [Drawn(e.id, e.a, e.b) for e in arrows]
     # letters at the points
     inside = label_region(view, small)
-    for pos, keys in _groups(plan, order):
+    for lb in scene.labels:
+        if lb.role != "point":
+            continue
+        keys = lb.anchor.split(":", 1)[1].split(",")
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
-        p = view.transform(pos)
+        p = view.transform(lb.at)
         rl.place_rich(view, rl.around(p, label, letter_height, 45.0), label, letter_height,
                       inside=inside, optional=small)
     # names of the components along their arrows
     if names:
-        for c in plan.components:
-            a, b = view.transform(plan.points[c.start]), view.transform(plan.points[c.end])
+        for lb in scene.labels:
+            if lb.role != "vector" or lb.along is None:
+                continue
+            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
             if math.dist(a, b) < 1.0:
                 continue
-            rich = rl.from_tex(c.name)
+            rich = rl.from_tex(lb.text)
             rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside)
     return drawn
 

@@ -5,7 +5,6 @@ of mass and of the crank pin, the stroke H of the slider and the crank angles of
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 from shapely.geometry import Polygon
@@ -13,111 +12,61 @@ from shapely.geometry import Polygon
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import View
 from drawings.scenes import kinematics_labels as rl
-from reportgen import gost_scales
+from drawings.scenes import render
 from reportgen.geometry import vec2
 from reportgen.kinematics import KinematicsResult
-from reportgen.kinematics.constraints import rot
 from reportgen.project import Project
-from ..words import tr
+from reportgen.scenes import positions
+from reportgen.scenes.positions import BLOCK_MM, SchemeData
+from reportgen.scenes.scales import GOST_SCALES, gost_scale  # noqa: F401  (re-exported for the sheet)
+from reportgen.scenes.scene import Scene
 
-#: Positions of the dense trajectories.
-DENSE = 144
-HINGE_MM = 2.0
-THIN_HINGE_MM = 1.0
-BLOCK_MM = (14.0, 7.0)
+from ..words import tr
 #: Link numbers: radius of the circle, text height, mm.
 LINK_NUMBER_MM = (2.8, 3.5)
 
 
-@dataclass(frozen=True)
-class SchemeData:
-    """Everything the scheme view draws, in metres."""
-    kin: KinematicsResult            # the analysed positions
-    dense: KinematicsResult          # DENSE positions over one turn, for the trajectories
-    extremes: KinematicsResult | None  # [start, end] of the working stroke (None: no strokes)
-    bold: tuple[int, ...]            # position 0 and the analysed position
-    analysed: int
-    start_is_zero: bool              # position 0 is the start of the working stroke
-
-
 def scheme_data(project: Project, analysed: int) -> SchemeData:
-    if project.task.document.kind == "control-work" or not project.full_cycle:
-        # one position (a control work) or a crank that cannot turn fully: no traces, no strokes
-        kin = project.kinematics
-        return SchemeData(kin, kin, None, tuple(sorted({0, analysed})), analysed, False)
-    phis = np.linspace(0.0, 2 * math.pi, DENSE, endpoint=False)
-    dense = project.model.solve(project.phi[0] + phis)
-    st = project.strokes
-    ext = project.model.solve(np.array([st.phi_start, st.phi_end])) if st is not None else None
-    start_is_zero = st is not None and abs(math.remainder(float(project.phi[0]) - st.phi_start, 2 * math.pi)) < 1e-9
-    bold = tuple(sorted({0, analysed}))
-    return SchemeData(project.kinematics, dense, ext, bold, analysed, start_is_zero)
-
-
-def gost_scale(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> tuple[float, str]:
-    """The largest ГОСТ 2.302 scale that fits (``reportgen.gost_scales``); returns (sheet mm per metre, «1:2,5»)."""
-    s = gost_scales.largest_fitting(_needed(width_m, height_m, max_w_mm, max_h_mm))
-    return 1000.0 * gost_scales.factor(s), gost_scales.label(s)
-
-
-def _needed(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> float:
-    """The largest factor (drawing per real) with which a width × height (m) fits max_w × max_h (mm)."""
-    fits = [m / (1000.0 * e) for e, m in ((width_m, max_w_mm), (height_m, max_h_mm)) if e > 0]
-    return min(fits) if fits else math.inf
-
-
-def gost_scales_to_try(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> list[tuple[float, str]]:
-    """The largest ГОСТ 2.302 scale that fits and every smaller one, as (sheet mm per metre, label)."""
-    return [(1000.0 * gost_scales.factor(s), gost_scales.label(s))
-            for s in gost_scales.fitting(_needed(width_m, height_m, max_w_mm, max_h_mm))]
-
-
-def _pts(kin: KinematicsResult, i: int) -> dict[str, np.ndarray]:
-    return {n: np.asarray(m.pos[i]) for n, m in kin.points.items()}
-
-
-def _guide_dir(kin: KinematicsResult, i: int, slide) -> np.ndarray:
-    if slide.guide == 0:
-        return np.asarray(slide.line_dir, float)
-    return rot(np.array([kin.q[i][slide.guide, 2]]), tuple(slide.line_dir))[0]
+    """The scheme's data (the project's, when ``analysed`` is the project's analysed position)."""
+    if analysed == project.analysed:
+        return project.scenes.scheme_data
+    return positions.scheme_data(project, analysed)
 
 
 def bounds(data: SchemeData, linkage=None) -> tuple[float, float, float, float]:
-    """Model bounds of everything the view draws (m); with ``linkage``, the crank circle's too
-    (one position: no traces hold it)."""
-    arrs = [np.asarray(m.pos) for m in data.kin.points.values()]
-    arrs += [np.asarray(m.pos) for m in data.dense.coms.values()]
-    arrs += [np.asarray(m.pos) for m in data.dense.points.values()]
-    if linkage is not None:    # the crank circle is always drawn
-        o = np.asarray(data.kin.points[linkage.drive_axis].pos)[0]
-        r = float(np.hypot(*(np.asarray(data.kin.points[linkage.drive_tip].pos)[0] - o)))
-        arrs.append(np.array([o - r, o + r]))
-    allp = np.vstack(arrs)
-    return (float(allp[:, 0].min()), float(allp[:, 1].min()), float(allp[:, 0].max()), float(allp[:, 1].max()))
+    """Model bounds of everything the view draws (m); with ``linkage``, the crank circle's too."""
+    return positions.bounds(data, linkage)
+
+
+def _pts(kin: KinematicsResult, i: int) -> dict[str, np.ndarray]:
+    return positions.pts(kin, i)
+
+
+def _guide_dir(kin: KinematicsResult, i: int, slide) -> np.ndarray:
+    return positions.guide_dir(kin, i, slide)
 
 
 def _centre(data: SchemeData) -> np.ndarray:
-    return np.vstack([np.asarray(m.pos) for m in data.dense.points.values()]).mean(axis=0)
+    return positions.centre(data)
 
 
 # ---------------------------------------------------------------------------------------------
 
 
-def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str, mu_l: float) -> None:
-    _draw_guides(view, project, data)
-    _draw_trajectories(view, project, data)
-    for i in range(len(data.kin.phi)):
-        if i not in data.bold:
-            _draw_position(view, project, data.kin, i, bold=False)
-    if data.extremes is not None:
-        for j in ((1,) if data.start_is_zero else (0, 1)):
-            _draw_position(view, project, data.extremes, j, bold=False, layer="phantom")
-    for i in data.bold:
-        _draw_position(view, project, data.kin, i, bold=True)
+def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str, mu_l: float,
+                scene: Scene | None = None) -> Scene:
+    """The plan of positions: the scene (``project.scenes.positions`` at the view's scale) drawn,
+    then the sheet's own annotations (crank angles, stroke, letters, numbers). Returns the scene."""
+    k = view.transform.scale
+    if scene is None:
+        scene = project.scenes.positions
+        if abs(scene.scale().value * k - 1.0) > 1e-9:
+            scene = project.scenes.positions_at(k, scale_text)
+    render.draw_scene(view, scene, unit=1.0 / k)
     _draw_crank_angles(view, project, data)
     _draw_stroke(view, project, data)
-    _draw_letters(view, project, data)
-    _draw_numbers(view, project, data)
+    _draw_letters(view, scene, k)
+    _draw_numbers(view, project, scene, k)
     _draw_link_numbers(view, project, data)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
                  tr("sheets.ks01", v1=format_significant(mu_l, 4), scale_text=scale_text), 5.0, "bottom-center")
@@ -128,6 +77,7 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
         view.title(tr(key, phi=format_number(phi, 2)))
     else:
         view.title(tr("sheets.ks02", v1=len(data.kin.phi)))
+    return scene
 
 
 def _inside(view: View) -> Polygon:
@@ -137,118 +87,11 @@ def _inside(view: View) -> Polygon:
 
 
 def _link_outline(names: tuple[str, ...]) -> list[tuple[str, str]]:
-    if len(names) == 2:
-        return [(names[0], names[1])]
-    return [(names[k], names[(k + 1) % len(names)]) for k in range(len(names))]
-
-
-def _draw_position(view: View, project: Project, kin: KinematicsResult, i: int, *, bold: bool,
-                   layer: str | None = None) -> None:
-    lk = project.linkage
-    pts = _pts(kin, i)
-    layer = layer or ("contour" if bold else "thin")
-    r = HINGE_MM if bold else THIN_HINGE_MM
-    for k in lk.moving:
-        names = lk.bodies[k].points
-        for a, b in _link_outline(names) if len(names) >= 2 else []:
-            view.segment(pts[a], pts[b], layer, trim_mm=(r, r))
-    for j in lk.joints:
-        if 0 in j.bodies:
-            continue
-        if bold:
-            view.hinge(pts[j.name], r)
-        else:
-            view.circle_mm(pts[j.name], r, layer)
-    for s in lk.slides:
-        if len(lk.bodies[s.link].points) != 1:
-            continue
-        d = _guide_dir(kin, i, s)
-        ang = math.degrees(math.atan2(d[1], d[0]))
-        if bold:
-            view.slider(pts[s.point], ang, *BLOCK_MM, guide_mm=None, hinge_mm=HINGE_MM)
-        else:
-            view.slider(pts[s.point], ang, BLOCK_MM[0] * 0.7, BLOCK_MM[1], guide_mm=None,
-                        hinge_mm=0, layer=layer)
-
-
-def _pivot_direction(project: Project, kin: KinematicsResult, i: int, name: str) -> float:
-    """Direction (deg, a multiple of 90) from a fixed pivot to its base: away from its links."""
-    lk = project.linkage
-    pts = _pts(kin, i)
-    p = pts[name]
-    acc = np.zeros(2)
-    for k in lk.moving:
-        if name in lk.bodies[k].points:
-            for other in lk.bodies[k].points:
-                if other != name:
-                    v = pts[other] - p
-                    n = np.hypot(*v)
-                    if n > 0:
-                        acc += v / n
-    if np.hypot(*acc) < 1e-9:
-        return -90.0
-    ang = math.degrees(math.atan2(-acc[1], -acc[0]))
-    return float(round(ang / 90.0) * 90.0)
-
-
-def _draw_guides(view: View, project: Project, data: SchemeData) -> None:
-    """Frame guides of the sliders (hatched lines across the travel) and the fixed pivots."""
-    lk = project.linkage
-    for s in lk.slides:
-        if s.guide != 0:
-            continue
-        d = np.asarray(s.line_dir, float)
-        n = np.array([-d[1], d[0]])
-        lp = np.asarray(s.line_point, float)
-        if np.dot(_towards_links(project, data, s.link, s.point), n) > 0:
-            n = -n          # the guide and its hatching on the side away from the coupler
-        travel = np.asarray(data.dense.points[s.point].pos) @ d
-        half = (BLOCK_MM[0] / 2 + 12.0) / view.transform.scale
-        t0, t1 = float(travel.min()) - half, float(travel.max()) + half
-        off = n * (BLOCK_MM[1] / 2) / view.transform.scale
-        p = lp + d * (t0 - np.dot(lp, d)) + off
-        q = lp + d * (t1 - np.dot(lp, d)) + off
-        # hatch on the side of n (away from the mechanism): ground() hatches on the right of p→q
-        t = q - p
-        side = -1.0 if t[0] * n[1] - t[1] * n[0] < 0 else 1.0
-        view.ground(tuple(p), tuple(q), side=side)
-    pos = data.analysed
-    for g in lk.ground:
-        if not any(0 in j.bodies and j.name == g for j in lk.joints):
-            continue
-        view.fixed_pivot(_pts(data.kin, pos)[g], _pivot_direction(project, data.kin, pos, g))
+    return positions.link_outline(names)
 
 
 def _towards_links(project: Project, data: SchemeData, link: int, point: str) -> np.ndarray:
-    """Mean direction from a slider's point to the other points of the links joined to it."""
-    lk = project.linkage
-    p = np.asarray(data.kin.points[point].pos)
-    acc = np.zeros(2)
-    for k in lk.moving:
-        if k == link or point not in lk.bodies[k].points:
-            continue
-        for other in lk.bodies[k].points:
-            if other != point:
-                acc += (np.asarray(data.kin.points[other].pos) - p).sum(axis=0)
-    return acc
-
-
-def _draw_trajectories(view: View, project: Project, data: SchemeData) -> None:
-    lk = project.linkage
-    o = _pts(data.kin, 0)[lk.drive_axis]
-    r = float(np.hypot(*(_pts(data.kin, 0)[lk.drive_tip] - o)))
-    view.circle(o, r, "thin")
-    for _k, m in sorted(data.dense.coms.items()):
-        path = np.asarray(m.pos)
-        span = float(np.ptp(path, axis=0).max())
-        if span * view.transform.scale < 2.0:
-            continue
-        ring = Polygon(path)
-        if ring.is_valid and ring.area < 1e-4 * ring.length ** 2:
-            continue          # a straight path (a slider on the frame): its guide shows it
-        if np.allclose(path, np.asarray(data.dense.points[lk.drive_tip].pos)):
-            continue          # the crank pin's circle is drawn already
-        view.polyline([tuple(p) for p in path], "thin", closed=True)
+    return positions.towards_links(project.linkage, data, link, point)
 
 
 def _arc_points(o: np.ndarray, r: float, a0: float, sweep: float, n: int = 60) -> list[tuple[float, float]]:
@@ -312,51 +155,38 @@ def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
                    text=f"H = {format_number(st.stroke * 1000.0, 1)}")
 
 
-def _draw_letters(view: View, project: Project, data: SchemeData) -> None:
-    """Letters of the points in the analysed position; moving points of position 0 with index 0;
-    the centres of mass S_k of the analysed position."""
-    lk = project.linkage
-    i = data.analysed
-    pts = _pts(data.kin, i)
-    c = view.transform(tuple(_centre(data)))
-    for name in pts:
-        p = view.transform(tuple(pts[name]))
-        prefer = math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
-        rl.place_rich(view, rl.around(p, rl.Rich(name), 5.0, prefer), rl.Rich(name), 5.0, inside=_inside(view))
-    if i != 0:
-        p0s = _pts(data.kin, 0)
-        for name in p0s:
-            if name in lk.ground:
-                continue
-            p = view.transform(tuple(p0s[name]))
-            prefer = math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
-            rich = rl.Rich(name, "", "0")
-            rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0, inside=_inside(view))
-    for k, m in sorted(data.kin.coms.items()):
-        pos = tuple(np.asarray(m.pos[i]))
-        if any(np.allclose(pos, pts[n]) for n in pts):
+def _draw_letters(view: View, scene: Scene, k: float) -> None:
+    """The scene's letters: the points of the analysed position, the moving points of position 0
+    with index 0, the centres of mass S_k — each beside its point, away from the mechanism's middle."""
+    pts = [lb.at for lb in scene.labels if lb.role == "point"]
+    cx = sum(p[0] for p in pts) / max(len(pts), 1) / k
+    cy = sum(p[1] for p in pts) / max(len(pts), 1) / k
+    c = view.transform((cx, cy))
+    for lb in scene.labels:
+        if lb.role != "point":
             continue
-        view.circle_mm(pos, 1.0, "contour")
-        p = view.transform(pos)
-        rich = rl.Rich("S", "", str(k))
-        rl.place_rich(view, rl.around(p, rich, 5.0, 90.0), rich, 5.0, inside=_inside(view))
+        p = view.transform((lb.at[0] / k, lb.at[1] / k))
+        rich = rl.from_tex(lb.text)
+        prefer = 90.0 if lb.text.startswith("S_") else math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
+        rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0, inside=_inside(view))
 
 
-def _draw_numbers(view: View, project: Project, data: SchemeData) -> None:
-    """Position numbers at the crank pin, outside the crank circle; «0'» at the end extreme."""
+def _draw_numbers(view: View, project: Project, scene: Scene, k: float) -> None:
+    """The scene's position numbers at the crank pin, outside the crank circle."""
     lk = project.linkage
-    o = view.transform(tuple(_pts(data.kin, 0)[lk.drive_axis]))
-    items = [(str(i), tuple(np.asarray(data.kin.points[lk.drive_tip].pos[i]))) for i in range(len(data.kin.phi))]
-    if data.extremes is not None:
-        items.append(("0'" if data.start_is_zero else tr("sheets.ks05"), tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[1]))))
-        if not data.start_is_zero:
-            items.append((tr("sheets.ks06"), tuple(np.asarray(data.extremes.points[lk.drive_tip].pos[0]))))
-    for text, pos in items:
-        p = view.transform(pos)
+    o = view.transform(tuple(_pts(project.scenes.scheme_data.kin, 0)[lk.drive_axis]))
+    for lb in scene.labels:
+        if lb.role != "number":
+            continue
+        p = view.transform((lb.at[0] / k, lb.at[1] / k))
+        text = lb.text
+        if lb.anchor.startswith("extreme1:") and text != "0'":
+            text = tr("sheets.ks05")
+        elif lb.anchor.startswith("extreme0:"):
+            text = tr("sheets.ks06")
         ang = math.degrees(math.atan2(p[1] - o[1], p[0] - o[0]))
         rich = rl.Rich(text)
         cands = rl.around(p, rich, 3.5, ang, gaps=(1.0, 2.5, 4.5))
-        # keep the number outside the crank circle
         r = math.dist(p, o)
         cands = [q for q in cands if math.dist(q, o) > r] or cands
         rl.place_rich(view, cands, rich, 3.5, inside=_inside(view))

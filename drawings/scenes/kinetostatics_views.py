@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
+from shapely.geometry import Point
 
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
@@ -20,6 +21,12 @@ from drawings.sheet import Sheet, View
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.kinetostatics.reactions import pair_name, perp
 from ..words import symbol, tr
+from reportgen.scenes.forces import polygon_scene
+from reportgen.scenes.scene import Arrow as SceneArrow
+from reportgen.scenes.scene import Scene
+from reportgen.scenes.scene import Segment as SceneSegment
+
+from drawings.scenes import kinematics_labels as rl
 
 #: The longest force arrow on a group's view, mm; arrows are never shorter than MIN_ARROW_MM.
 ARROW_MM = 45.0
@@ -30,7 +37,7 @@ TITLE_MM = 10.0
 CAPTION_MM = 16.0
 HINGE_MM = 1.5
 LABEL_MM = 3.5
-POLY_LABEL_MM = 2.5
+POLY_LABEL_MM = 3.5
 POLY_PAD_MM = 10.0
 #: The lever's loads: the largest drawn this long (mm) at their own round μF.
 LEVER_ARROW_MM = 40.0
@@ -135,11 +142,12 @@ def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.
 
 
 def polygon_panel(name: str, title: str, polygon) -> Panel:
-    """A force polygon drawn head to tail at its scale (mm), the diagonals read off it dashed."""
-    verts = [np.asarray(v.start_mm, float) for v in polygon.vectors] + [np.asarray(polygon.vectors[-1].end_mm, float)]
-    diags = [_diagonal(verts, np.asarray(v.end_mm, float)) for v in polygon.extra]
-    arr = np.array(verts)
-    lo, hi = arr.min(0), arr.max(0)
+    """A force polygon's scene (:func:`reportgen.scenes.forces.polygon_scene`): head to tail at its
+    scale (mm), the diagonals read off it dashed, each name beside its own vector (a short vector's
+    name on a leader)."""
+    scene = polygon_scene(polygon)
+    x0, y0, x1, y1 = scene.bounds()
+    lo, hi = np.array([x0, y0]), np.array([x1, y1])
     w = max(hi[0] - lo[0] + 2 * POLY_PAD_MM, 90.0)
     h = hi[1] - lo[1] + 2 * POLY_PAD_MM + TITLE_MM + 8.0
 
@@ -147,23 +155,32 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
         cx = rect.x0 + (rect.width - (hi[0] - lo[0])) / 2
         cy = rect.y0 + 8.0 + (rect.height - 8.0 - TITLE_MM - (hi[1] - lo[1])) / 2
         view = sheet.place_view(name, rect, Transform(1.0, (float(lo[0]), float(lo[1])), (cx, cy)))
-        for v in polygon.vectors:
-            a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
-            if float(np.hypot(*(e - a))) < 1e-6:
+        for e in scene.entities:
+            if isinstance(e, SceneArrow):
+                if e.kind == "hidden":
+                    view.segment(e.a, e.b, "hidden")
+                else:
+                    view.arrow(e.a, e.b, None, head_mm=min(4.0, e.length))
+        inside = view.rect.polygon()
+        for lb in scene.labels:
+            if lb.along is None:
                 continue
-            view.arrow(a, e, None, head_mm=min(4.0, float(np.hypot(*(e - a)))))
-        for v in polygon.vectors:
-            a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
-            if float(np.hypot(*(e - a))) < 1e-6:
-                continue
-            d = e - a
-            view.label((a + e) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=math.degrees(math.atan2(d[0], -d[1])))
-        for v, (a, b) in zip(polygon.extra, diags):
-            view.segment(a, b, "hidden")
-            view.label((a + b) / 2, plain(v.name), POLY_LABEL_MM, prefer_deg=-45.0)
+            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
+            rich = rl.Rich(plain(lb.anchor.split(":", 1)[1]))
+            if lb.leader:
+                mid = view.transform(lb.at)
+                normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
+                box = rl.place_passes(view, [(rl.around(mid, rich, POLY_LABEL_MM, normal, gaps=(6.0, 9.0, 13.0)), 0)],
+                                      rich, POLY_LABEL_MM, inside=inside)
+                if box is not None:
+                    near = box.exterior.interpolate(box.exterior.project(Point(mid)))
+                    view.layout.add_line((near.x, near.y), mid, dxfattribs={"layer": "thin"})
+            else:
+                rl.place_passes(view, rl.along_passes(a, b, rich, POLY_LABEL_MM), rich, POLY_LABEL_MM, inside=inside)
         view.title(title)
+        mu = scene.scale()
         view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
-                     tr("sheets.kv05", v1=format_significant(polygon.scale, 4)), 3.5, "bottom-center")
+                     tr("sheets.kv05", v1=format_significant(mu.value, 4)), 3.5, "bottom-center")
         return view
     return Panel(name, w, h, paint)
 
@@ -194,33 +211,12 @@ def place_label(view: View, anchors: list[np.ndarray], text: str, height: float)
     view.label(anchors[0], text, height)
 
 
-def _diagonal(verts: list[np.ndarray], d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    best, err = (verts[0], verts[0] + d), math.inf
-    for a in verts:
-        for b in verts:
-            e = float(np.hypot(*((b - a) - d)))
-            if e < err:
-                best, err = (a, b), e
-    return best
-
-
-def lever_panel(name: str, points: dict[str, np.ndarray], segments: list[tuple[str, str]],
-                loads: list[tuple[np.ndarray, np.ndarray, str, float]], mu_v: float) -> Panel:
-    """The turned plan (mm) with each load at its image point at a round μF, and the arm of each
-    force with a non-zero arm (thin, from the pole square to the force's line, numbered h1, h2, …)."""
+def lever_panel(name: str, scene: Scene) -> Panel:
+    """Zhukovsky's lever (:func:`reportgen.scenes.lever.lever_scene`): the turned plan (mm) with each
+    load and F_ур at its image point, each named beside its own arrow, the arms thin."""
     from drawings import style
-    mu_f = round_scale(max([float(np.hypot(*v)) for _, v, _, _ in loads] + [1e-9]), LEVER_ARROW_MM)
-    ends = []
-    for img, v, _, _ in loads:
-        mag = float(np.hypot(*v))
-        ends.append(img + v / (mag + 1e-300) * max(mag / mu_f, MIN_ARROW_MM))
-    feet = []
-    for img, v, _, arm in loads:
-        u = v / (float(np.hypot(*v)) + 1e-300)
-        foot = img - float(img @ u) * u
-        feet.append(foot if arm != 0.0 and float(np.hypot(*foot)) > 3.0 else None)
-    arr = np.array([np.zeros(2)] + list(points.values()) + ends + [f for f in feet if f is not None])
-    lo, hi = arr.min(0), arr.max(0)
+    x0, y0, x1, y1 = scene.bounds()
+    lo, hi = np.array([x0, y0]), np.array([x1, y1])
     pad = 12.0
     w = max(hi[0] - lo[0] + 2 * pad, style.text_width(lever_title(), 5.0) + 4.0,
             style.text_width(lever_subtitle(), 3.5) + 4.0)
@@ -230,30 +226,35 @@ def lever_panel(name: str, points: dict[str, np.ndarray], segments: list[tuple[s
         x0 = rect.x0 + (rect.width - (hi[0] - lo[0])) / 2
         y0 = rect.y0 + CAPTION_MM + (rect.height - CAPTION_MM - TITLE_MM - 6.0 - (hi[1] - lo[1])) / 2
         view = sheet.place_view(name, rect, Transform(1.0, (float(lo[0]), float(lo[1])), (x0, y0)))
-        for a, b in segments:
-            pa = np.zeros(2) if a == "p" else points[a]
-            view.line(pa, points[b], "vectors")
-        for foot in feet:
-            if foot is not None:
-                view.line((0.0, 0.0), foot, "construction")
-        view.label((0.0, 0.0), "p", 5.0, prefer_deg=-135.0)
-        for k, p in points.items():
-            view.label(p, k, 5.0, prefer_deg=45.0)
-        for (img, _v, _label, _arm), end in zip(loads, ends):
-            view.arrow(img, end, None, head_mm=3.5)
-        for (img, _v, label, _arm), end in zip(loads, ends):
-            place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
-        _title_and_scales(view, lever_title(), tr("sheets.kv06", v1=format_significant(mu_v, 4)),
-                          tr("sheets.kv07", v1=format_significant(mu_f, 4)))
+        for e in scene.entities:
+            if isinstance(e, SceneSegment):
+                view.line(e.a, e.b, "vectors" if e.kind != "construction" else "construction")
+        for e in scene.entities:
+            if isinstance(e, SceneArrow):
+                view.arrow(e.a, e.b, None, head_mm=3.5)
+        inside = view.rect.polygon()
+        for lb in scene.labels:
+            if lb.role == "point":
+                view.label(lb.at, lb.anchor.split(":", 1)[1], 5.0, prefer_deg=-135.0 if lb.anchor == "point:p" else 45.0)
+        for lb in scene.labels:
+            if lb.role != "vector" or lb.along is None:
+                continue
+            kind, ident = lb.anchor.split(":", 1)
+            if kind == "arm":
+                continue            # the arms are numbered by the note's equations (h1, h2, … of section 2)
+            rich = rl.Rich(plain(ident)) if kind == "force" else rl.from_tex(lb.text)
+            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
+            rl.place_passes(view, rl.along_passes(a, b, rich, POLY_LABEL_MM), rich, POLY_LABEL_MM, inside=inside)
+        _title_and_scales(view, lever_title(), tr("sheets.kv06", v1=format_significant(scene.scale('μv').value, 4)),
+                          tr("sheets.kv07", v1=format_significant(scene.scale('μF').value, 4)))
         view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), lever_subtitle(), 3.5, "bottom-center")
         return view
     return Panel(name, w, h, paint)
 
 
-def lever_view(sheet: Sheet, name: str, points: dict[str, np.ndarray], segments: list[tuple[str, str]],
-               loads: list[tuple[np.ndarray, np.ndarray, str, float]], mu_v: float, preferred: str) -> View:
+def lever_view(sheet: Sheet, name: str, scene: Scene, preferred: str) -> View:
     """:func:`lever_panel` packed near ``preferred`` and drawn."""
-    return lever_panel(name, points, segments, loads, mu_v).place(sheet, preferred)
+    return lever_panel(name, scene).place(sheet, preferred)
 
 
 def group_geometry(ks, linkage, links: tuple[int, ...], key: str | None):

@@ -37,12 +37,8 @@ def available(project: Project) -> bool:
 
 def graph_labels(project: Project) -> list[str]:
     """The names of the graph's positions, as the note's table prints them."""
-    from latex_templates.parts.dynamics import _first_step, position_labels
-    import math
-
-    res = project.dynamics
-    positions = int(round(2 * math.pi / _first_step(res.graphical.theta)))
-    return position_labels(res, positions)
+    from reportgen.scenes.numbering import diagram_labels
+    return diagram_labels(project.dynamics)
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:

@@ -28,7 +28,7 @@ def available(project) -> bool:
 
 def draw(project, number: int, count: int) -> Sheet:
     from drawings.scenes.meshing import draw_meshing, draw_sliding
-    from drawings.scenes.planetary import draw_reducer
+    from drawings.scenes.planetary_dxf import draw_reducer
     from reportgen.gears.meshing import meshing_picture
 
     task = project.task

@@ -22,7 +22,10 @@ from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
 from ..words import designation, tr
 
-NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "strokes")
+NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
+                            "plans", "scenes")
+
+
 def sheet_title() -> str:
     """The sheet's title in the task's language (title block, graph 1)."""
     return tr("sheets.sk101")
@@ -33,7 +36,8 @@ def __getattr__(name: str):
         return sheet_title()
     raise AttributeError(name)
 
-#: The scheme's view (with its padding) is at most this big, mm.
+#: The scheme's view (with its padding) is at most this big, mm (the drawing's own box is
+#: ``project.boxes.scheme``, this less ``SCHEME_PADS_MM``).
 SCHEME_MAX_MM = (470.0, 400.0)
 #: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
@@ -52,11 +56,8 @@ def available(project: Project) -> bool:
 
 
 def analysed_position(project: Project) -> int:
-    """The position the note analyses: ``[analysis] force_position`` if it is an index, else 2."""
-    fp = project.task.analysis.force_position
-    n = len(project.phi)
-    i = fp if isinstance(fp, int) else 2
-    return min(max(i, 0), n - 1)
+    """The position the note analyses (the project's stage)."""
+    return project.analysed
 
 
 def diagrams_of(project: Project) -> Diagrams | None:
@@ -68,19 +69,19 @@ def diagrams_of(project: Project) -> Diagrams | None:
 
 def image_keys(project: Project) -> set[str]:
     """Plan letters that are images of mechanism points (not the helper points n…, k…)."""
-    v, _ = build_plans(project.linkage, project.structure, project.kinematics, 0)
-    return set(v.points)
+    return set(project.plans[0].points)
 
 
 def draw(project: Project, number: int, count: int, *, control: bool = False) -> Sheet:
-    """The sheet at the largest ГОСТ scale of the scheme with which every view fits. ``control``:
+    """The sheet at the scale of the plan of positions (``project.scenes.positions``, the largest
+    ГОСТ scale that fits the scheme's box); a smaller one only if the other views do not fit. ``control``:
     the control work's one sheet (:mod:`drawings.sheets.control`): the lever instead of the
     diagrams and the small plans, on A1 or A3 as ``[control_work] sheet`` says."""
     i = analysed_position(project)
     data = ks.scheme_data(project, i)
     b = ks.bounds(data, project.linkage)
     failure: BuildError | None = None
-    for k, scale_text in scheme_scales(b):
+    for k, scale_text in project.scenes.positions_scales:
         try:
             return draw_at(project, number, count, data, b, k, scale_text, control=control)
         except BuildError as exc:
@@ -89,13 +90,6 @@ def draw(project: Project, number: int, count: int, *, control: bool = False) ->
             failure = exc
     assert failure is not None
     raise failure
-
-
-def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str]]:
-    """ГОСТ 2.302 scales to try for the scheme, the largest that fits ``SCHEME_MAX_MM`` first."""
-    width, height = b[2] - b[0], b[3] - b[1]
-    return ks.gost_scales_to_try(width, height, SCHEME_MAX_MM[0] - SCHEME_PADS_MM[0] - SCHEME_PADS_MM[2],
-                                 SCHEME_MAX_MM[1] - SCHEME_PADS_MM[1] - SCHEME_PADS_MM[3])
 
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
@@ -126,7 +120,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         vplan, aplan = build_plans(project.linkage, project.structure, kin, i,
                                    mu_v=round_scale(far_v, cs.A3_PLAN_MM), mu_a=round_scale(far_a, cs.A3_PLAN_MM))
     else:
-        vplan, aplan = build_plans(project.linkage, project.structure, project.kinematics, i)
+        vplan, aplan = project.plans
     add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
     titles = (tr("sheets.sk103", i=i), tr("sheets.sk104", i=i))
     # the plans and the small plans (as large as the room left allows) share out the free field

@@ -11,7 +11,9 @@ from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
 from ..words import decimal_mark, designation, tr
 
-NEEDS: tuple[str, ...] = ("linkage", "structure", "kinematics", "kinetostatics")
+NEEDS: tuple[str, ...] = ("linkage", "structure", "phi", "kinematics", "kinetostatics")
+
+
 def sheet_title() -> str:
     """The sheet's title in the task's language (title block, graph 1)."""
     return tr("sheets.sk201")
@@ -121,36 +123,21 @@ def lever_panel_of(project: Project, max_mm: float | None = None):
     """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's);
     ``max_mm``: the turned plan at a round μv of its own within that many mm (an A3 control sheet)."""
     from drawings.scenes import kinetostatics_views as kv
-    from reportgen.kinetostatics.results import kinetostatics_of
-    from reportgen.kinetostatics.zhukovsky import turn_cw
-    ks = kinetostatics_of(project)
-    lk, g = project.linkage, kinetostatics_of(project).graphical
-    kin = ks.reactions.kin
-    mu_v = g.lever.scale
+    from reportgen.scenes.lever import lever_scene
+    ks = project.kinetostatics
+    mu_v = None
     if max_mm is not None:
+        kin = ks.reactions.kin
         far = max(float(np.hypot(*np.asarray(m.vel)[0])) for m in kin.points.values())
-        mu_v = max(mu_v, round_scale(far, max_mm))
-    k_arm = g.lever.scale / mu_v            # the measured arms (mm at the note's μv) at this μv
-    points = {}
-    for name, mo in kin.points.items():
-        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
-        if float(np.hypot(*img)) > 1e-9:
-            points[name.lower()] = img
-    segments = []
-    for k in lk.moving:
-        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
-        segments += [("p", n) for n in names] + list(zip(names, names[1:]))
-    loads = [(np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], kv.plain(t.name), t.arm_mm_measured * k_arm)
-             for t, f in zip(g.lever.terms, ks.lever.forces) if t.magnitude > 0.0]
-    return kv.lever_panel("lever", points, segments, loads, mu_v)
+        mu_v = max(ks.graphical.lever.scale, round_scale(far, max_mm))
+    return kv.lever_panel("lever", lever_scene(ks, project.linkage, mu_v=mu_v))
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:
     from drawings import style
     from drawings.scenes import kinetostatics_views as kv
-    from reportgen.kinetostatics.results import kinetostatics_of
 
-    ks = kinetostatics_of(project)
+    ks = project.kinetostatics
     lk, st = project.linkage, project.structure
     g = ks.graphical
     sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)

@@ -143,7 +143,7 @@ def sliding_figure(pair):
 def planetary_figure(stage):
     """The reducer's kinematic scheme (as on sheet 4), Kutzbach's velocity triangle beside it at the
     same heights with projection lines, and the angular-velocity plan below the triangle."""
-    from drawings.scenes.planetary import merge, plan_scene, side_scheme, triangle_scene
+    from reportgen.scenes.planetary import merge, plan_scene, side_scheme, triangle_scene
     tri = stage.triangle
     scheme = side_scheme(stage.design, tri.length_scale)
     x_line = scheme.bounds()[2] + 25
@@ -166,7 +166,7 @@ def planetary_figure(stage):
 
 
 def _draw_scene(ax, scene) -> None:
-    """Draw a :class:`drawings.scenes.planetary.Scene` (mm) with matplotlib."""
+    """Draw a :class:`reportgen.scenes.planetary.Scene` (mm) with matplotlib."""
     widths = {"contour": 1.3, "thin": 0.4, "axis": 0.5, "hidden": 0.5}
     dashes = {"axis": "-.", "hidden": "--"}
     for line in scene.lines:

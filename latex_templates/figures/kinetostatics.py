@@ -8,14 +8,15 @@ computes a force. Arrow lengths on the group diagrams are schematic (a square-ro
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
 from reportgen.geometry import vec2
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
-from ..parts import active, decimal_mark, tr
+from ..parts import active, tr
+from reportgen.scenes.forces import force_tex
+
 from . import comma_axes, math_name, new_figure
 from .mechanism import world_points
 
@@ -32,29 +33,10 @@ def mathtext(name: str) -> str:
 
 
 def symbol(name: str, text: str = "\\text") -> str:
-    """A solver's force or moment name as a math symbol (LaTeX or mathtext).
-
-    ``Fпс`` → F_{\\text{пс}}, ``G4`` → G_{4}, ``Fи4′`` → F'_{\\text{и}4}, ``Mи2`` → M_{\\text{и}2},
-    ``Rn24`` → R^{n}_{24}, ``Rτ24`` → R^{\\tau}_{24}, ``R3,12`` → R_{3,12}, ``Fур`` → F_{\\text{ур}},
-    a lever's couple force ``Mи2:B`` → F^{B}_{M\\text{и}2}."""
-    if ":" in name:                                   # a force of the pair replacing a couple
-        base, point = name.split(":", 1)
-        m = re.fullmatch(r"M(и|пс)?(.*)", base)
-        sub = (f"{text}{{{m.group(1)}}}" if m and m.group(1) else "") + (m.group(2) if m else base)
-        return f"F^{{{point}}}_{{M{sub}}}"
-    prime = name.endswith("′")
-    core = name[:-1] if prime else name
-    m = re.fullmatch(r"R([nτ])?(\d+(?:,\d+)?)", core)
-    if m:
-        sup = {"n": "^{n}", "τ": "^{\\tau}"}.get(m.group(1) or "", "")
-        return f"R{sup}_{{{m.group(2)}}}"
-    m = re.fullmatch(r"([A-Za-z])(и|пс|ур)?([\d.,]*)", core)
-    if not m:
-        return core
-    letter, word, digits = m.groups()
-    sub = (f"{text}{{{word}}}" if word else "") + (digits or "")
-    p = "'" if prime else ""
-    return f"{letter}{p}_{{{sub}}}" if sub else f"{letter}{p}"
+    """A solver's force or moment name as a math symbol (LaTeX, or mathtext with ``text``
+    = "\\mathrm"): :func:`reportgen.scenes.forces.force_tex`."""
+    tex = force_tex(name)
+    return tex.replace("\\text{", text + "{") if text != "\\text" else tex
 
 
 def _arrow(ax, tail, head, colour, lw=1.3, ls="-", z=6):
@@ -163,109 +145,6 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
         ax.plot(arc[:-1, 0], arc[:-1, 1], color=LOAD, lw=1.1, zorder=6)
         _arrow(ax, arc[-3], arc[-1], LOAD)
         _label(ax, p + np.array([0.0, rr + 0.05 * L]), mathtext(c["name"]), LOAD, placed, L)
-    ax.set_xlim(lo[0], hi[0])
-    ax.set_ylim(lo[1], hi[1])
-    ax.set_aspect("equal")
-    ax.axis("off")
-    return fig
-
-
-def polygon_figure(polygon, w_cm: float = 13.0):
-    """A force polygon: its sides head to tail from its origin (mm at μF), the found reactions in
-    red, the reactions read as diagonals dashed, and the scale."""
-    vecs = polygon.vectors
-    pts = [np.asarray(v.start_mm, float) for v in vecs] + [np.asarray(v.end_mm, float) for v in vecs]
-    pts += [np.asarray(v.end_mm, float) for v in polygon.extra]
-    arr = np.vstack(pts + [np.zeros(2)])
-    size = float(max(np.ptp(arr, axis=0).max(), 1e-9))
-    lo, hi = arr.min(0) - 0.12 * size, arr.max(0) + 0.12 * size
-    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-9)
-    w = w_cm if aspect <= 1 else max(7.0, w_cm / aspect)
-    fig = new_figure(w, min(13.0, max(5.0, w * aspect)))
-    ax = fig.add_axes([0.01, 0.01, 0.98, 0.98])
-    placed: list[np.ndarray] = []
-    for v in vecs:
-        a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
-        if np.hypot(*(e - a)) < 1e-9:
-            continue
-        col = LOAD if v.known else FOUND
-        _arrow(ax, a, e, col, lw=1.2)
-        d = e - a
-        n = np.array([-d[1], d[0]]) / (np.hypot(*d) + 1e-300)
-        _label(ax, (a + e) / 2 + n * 0.045 * size, mathtext(v.name), col, placed, size)
-    origin = np.asarray(vecs[0].start_mm, float)
-    for v in polygon.extra:
-        # a diagonal from the polygon's points: find the side it joins
-        e = np.asarray(v.end_mm, float)
-        a, b = _diagonal(polygon, v)
-        _arrow(ax, a, b, KNOWN, lw=1.0, ls="--")
-        d = b - a
-        n = np.array([-d[1], d[0]]) / (np.hypot(*d) + 1e-300)
-        _label(ax, (a + b) / 2 - n * 0.045 * size, mathtext(v.name), KNOWN, placed, size)
-        del e
-    ax.plot([origin[0]], [origin[1]], "ko", ms=2.5)
-    ax.set_xlim(lo[0], hi[0])
-    ax.set_ylim(lo[1], hi[1])
-    ax.set_aspect("equal")
-    ax.axis("off")
-    ax.text(0.01, 0.01, tr("figures.kst07", v1=format(polygon.scale, "g").replace(".", decimal_mark())), transform=ax.transAxes, fontsize=9)
-    return fig
-
-
-def _diagonal(polygon, v) -> tuple[np.ndarray, np.ndarray]:
-    """The two vertices of the polygon that the read vector ``v`` joins (tail, head)."""
-    verts = [np.asarray(x.start_mm, float) for x in polygon.vectors] + [np.asarray(polygon.vectors[-1].end_mm, float)]
-    d = np.asarray(v.end_mm, float)
-    best, err = (verts[0], verts[0] + d), math.inf
-    for i, a in enumerate(verts):
-        for b in verts[i + 1:] + verts[:i]:
-            e = float(np.hypot(*((b - a) - d)))
-            if e < err:
-                best, err = (a, b), e
-    return best
-
-
-def lever_figure(points: dict[str, np.ndarray], segments: list[tuple[str, str]], loads: list[dict],
-                 w_cm: float = 14.0, max_h_cm: float = 12.0):
-    """Zhukovsky's lever: the turned plan (images in mm at μv: ``points``, the pole ``p`` at 0),
-    the loads (``{"image": mm, "vector": N, "name", "arm_mm", "h": label}``) and their arms (green,
-    from the pole square to each force's line)."""
-    arr = np.vstack([np.zeros(2)] + list(points.values()))
-    size = float(max(np.ptp(arr, axis=0).max(), 1e-9))
-    lengths = schematic_lengths([float(np.hypot(*ld["vector"])) for ld in loads], 0.16 * size)
-    heads, feet = [], []
-    for ld, ln in zip(loads, lengths):
-        v = np.asarray(ld["vector"], float)
-        u = v / (np.hypot(*v) + 1e-300)
-        img = np.asarray(ld["image"], float)
-        heads.append(img + u * ln)
-        feet.append(img - (img @ u) * u if ld.get("h") else None)
-    allp = np.vstack([arr] + heads + [f for f in feet if f is not None])
-    lo, hi = allp.min(0) - 0.08 * size, allp.max(0) + 0.08 * size
-    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-9)
-    w = min(w_cm, max_h_cm / aspect) if aspect > 0 else w_cm
-    fig = new_figure(w, max(6.0, min(max_h_cm, w * aspect)))
-    ax = fig.add_axes([0.01, 0.01, 0.98, 0.98])
-    placed: list[np.ndarray] = []
-    for a, b in segments:
-        pa = np.zeros(2) if a == "p" else points[a]
-        pb = points[b]
-        ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="0.3", lw=1.0, zorder=2)
-    for name, p in points.items():
-        ax.plot([p[0]], [p[1]], "ko", ms=2.5, zorder=3)
-        _label(ax, p + np.array([0.03, 0.03]) * size, math_name(name), "black", placed, size)
-    ax.plot([0], [0], "ko", ms=3)
-    _label(ax, np.array([-0.04, -0.04]) * size, "$p$", "black", placed, size)
-    for ld, head, foot in zip(loads, heads, feet):
-        img = np.asarray(ld["image"], float)
-        _arrow(ax, img, head, LOAD, lw=1.0)
-        d = head - img
-        u = d / (np.hypot(*d) + 1e-300)
-        _label(ax, head + u * 0.035 * size, mathtext(ld["name"]), LOAD, placed, size)
-        if foot is not None:
-            ax.plot([0, foot[0]], [0, foot[1]], color="tab:green", lw=0.6, ls="--", zorder=1)
-            ax.plot([img[0], foot[0]], [img[1], foot[1]], color="0.7", lw=0.4, ls=":", zorder=1)
-            _label(ax, foot, f"${ld['h']}$", "tab:green", placed, size)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")

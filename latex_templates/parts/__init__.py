@@ -2,7 +2,8 @@
 
 A part module provides::
 
-    NEEDS: tuple[str, ...]                 # the project stages it reads (documentation, and a test)
+    NEEDS: tuple[str, ...]                 # the project stages it reads (enforced: compose passes
+                                           # a reportgen.project.Needs view; another stage raises)
     def available(project) -> bool         # the task has what the part needs
     def content(project) -> PartContent    # template + context (+ figures, conclusions)
 

@@ -19,10 +19,11 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
 
 from . import PartContent, tr
 
-NEEDS = ("kinematics", "strokes", "dynamics")
+NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics")
 
 #: A force or couple whose power is below this share of the largest one is still shown (gravity of
 #: a light crank is small but is part of M_red); exactly zero ones (resistance off) are left out.
@@ -171,24 +172,16 @@ def _translates(lk, k: int) -> bool:
 
 
 def position_labels(res, positions: int) -> list[str]:
-    """Names of the graph's positions: equal steps numbered 0…N (N is position 0 again), the
-    switching angles «к.р.х.» / «н.р.х.», other corners of the resistance law «и1», «и2»…"""
-    step = 2 * math.pi / positions
-    sense, phi0 = _sense(res), float(res.phi[0])
-    theta_sw = [float(np.mod(sense * (p - phi0), 2 * math.pi)) for p in res.switching]
-    names = dict(zip(theta_sw, (tr("dynamics.m48"), tr("dynamics.m49"))))
-    out: list[str] = []
-    corner = 0
-    for t in map(float, res.graphical.theta):
-        j = t / step
-        if abs(j - round(j)) < 1e-9:
-            out.append(str(int(round(j))))
-            continue
-        name = next((v for k, v in names.items() if abs(k - t) < 1e-9), None)
-        if name is None:
-            corner += 1
-            name = tr("dynamics.m19", corner=corner)
-        out.append(name)
+    """Names of the diagrams' positions (:func:`reportgen.scenes.numbering.diagram_labels`) in the
+    note's language: the switching angles and the corners of the resistance law translated."""
+    words = {"н.р.х.": tr("dynamics.m48"), "к.р.х.": tr("dynamics.m49")}
+    out = []
+    for x in diagram_labels(res, positions):
+        if x in words:
+            x = words[x]
+        elif x.startswith("и") and x[1:].isdigit():
+            x = tr("dynamics.m19", corner=int(x[1:]))
+        out.append(x)
     return out
 
 
@@ -203,10 +196,7 @@ def graph_rows(res, labels: list[str]) -> list[list]:
 
 
 def _sense(res) -> float:
-    """+1 if φ1 grows with θ (the crank turns counter-clockwise)."""
-    if res.phi.size < 2:
-        return 1.0
-    return 1.0 if res.phi[1] - res.phi[0] > 0 else -1.0
+    return sense(res)
 
 
 def scale_records(res) -> dict[str, CalcRecord | Var]:
@@ -360,6 +350,7 @@ def content(project) -> PartContent:
     shares, J_rec = inertia_records(project, i, omega)
     positions = int(round(2 * math.pi / float(_first_step(res.graphical.theta))))
     labels = position_labels(res, positions)
+    i_dyn = diagram_label(res, float(kin.phi[i]))
     sc = scale_records(res)
     tg = tangent_records(res, sc, omega, delta)
     ex = exact_records(res, omega, delta)
@@ -376,7 +367,7 @@ def content(project) -> PartContent:
     }
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
-        "i": i, "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
+        "i": _position_ref(project, i, i_dyn, short=True), "i_ref": _position_ref(project, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
         "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(not x.isdigit() and x not in (tr("dynamics.m48"), tr("dynamics.m49")) for x in labels),
@@ -399,11 +390,25 @@ def content(project) -> PartContent:
     return PartContent("sections/dynamics.tex.j2", ctx, figures, tuple(concl))
 
 
+def _position_ref(project, i: int, i_dyn: str | None, short: bool = False) -> Tex:
+    """The analysed position named in the diagrams' grid (table 3.1, sheet 3) and, when its number
+    differs there, in the grid of the kinematic analysis too: «3 по нумерации диаграмм листа 3
+    (положение 2 плана положений)»; ``short``: the diagrams' number alone. An angle that is not on
+    the diagrams' grid is named in the kinematic grid: «2 плана положений»."""
+    from ..render import Strings
+    if i_dyn == str(i):
+        return Tex(i_dyn)
+    strings = Strings(project.task.document.language or "ru")
+    if i_dyn is None:
+        return Tex(str(strings.get("scenes.position_kin"))).format(kin=i)
+    if short:
+        return Tex(i_dyn)
+    return Tex(str(strings.get("scenes.position_in_both"))).format(dyn=i_dyn, kin=i)
+
+
 def _sense_word(strings, row: MethodRow) -> Tex:
     return strings.get("findings_dynamics.more" if row.relative > 0 else "findings_dynamics.less")
 
 
 def _first_step(theta: np.ndarray) -> float:
-    """The equal step of the graph's positions (the break angles fall between them)."""
-    d = np.diff(np.asarray(theta))
-    return float(d.max()) if d.size else 2 * math.pi
+    return first_step(theta)

@@ -162,7 +162,7 @@ def check_lines(pair, r: dict[str, CalcRecord]) -> list[CheckLine]:
 
 
 def content(project) -> PartContent:
-    from drawings.scenes.meshing import ab_on_sheet, meshing_scale
+    from reportgen.scenes.meshing import ab_on_sheet, meshing_scale
     from latex_templates.figures.gears import blocking_contour_figure, meshing_figure, sliding_figure
     from reportgen.gears.meshing import meshing_picture
     from reportgen.gears.shifts import RULE_EQUAL_SLIDING

@@ -10,11 +10,12 @@ from ..render import Tex
 
 from reportgen.calc import Var, record
 from reportgen.diagrams import build_diagrams
-from reportgen.plans import MEASURE_MM, build_plans, round_scale
+from reportgen.plans import MEASURE_MM
 
 from . import PartContent, tr
 
-NEEDS = ("structure", "kinematics")
+NEEDS = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
+         "scenes")
 
 
 def available(project) -> bool:
@@ -22,12 +23,17 @@ def available(project) -> bool:
 
 
 def detail_position(project) -> int:
-    """The position analysed in detail: [analysis] force_position (an index), else 2 (or the last)."""
-    fp = project.task.analysis.force_position
-    n = len(project.phi)
-    if isinstance(fp, int) and not isinstance(fp, bool):
-        return min(max(fp, 0), n - 1)
-    return min(2, n - 1)
+    """The position analysed in detail (the project's stage ``analysed``)."""
+    return project.analysed
+
+
+def scene_caption(project, fig, sheet: int = 1) -> Tex:
+    """«рисунок уменьшен, масштаб по листу 1» for a scene's figure (from the strings)."""
+    from ..render import Strings
+    strings = Strings(project.task.document.language or "ru")
+    if fig.reportgen_reduction < 1.0:
+        return Tex(str(strings.get("scenes.reduced"))).format(sheet=sheet)
+    return Tex(str(strings.get("scenes.natural"))).format(sheet=sheet)
 
 
 def _len(body, p: str, q: str) -> float:
@@ -68,7 +74,8 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
 
 
 def content(project) -> PartContent:
-    from ..figures.plans import diagrams_figure, plan_figure, positions_figure
+    from ..figures.plans import diagrams_figure
+    from ..figures.scene import scene_figure
 
     lk, st, kin = project.linkage, project.structure, project.kinematics
     i = detail_position(project)
@@ -77,27 +84,24 @@ def content(project) -> PartContent:
     crank = lk.bodies[d]
     l_crank = _len(crank, axis, tip)
     w1 = abs(lk.omega)
-    vplan, aplan = build_plans(lk, st, kin, i)
+    vplan, aplan = project.plans
+    scenes = project.scenes
     figures = {}
     # --- plan of positions ----------------------------------------------------------------------
-    pts = np.concatenate([np.asarray(m.pos) for m in kin.points.values()])
-    extent = float(max(np.ptp(pts[:, 0]), np.ptp(pts[:, 1])))
-    mu_l_val = round_scale(extent, 200.0)
-    mu_l = Var("mu_l", r"\mu_l", mu_l_val, "м/мм", tr("kinematics.m01"))
+    positions = scenes.positions
+    mu_l = Var("mu_l", r"\mu_l", positions.scale("μl").value, "м/мм", tr("kinematics.m01"))
     l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", tr("kinematics.m02", axis=axis, tip=tip))
     OA_mm = record(f"{axis}{tip}", "l_OA / mu_l", "мм", l_oa, mu_l, meaning=tr("kinematics.m09", axis=axis, tip=tip))
     # a control work (one position) or a crank that cannot turn fully: no cycle, no traces, no strokes
     control = project.task.document.kind == "control-work"
     cycle = not control and project.full_cycle
-    traces = {}
     dense_trans = {}
     if cycle:
         dense = np.linspace(0, 2 * math.pi, 121)
         dk = project.model.solve(dense)
-        traces = {f"S{k}": np.asarray(dk.coms[k].pos) for k in lk.moving if lk.bodies[k].mass > 0}
-        traces[tip] = np.asarray(dk.points[tip].pos)
         dense_trans = {g.key: float(np.min(dk.transmission_deg[g.key])) for g in st.groups[1:]}
-    figures["kin_positions"] = positions_figure(lk, np.asarray(kin.q), (0, i) if i != 0 else (0,), traces)
+    fig_pos = scene_figure(positions)
+    figures["kin_positions"] = fig_pos
     strokes = project.strokes if cycle else None
     stroke_ctx = None
     if strokes is not None:
@@ -225,13 +229,19 @@ def content(project) -> PartContent:
         diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "n": dg.n,
                 "dev_v": 100 * dg.v_deviation, "dev_a": 100 * dg.a_deviation, "unit": dg.unit,
                 "vmax": float(np.abs(dg.v).max()), "amax": float(np.abs(dg.a).max())}
-    figures["kin_vplan"] = plan_figure(vplan)
-    figures["kin_aplan"] = plan_figure(aplan)
+    fig_v = scene_figure(scenes.velocity_plan)
+    fig_a = scene_figure(scenes.acceleration_plan)
+    figures["kin_vplan"] = fig_v
+    figures["kin_aplan"] = fig_a
+    fig_w = {name: f"{f.width_cm:.2f}cm" for name, f in
+             (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a))}
+    fig_note = {name: scene_caption(project, f) for name, f in
+                (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a))}
     trans = [{"key": g.key, "label": g.label, "min": float(np.min(kin.transmission_deg[g.key])),
               "at": int(np.argmin(kin.transmission_deg[g.key]))} for g in st.groups[1:]]
     ctx = {
         "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi), "control": control, "omega_eps_rows": omega_eps_rows,
-        "mu_l": mu_l, "OA_mm": OA_mm, "strokes": stroke_ctx, "out_rows": out_rows,
+        "mu_l": mu_l, "OA_mm": OA_mm, "fig_w": fig_w, "fig_note": fig_note, "scale_ratio": positions.scale("μl").ratio, "strokes": stroke_ctx, "out_rows": out_rows,
         "groups": [g.label for g in st.groups[1:]],
         "VA": VA, "mu_v": mu_v, "pa_mm": pa_mm, "pia_mm": aA.value / aplan.scale, "vplan": vplan, "vrows": vrows, "omega": omega_recs,
         "aA": aA, "mu_a": mu_a, "aplan": aplan, "arows": arows, "an": an_recs, "cor": cor_recs, "eps": eps_recs,

@@ -25,12 +25,11 @@ from reportgen.kinetostatics.reactions import pair_name, perp
 
 from . import PartContent, tr
 
-NEEDS = ("structure", "kinematics", "kinetostatics")
+NEEDS = ("linkage", "structure", "kinetostatics", "resistance", "balancing_cycle", "balancing_cycle_dense")
 
 #: Terms of one summed moment equation per printed line; longer sums are split into partial sums.
 TERMS_PER_RECORD = 3
 #: Points of the M_ур(φ1) curve over one turn.
-CYCLE_POINTS = 361
 
 
 def available(project) -> bool:
@@ -197,10 +196,11 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
 # -- the part --------------------------------------------------------------------------------------
 
 def content(project) -> PartContent:
-    from reportgen.kinetostatics.results import kinetostatics_of
+    from reportgen.scenes.forces import polygon_scene
     from ..figures import kinetostatics as kf
+    from ..figures.scene import scene_figure
 
-    ks = kinetostatics_of(project)
+    ks = project.kinetostatics
     lk, st = project.linkage, project.structure
     r = ks.reactions
     kin = r.kin
@@ -211,7 +211,7 @@ def content(project) -> PartContent:
     mu_l = Var("mu_l", r"\mu_l", g.length_scale, "м/мм", tr("kinetostatics.m03"))
 
     loads_ctx = _loads_section(project, ks, mu_l)
-    resistance = _resistance(project, ks)
+    resistance = _resistance(project)
     read_mags: dict[str, float] = {}
     groups_ctx = []
     by_key = {gr.key: gr for gr in st.groups}
@@ -220,7 +220,7 @@ def content(project) -> PartContent:
         grp = by_key[gg.key]
         tag = gg.key.replace("-", "_")
         figures[f"kst_group_{tag}"] = kf.free_body_figure(lk, q, grp.links, *_free_body(ks, grp, gg))
-        figures[f"kst_poly_{tag}"] = kf.polygon_figure(gg.polygon)
+        figures[f"kst_poly_{tag}"] = scene_figure(polygon_scene(gg.polygon))
         mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", tr("kinetostatics.m23"))
         splits = []
         for sp in gg.splits:
@@ -355,53 +355,27 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
     return {"links": links, "rows": rows, "g": gvar, "not_replaced": not_replaced}
 
 
-def _resistance(project, ks) -> list[dict]:
-    """The production resistance at the analysed position from its law: s/H, the law's factor and
-    F = F_max·k; checked against the solver's load."""
-    from reportgen.loads import StrokeWindow, law_value, link_coordinate
-
-    mech, lk, strokes = project.task.mechanism, project.linkage, project.strokes
+def _resistance(project) -> list[dict]:
+    """The production resistance at the analysed position (the stage ``resistance``): s/H, the
+    law's factor and F = F_max·k as records; checked against the solver's load."""
     out = []
-    solver = {f.link: float(np.hypot(*np.asarray(f.vector)[0])) for f in ks.reactions.loads.forces
-              if f.kind == "resistance"}
-    solver.update({m.link: abs(float(np.asarray(m.value)[0])) for m in ks.reactions.loads.moments
-                   if m.kind == "resistance"})
-    for ld in mech.loads:
-        if ld.kind != "resistance" or strokes is None:
-            continue
-        q = np.asarray(ks.reactions.kin.q)
-        xs, kind = link_coordinate(lk, ld.link, q)
-        ends, _ = project.model.positions(np.array([strokes.phi_start, strokes.phi_end]))
-        xe, _ = link_coordinate(lk, ld.link, ends)
-        x = float(xs[0])
-        if kind == "rocker":
-            x = float(xe[0]) + (x - float(xe[0]) + math.pi) % (2 * math.pi) - math.pi
-        win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if lk.omega >= 0 else -1.0)
-        working = bool(win.on_working(np.array([ks.phi]))[0])
-        travel = float(xe[1] - xe[0])
-        on = (working and ld.stroke in ("working", "both")) or (not working and ld.stroke in ("idle", "both"))
-        value = solver.get(ld.link, 0.0)
-        is_force = ld.force is not None
-        ent = {"link": ld.link, "working": working, "on": on, "force": is_force, "value": value,
-               "law": ld.law, "rec": None, "frac": None, "kfac": None}
-        if on and travel != 0:
-            s_val = abs(x - float(xe[0])) if working else abs(float(xe[1]) - x)
-            unit = "м" if kind == "slider" else "рад"
-            s = Var("s", "s", s_val, unit, tr("kinetostatics.m48") if kind == "slider"
-                    else tr("kinetostatics.m49"))
-            H = Var("H", "H", abs(travel), unit, tr("kinetostatics.m50") if kind == "slider"
-                    else tr("kinetostatics.m51"))
+    for r in project.resistance:
+        ent = {"link": r.link, "working": r.working, "on": r.on, "force": r.is_force, "value": r.value,
+               "law": r.law, "rec": None, "frac": None, "kfac": None}
+        if r.k is not None:
+            slider = r.unit == "м"
+            s = Var("s", "s", r.s, r.unit, tr("kinetostatics.m48") if slider else tr("kinetostatics.m49"))
+            H = Var("H", "H", r.H, r.unit, tr("kinetostatics.m50") if slider else tr("kinetostatics.m51"))
             frac = record("s/H", "s / H", "", s, H, meaning=tr("kinetostatics.m52"))
-            kf = float(law_value(ld.law, np.array([frac.value]))[0])
-            kv = Var("k", "k", kf, "", Tex(tr("kinetostatics.m53")))
-            if is_force:
-                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", ld.force, "Н", tr("kinetostatics.m54"))
+            kv = Var("k", "k", r.k, "", Tex(tr("kinetostatics.m53")))
+            if r.is_force:
+                fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", r.maximum, "Н", tr("kinetostatics.m54"))
                 rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning=tr("kinetostatics.m58"))
             else:
-                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", ld.moment, "Н·м", tr("kinetostatics.m55"))
+                mmax = Var("Mmax", "M_{\\text{пс}}^{\\max}", r.maximum, "Н·м", tr("kinetostatics.m55"))
                 rec = record("M_{\\text{пс}}", "Mmax * k", "Н·м", mmax, kv, meaning=tr("kinetostatics.m59"))
-            _check(rec, value, "the production resistance")
-            ent.update(rec=rec, frac=frac, kfac=kf)
+            _check(rec, r.value, "the production resistance")
+            ent.update(rec=rec, frac=frac, kfac=r.k)
         out.append(ent)
     return out
 
@@ -465,7 +439,9 @@ def _loads_on(ks, links, repl, arrows, couples) -> None:
 
 
 def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
+    from reportgen.scenes.forces import polygon_scene
     from ..figures import kinetostatics as kf
+    from ..figures.scene import scene_figure
     lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
@@ -481,7 +457,7 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
              {"point": r.balancing_point[0], "kind": "R", "name": r.crank_pin}]
     arrows = [a for a in arrows if float(np.hypot(*a["vector"])) > 0]
     figures["kst_crank"] = kf.free_body_figure(lk, np.asarray(r.kin.q)[0], (d,), pairs, arrows, couples, w_cm=10.0)
-    figures["kst_poly_crank"] = kf.polygon_figure(c.polygon, w_cm=11.0)
+    figures["kst_poly_crank"] = scene_figure(polygon_scene(c.polygon))
     arms: list = []
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
     OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
@@ -507,29 +483,12 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
 
 
 def _lever(project, ks, counter, figures) -> dict:
-    """Zhukovsky's lever: the record F_ур = ∓ΣF·h/pa with the measured arms, and its figure."""
-    from reportgen.kinetostatics.zhukovsky import turn_cw
-    from ..figures import kinetostatics as kf
+    """Zhukovsky's lever: the record F_ур = ∓ΣF·h/pa with the measured arms, and its figure (the
+    lever's scene, as sheet 2 draws it)."""
+    from reportgen.scenes.lever import lever_scene
+    from ..figures.scene import scene_figure
     lk, r, lev, L = project.linkage, ks.reactions, ks.lever, ks.graphical.lever
-    kin = r.kin
     mu_v = L.scale
-    points: dict[str, np.ndarray] = {}
-    for name, mo in kin.points.items():
-        img = turn_cw(np.asarray(mo.vel))[0] / mu_v
-        if float(np.hypot(*img)) > 1e-9:
-            points[name.lower()] = img
-    for k in lk.moving:
-        if lk.bodies[k].mass > 0 and f"S{k}" not in [n.upper() for n in points]:
-            img = turn_cw(np.asarray(kin.coms[k].vel))[0] / mu_v
-            if float(np.hypot(*img)) > 1e-9 and not any(np.allclose(img, p) for p in points.values()):
-                points[f"s_{k}"] = img
-    segments = []
-    for k in lk.moving:
-        names = [n.lower() for n in lk.bodies[k].points if n.lower() in points]
-        for n in names:
-            segments.append(("p", n))
-        for a, b in zip(names, names[1:]):
-            segments.append((a, b))
     terms, loads = [], []
     for t, f in zip(L.terms, lev.forces):
         if t.magnitude == 0.0:
@@ -562,7 +521,8 @@ def _lever(project, ks, counter, figures) -> dict:
     M = record("M_{\\text{ур}}^{\\text{Ж}}", "F * l_OA", "Н·м", l_oa, F=F,
                meaning=tr("kinetostatics.m28"))
     _check(M, L.balancing_moment_measured, "M_ур (lever)")
-    figures["kst_lever"] = kf.lever_figure(points, segments, loads)
+    arm_names = {ld["name"]: ld["h"] for ld in loads if ld["h"]}
+    figures["kst_lever"] = scene_figure(lever_scene(ks, lk, arm_names))
     eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
     sign_pa = "-" if lev.omega1 >= 0 else "+"
     return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(),
@@ -581,12 +541,10 @@ def _comparison(ks, crank, lever) -> dict:
 
 
 def _cycle(project, ks, figures) -> dict:
-    from reportgen.kinetostatics import balancing_cycle
+    """M_ур over the cycle from the stages ``balancing_cycle`` (the positions) and
+    ``balancing_cycle_dense`` (the curve)."""
     from ..figures import kinetostatics as kf
-    at = balancing_cycle(project, project.phi)
-    sgn = 1.0 if project.model.omega >= 0 else -1.0
-    dense_phi = float(project.phi[0]) + sgn * np.linspace(0.0, 2 * math.pi, CYCLE_POINTS)
-    dense = balancing_cycle(project, dense_phi)
+    at, dense = project.balancing_cycle, project.balancing_cycle_dense
     order = np.argsort(np.mod(np.degrees(dense.phi), 360.0))
     deg = np.mod(np.degrees(dense.phi), 360.0)[order]
     figures["kst_cycle"] = kf.cycle_figure(deg, np.asarray(dense.groups)[order], np.mod(np.degrees(at.phi), 360.0),

@@ -139,7 +139,7 @@ def triangle_records(stage, u_main: CalcRecord) -> dict[str, CalcRecord]:
 def content(project) -> PartContent:
     from dataclasses import replace
 
-    from drawings.scenes.planetary import sheet_triangle
+    from reportgen.scenes.planetary import sheet_triangle
     from latex_templates.figures.gears import planetary_figure
 
     stage = project.planetary

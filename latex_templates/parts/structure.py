@@ -8,7 +8,7 @@ from reportgen.calc import Var, record
 
 from . import PartContent, strings_of
 
-NEEDS = ("structure",)
+NEEDS = ("linkage", "structure", "kinematics")
 
 def available(project) -> bool:
     return project.task.mechanism is not None

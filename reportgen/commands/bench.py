@@ -1,5 +1,5 @@
 """``reportgen bench [TASK] [--quick] [--out DIR] [--markdown FILE]``: tables of time against error
-of every approximation of the project, a plot, and docs/performance.md (see reportgen.bench)."""
+of every approximation of the project, a plot, and docs/performance.md (see reportgen.commands.benchmarks)."""
 from __future__ import annotations
 
 import argparse
@@ -31,7 +31,7 @@ def register(sub) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..bench import _stderr, markdown, run_bench, text, write_plot
+    from .benchmarks import _stderr, markdown, run_bench, text
 
     task = Path(args.task) if args.task else DEFAULT_TASK
     if not task.is_file():
@@ -55,3 +55,33 @@ def run(args: argparse.Namespace) -> int:
         md.write_text(markdown(rep, plot, md), encoding="utf-8")
         print(f"tables: {md}")
     return 0
+
+
+def write_plot(rep, path: Path) -> Path:
+    """Error against positions and error against time for every position-count approximation."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
+    floor = 1e-16
+    for label, pts in rep.series.items():
+        if not pts:
+            continue
+        n = [p[0] for p in pts]
+        e = [max(p[1], floor) for p in pts]
+        t = [p[2] * 1e3 for p in pts]
+        ax1.loglog(n, e, "o-", label=label, ms=4)
+        ax2.loglog(t, e, "o-", label=label, ms=4)
+    ax1.set_xlabel("positions per cycle")
+    ax1.set_ylabel("relative error against the reference")
+    ax2.set_xlabel("time, ms")
+    ax2.set_ylabel("relative error against the reference")
+    for ax in (ax1, ax2):
+        ax.grid(True, which="both", lw=0.3)
+    ax1.legend(fontsize=7, loc="best")
+    fig.suptitle(f"reportgen bench: {Path(rep.task).parent.name} (errors below 1e-16 drawn at 1e-16)")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return path

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from ..errors import BuildError
+from ..project import Needs
 
 MAIN, SHEETS, LATEX = "main", "sheets", "LaTeX"
 
@@ -183,15 +184,20 @@ def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any
                 lane: str = SHEETS) -> Iterator[Span]:
     """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
     from drawings.preview import render_png
-    from drawings.words import language
+    from drawings.words import language, use_catalogue
+    from latex_templates.parts import active_strings
+    from latex_templates.render import Strings
+
+    use_catalogue(Strings)
 
     folder = tmp / "sheets"
     folder.mkdir(exist_ok=True)
     for i, (stem, mod) in enumerate(todo, start=1):
         name = f"sheet {i}: {stem}"
         t0 = time.perf_counter()
-        with language(project.task.document.language):       # the sheet's words in the task's language
-            sheet = mod.draw(project, i, len(todo))
+        with language(project.task.document.language), \
+                active_strings(Strings(project.task.document.language or "ru")):   # the sheet's words in the task's language
+            sheet = mod.draw(Needs(project, mod.NEEDS, f"sheet {mod.__name__}"), i, len(todo))
         dxf = folder / f"{stem}.dxf"
         png = folder / f"{stem}.png"
         sheet.save(dxf)

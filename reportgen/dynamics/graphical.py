@@ -25,41 +25,24 @@ from typing import Any
 
 import numpy as np
 
+from ..scenes.boxes import DEFAULT as DEFAULT_BOXES
+from ..scenes.boxes import GraphLayout  # noqa: F401  (the room of the diagrams; defined with the other boxes)
+from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle
 from ..geometry import readonly as _ro
 from ..tolerances import RTOL_ROUNDOFF
 
 #: Reading accuracy of a length measured on the sheet, mm.
 READING_MM = 0.5
-#: Mantissas of the scale factors (ГОСТ 2.302-like round values).
-NICE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0)
+#: Mantissas of the scale factors (ГОСТ 2.302-like round values; 10 closes the decade).
+NICE = (*PLAN_SERIES, 10.0)
 #: Enlargements allowed from the work diagram to the ΔE diagram (μE = μA / k).
 ENLARGE = (1, 2, 4, 5, 10)
 
 
 def nice_ceil(x: float) -> float:
-    """The smallest round scale factor ≥ x (mantissa in NICE)."""
-    if x <= 0 or not math.isfinite(x):
-        return 1.0
-    e = math.floor(math.log10(x))
-    for m in NICE:
-        v = m * 10.0 ** e
-        if v >= x * (1 - RTOL_ROUNDOFF):
-            return v
-    return 10.0 ** (e + 1)
-
-
-@dataclass(frozen=True)
-class GraphLayout:
-    """Room on the sheet for the diagrams, mm (sized for an A1 sheet 3: the column of M, A, ΔE, ω
-    on the left, the Wittenbauer diagram with J_red(φ) turned under it in the middle; the note's
-    section 3 uses the same scales, so that note and sheet agree)."""
-    phi_axis: float = 260.0       # length of the φ axis for one cycle
-    m_height: float = 80.0        # largest |M_red|
-    a_height: float = 80.0        # largest |A| of the work diagram
-    e_height: float = 80.0        # span of ΔE
-    j_width: float = 160.0        # largest J_red (from J = 0)
-    pole_step: float = 10.0       # H is a multiple of this
+    """The smallest round scale factor ≥ x (:func:`reportgen.scenes.scales.round_up`)."""
+    return round_up(x, PLAN_SERIES)
 
 
 @dataclass(frozen=True)
@@ -164,7 +147,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
 
 
 def graphical_replica(cycle: Cycle, delta: float, positions: int = 12,
-                      layout: GraphLayout = GraphLayout()) -> GraphicalReplica:
+                      layout: GraphLayout = DEFAULT_BOXES.diagrams) -> GraphicalReplica:
     """The sheet's construction at ``positions`` equal steps (plus the break angles)."""
     theta = replica_positions(cycle, positions)
     c = _construct(cycle, theta, delta, layout)

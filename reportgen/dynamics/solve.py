@@ -10,6 +10,7 @@ from .cycle import TWO_PI, Cycle, ProjectCycle
 from .energy import EnergyProfile
 from .errors import DynamicsInputError
 from .flywheel import flywheel_size
+from ..scenes.boxes import DEFAULT as DEFAULT_BOXES
 from .graphical import GraphLayout, graphical_replica
 from .motion import steady_motion
 from .quadrature import DEFAULT_ORDER
@@ -35,7 +36,7 @@ def check_delta(delta: float) -> float:
 
 def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: str = "disk",
                 density: float = 7860.0, width_ratio: float = 1.0, crank_inertia: float = 0.0,
-                graphical_positions: int = 12, layout: GraphLayout = DEFAULT_LAYOUT,
+                graphical_positions: int = 12, layout: GraphLayout | None = None,
                 order: int = DEFAULT_ORDER, phi_of=None, profile: EnergyProfile | None = None) -> DynamicsResult:
     """The flywheel calculation of any cycle (a project's or an analytic one); ``profile``: ΔE of
     this cycle on the same grid, when the caller has it already."""
@@ -48,7 +49,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
     A = prof.A_nodes[idx]
     red = cycle.reduced(theta)
     ex, mz = wittenbauer_and_merzalov(cycle, prof, delta)
-    gr = graphical_replica(cycle, delta, graphical_positions, layout)
+    gr = graphical_replica(cycle, delta, graphical_positions, layout or DEFAULT_BOXES.diagrams)
     J_fly = max(ex.J_fly, 0.0)
     motion = steady_motion(cycle, prof, J_fly, theta, delta)
     fw = flywheel_size(J_fly, shape, density, width_ratio)
@@ -64,7 +65,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
 
 
 def solve_dynamics(project, n: int = MIN_POSITIONS, graphical_positions: int | None = None,
-                   layout: GraphLayout = DEFAULT_LAYOUT, order: int = DEFAULT_ORDER) -> DynamicsResult:
+                   layout: GraphLayout | None = None, order: int = DEFAULT_ORDER) -> DynamicsResult:
     """Reduced moment and inertia, work, ΔE, the flywheel (exact, Мерцалов, graphical), its size and
     the steady motion with it, over ``n`` equal steps from position 0 of the project's task."""
     dyn = project.task.dynamics
@@ -74,6 +75,7 @@ def solve_dynamics(project, n: int = MIN_POSITIONS, graphical_positions: int | N
     if graphical_positions is None:
         graphical_positions = max(project.task.analysis.positions, 12)
     fw = dyn.flywheel
+    layout = layout or project.boxes.diagrams
     return solve_cycle(cycle, dyn.delta, n, shape=fw.shape, density=fw.density, width_ratio=fw.width_ratio,
                        crank_inertia=dyn.crank_inertia, graphical_positions=graphical_positions,
                        layout=layout, order=order, phi_of=cycle.phi_of, profile=profile)

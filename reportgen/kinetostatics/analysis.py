@@ -131,6 +131,7 @@ def kinetostatics_at(project, force_at_deg: float | None = None, **graphical_opt
     loads = project.loads_at(kin, inertia=True)
     reactions = solve_reactions(project.linkage, project.structure, kin, loads)
     lever = zhukovsky_lever(project.linkage, kin, loads)
+    graphical_options.setdefault("boxes", project.boxes)
     graph = graphical_replica(project.linkage, project.structure, reactions, lever, 0, **graphical_options)
     trans = {k: float(v[0]) for k, v in kin.transmission_deg.items()}
     warnings = tuple(

@@ -2,7 +2,8 @@
 what a student draws and measures, computed from the exact solution, with the deviation of each read
 value from the exact one.
 
-- Scales: a round scale μ = m·10^k with m ∈ {1, 2, 2.5, 5} (:data:`ROUND_MANTISSAS`), the smallest
+- Scales: a round scale μ = m·10^k with m ∈ {1, 2, 2.5, 5} (:data:`ROUND_MANTISSAS`; the one rule of
+  :mod:`reportgen.scenes.scales`), the smallest
   one that draws the largest vector within ``max_mm`` — so the largest vector lies in
   (max_mm/2, max_mm] mm. Forces μF (N/mm): the largest vector within 200 mm, or — where that draws
   the polygon larger — the whole polygon within 400 × 180 mm (a flat polygon of two large, nearly
@@ -34,22 +35,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..linkage import Linkage
+from ..scenes.boxes import DEFAULT as DEFAULT_BOXES
+from ..scenes.boxes import SceneBoxes
+from ..scenes.scales import FORCE_SERIES
+from ..scenes.scales import round_scale as _round_scale
 from ..structure import Group, Structure
 from .reactions import Reactions, _cross, _Known, _ro, pair_name, perp, solve_group
 from .zhukovsky import Lever, turn_cw
 from ..tolerances import RTOL_ROUNDOFF
 
-#: Mantissas of a round scale.
-ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0)
-#: Longest vector of a force polygon or of the lever's plan, mm; extent (diagonal) of the scheme, mm.
-POLYGON_MM = 200.0
-SCHEME_MM = 450.0
-#: A polygon (the lever's plan) is drawn larger than POLYGON_MM gives as long as it fits this box,
-#: width × height, mm (:func:`polygon_scale`); a narrower box when two or more groups (three
-#: polygons and three cut-outs) share sheet 2.
-POLYGON_BOX_MM = (400.0, 180.0)
-POLYGON_BOX_MANY_MM = (350.0, 180.0)
-LEVER_BOX_MM = (250.0, 400.0)
+#: Mantissas of a round scale (:data:`reportgen.scenes.scales.FORCE_SERIES`).
+ROUND_MANTISSAS = FORCE_SERIES
 #: Rounding of lengths read off a plan and of arms measured on a scheme, mm.
 READING_MM = 0.1
 ARM_READING_MM = 0.01
@@ -58,17 +54,9 @@ REPLACEMENT_LIMIT = 100.0
 
 
 def round_scale(largest: float, max_mm: float) -> float:
-    """The smallest μ = m·10^k (m in :data:`ROUND_MANTISSAS`) with ``largest/μ ≤ max_mm``."""
-    if not (largest > 0 and math.isfinite(largest)):
-        return 1.0
-    target = largest / max_mm
-    k = math.floor(math.log10(target)) - 1
-    while True:
-        for m in ROUND_MANTISSAS:
-            mu = m * 10.0 ** k
-            if largest / mu <= max_mm * (1 + RTOL_ROUNDOFF):
-                return float(f"{mu:.12g}")
-        k += 1
+    """The smallest μ = m·10^k (m in :data:`ROUND_MANTISSAS`) with ``largest/μ ≤ max_mm``
+    (:func:`reportgen.scenes.scales.round_scale`)."""
+    return _round_scale(largest, max_mm, FORCE_SERIES)
 
 
 def box_scale(points: np.ndarray, box: tuple[float, float]) -> float:
@@ -79,14 +67,15 @@ def box_scale(points: np.ndarray, box: tuple[float, float]) -> float:
     return max(mus) if mus else math.inf
 
 
-def polygon_scale(vectors, largest: float = 0.0, box: tuple[float, float] = POLYGON_BOX_MM) -> float:
+def polygon_scale(vectors, largest: float = 0.0, box: tuple[float, float] = DEFAULT_BOXES.polygon,
+                  max_mm: float = DEFAULT_BOXES.polygon_mm) -> float:
     """μF of a force polygon (``vectors`` head to tail, N): the smallest round scale that draws its
-    largest vector (or ``largest``, e.g. a diagonal) within POLYGON_MM, or the larger drawing that
+    largest vector (or ``largest``, e.g. a diagonal) within ``max_mm``, or the larger drawing that
     puts the whole polygon within ``box``."""
     vs = [np.asarray(v, float) for v in vectors]
     big = max([float(np.hypot(*v)) for v in vs] + [largest])
     verts = np.cumsum([np.zeros(2)] + vs, axis=0)
-    return min(round_scale(big, POLYGON_MM), box_scale(verts, box))
+    return min(round_scale(big, max_mm), box_scale(verts, box))
 
 
 def measure(x: float, step: float) -> float:
@@ -338,14 +327,15 @@ def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, ar
 
 def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactions, lever: Lever, i: int = 0, *,
                       reading_mm: float = READING_MM, arm_reading_mm: float = ARM_READING_MM,
-                      length_scale: float | None = None) -> GraphicalReplica:
-    """The whole graphical chain at position ``i`` of ``reactions`` (see the module's docstring)."""
+                      length_scale: float | None = None, boxes: SceneBoxes = DEFAULT_BOXES) -> GraphicalReplica:
+    """The whole graphical chain at position ``i`` of ``reactions`` (see the module's docstring);
+    ``boxes`` the room of the drawings (the stage passes ``project.boxes``)."""
     q = np.asarray(reactions.kin.q)[i:i + 1]
     pts = np.array([m.pos[i] for m in reactions.kin.points.values()])
     extent = float(np.hypot(*(pts.max(0) - pts.min(0)))) if len(pts) else 1.0
-    mu_l = length_scale or round_scale(extent, SCHEME_MM)
+    mu_l = length_scale or round_scale(extent, boxes.scheme_diagonal_mm)
     repl = inertia_replacements(linkage, reactions, mu_l, arm_reading_mm, i)
-    box = POLYGON_BOX_MM if len(structure.groups) <= 2 else POLYGON_BOX_MANY_MM
+    box = boxes.polygon if len(structure.groups) <= 2 else boxes.polygon_many
     read: dict[str, np.ndarray] = {}          # canonical reaction name → read vector (lo on hi)
     read_pt: dict[str, np.ndarray] = {}
 
@@ -383,14 +373,14 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
         else:
             groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm, box))
     crank = _crank(reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
-    lev = _lever(lever, reactions, i, arm_reading_mm)
+    lev = _lever(lever, reactions, i, arm_reading_mm, boxes)
     disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
     return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
                             crank, lev, disc)
 
 
 def _dyad(g: Group, reactions: Reactions, i: int, items_on, own: set[str], read, read_pt, mu_l: float,
-          step: float, arm_step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> GroupGraphic:
+          step: float, arm_step: float, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> GroupGraphic:
     a, b = g.links
     inner = next(p for p in g.pairs if not p.external)
     Q = next(r for r in reactions.pairs if r.group == g.key and r.joint == inner.point and r.kind == "R"
@@ -475,7 +465,7 @@ def _dyad(g: Group, reactions: Reactions, i: int, items_on, own: set[str], read,
 
 
 def _generic(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set[str], read, read_pt,
-             step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> GroupGraphic:
+             step: float, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> GroupGraphic:
     """Other groups: their exact equations fed with the read forces, each reaction read off."""
     kn = _Known({}, {})
     entries = []
@@ -533,7 +523,7 @@ def _moment_terms(its, couples: float, centre: np.ndarray, mu_l: float,
 
 
 def _crank(reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
-           arm_step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> CrankGraphic:
+           arm_step: float, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> CrankGraphic:
     d = reactions.crank
     fp = next(r for r in reactions.pairs if r.group == str(d))
     its, couples = items_on(d, {fp.name})
@@ -567,12 +557,13 @@ def _arm_foot(image: np.ndarray, vector: np.ndarray) -> np.ndarray:
     return image - float(image @ u) * u
 
 
-def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float) -> LeverGraphic:
+def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float,
+           boxes: SceneBoxes = DEFAULT_BOXES) -> LeverGraphic:
     imgs = [float(np.hypot(*f.image[i])) for f in lever.forces] + [float(np.hypot(*lever.crank_pin_image[i]))]
     plan = [np.zeros(2), lever.crank_pin_image[i]] + [f.image[i] for f in lever.forces] + \
         [turn_cw(np.asarray(m.vel[i])) for m in reactions.kin.points.values()] + \
         [_arm_foot(f.image[i], f.vector[i]) for f in lever.forces]
-    mu_v = min(round_scale(max(imgs), POLYGON_MM), box_scale(np.array(plan), LEVER_BOX_MM))
+    mu_v = min(round_scale(max(imgs), boxes.polygon_mm), box_scale(np.array(plan), boxes.lever))
     terms, total = [], 0.0
     for f in lever.forces:
         mag = float(np.hypot(*f.vector[i]))

@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from .analysis import Kinetostatics, balancing_cycle, kinetostatics_at
+from .analysis import Kinetostatics, kinetostatics_at
 
 _CACHE: "weakref.WeakKeyDictionary[Any, dict]" = weakref.WeakKeyDictionary()
 
@@ -87,7 +87,7 @@ def kinetostatics_block(ks: Kinetostatics, project=None) -> dict:
         },
     }
     if project is not None:
-        cyc = balancing_cycle(project, project.phi)
+        cyc = project.balancing_cycle
         block["cycle"] = {"phi_deg": np.mod(np.degrees(cyc.phi), 360.0), "balancing_moment": cyc.groups,
                           "balancing_moment_zhukovsky": cyc.zhukovsky}
     return block

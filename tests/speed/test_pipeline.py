@@ -25,6 +25,8 @@ def _fail_in_the_sheets(monkeypatch):
     original = sheets_pkg.available_sheets
 
     class Broken:
+        NEEDS: tuple[str, ...] = ()         # a sheet declares the stages it reads (reportgen.project.Needs)
+
         @staticmethod
         def draw(*_args):
             raise TaskError("mechanism.link[1].length", "made up for the test", "a positive length")

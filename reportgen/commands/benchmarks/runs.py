@@ -34,8 +34,8 @@ def diagrams_table(project, ns) -> tuple[Table, Series]:
     """The chord construction of the kinematic diagrams (as drawn, ordinates measured to 0.1 mm on a
     240 mm axis, and the bare chords without the measuring) against the exact v and a at the same
     angles (linear systems of the differentiated constraints)."""
-    from ..diagrams import build_diagrams
-    from ..kinematics.extremes import output_coordinate
+    from ...diagrams import build_diagrams
+    from ...kinematics.extremes import output_coordinate
 
     model, st = project.model, project.strokes
     phi0 = float(project.phi[0])
@@ -87,7 +87,7 @@ def _table_flywheel(cycle, theta: np.ndarray, delta: float) -> tuple[float, floa
 
 
 def dynamics_tables(project, ns) -> tuple[list[Table], Series]:
-    from ..dynamics import EnergyProfile, ProjectCycle, graphical_replica, wittenbauer_exact
+    from ...dynamics import EnergyProfile, ProjectCycle, graphical_replica, wittenbauer_exact
 
     dyn = project.task.dynamics
     cycle = ProjectCycle(project, dyn.crank_inertia)
@@ -152,8 +152,8 @@ def dynamics_tables(project, ns) -> tuple[list[Table], Series]:
 # -- 3. graphical replicas at the sheet's scales -----------------------------------------------------
 
 def replicas_table(project) -> Table:
-    from ..kinetostatics import kinetostatics_at
-    from ..plans import build_plans
+    from ...kinetostatics import kinetostatics_at
+    from ...plans import build_plans
 
     t = Table("replicas", "Graphical replicas at the sheet's scales against the exact values",
               ["replica", "compared", "largest relative deviation", "time, ms"])
@@ -178,7 +178,7 @@ def replicas_table(project) -> Table:
     t.add("balancing moment, Zhukovsky's lever", "M_ур", rel(abs(g.lever.balancing_moment_measured / Mx - 1)), "")
     t.add("groups vs lever, exact methods", "M_ур", rel(abs(ks.discrepancy_percent) / 100), "")
     if project.task.dynamics is not None:
-        from ..dynamics import dynamics_of
+        from ...dynamics import dynamics_of
         dt, d = best_time(lambda: dynamics_of(project), 1)
         t.add(f"Wittenbauer construction ({d.graphical.theta.size - 1} points)",
               "J_fly", rel(abs(d.graphical.J_fly / d.exact.J_fly - 1)), ms(dt))
@@ -191,7 +191,7 @@ def replicas_table(project) -> Table:
 # -- 4. planetary search -------------------------------------------------------------------------------
 
 def planetary_table(project, bounds) -> Table:
-    from ..planetary.search import search, synthesize
+    from ...planetary.search import search, synthesize
 
     p = project.task.planetary
     st = project.planetary

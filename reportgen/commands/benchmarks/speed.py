@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import ComputationError
+from ...errors import ComputationError
 from .tables import Table, ms, rel, sec
 
 
@@ -48,8 +48,8 @@ def _run(args: list[str], env: dict[str, str], cwd: Path) -> float:
 
 def critical_path_table(task_path: Path, quick: bool) -> Table:
     """One cold build in process with the spans of its stages: what ran in parallel, what waited."""
-    from ..commands.build import build
-    from ..commands.pipeline import Timeline
+    from ..build import build
+    from ..pipeline import Timeline
 
     pdf = not quick and shutil.which("latexmk") is not None
     t = Table("critical-path", f"The stages of `reportgen build {task_path.parent.name}/{task_path.name}`: "
@@ -130,8 +130,8 @@ def _one_number_changed(text: str, runs: int) -> list[str] | None:
 
 def solver_table(task_path: Path, quick: bool) -> Table:
     """All stages over 360 positions in process (model included) and `reportgen solve` as a process."""
-    from ..project import Project
-    from ..taskfile import load_task
+    from ...project import Project
+    from ...taskfile import load_task
 
     t = Table("solver", f"The solver on {task_path.parent.name}/{task_path.name}",
               ["what", "time, ms: median (min–max)", "runs"])
@@ -140,8 +140,8 @@ def solver_table(task_path: Path, quick: bool) -> Table:
     import dataclasses
 
     def linkage_stages():
-        from ..dynamics.solve import solve_dynamics
-        from ..kinetostatics.analysis import balancing_cycle
+        from ...dynamics.solve import solve_dynamics
+        from ...kinetostatics.analysis import balancing_cycle
         an = dataclasses.replace(task.analysis, positions=360)
         p = Project(dataclasses.replace(task, analysis=an))
         balancing_cycle(p, p.phi)          # reactions group by group and Zhukovsky's lever at every position
@@ -200,10 +200,10 @@ def pylinkage_table(n: int = 360, pairs: int = 15) -> Table:
     """The same four-bar in both, interleaved: reportgen's solve alone, with its model build (from
     the Mechanism, and from the task's TOML text), and pylinkage's two paths (its linkage is
     stateful, so it is built inside every run)."""
-    from ..kinematics import build_model
-    from ..task import Mechanism
-    from ..taskfile import loads_task
-    from ..zoo import four_bar
+    from ...kinematics import build_model
+    from ...task import Mechanism
+    from ...taskfile import loads_task
+    from ...zoo import four_bar
 
     t = Table("pylinkage", f"The same four-bar (crank–rocker {'/'.join(f'{v:g}' for v in FOUR_BAR)} m, "
               f"ω1 = 10 rad/s) over {n} positions with v and a: pylinkage and reportgen",

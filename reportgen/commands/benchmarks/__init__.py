@@ -11,7 +11,7 @@ from pathlib import Path
 
 from .tables import Table
 
-__all__ = ["BenchReport", "run_bench", "write_plot", "markdown"]
+__all__ = ["BenchReport", "run_bench", "markdown"]
 
 
 @dataclass
@@ -26,8 +26,8 @@ class BenchReport:
 def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchReport:
     """Run every measurement on the task (the press example by default); ``progress(name)`` is
     called before each part."""
-    from ..project import Project
-    from ..taskfile import load_task
+    from ...project import Project
+    from ...taskfile import load_task
     from . import runs, speed
 
     say = progress or (lambda _name: None)
@@ -63,36 +63,6 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
     rep.tables.append(speed.pylinkage_table(36 if quick else 360, 5 if quick else 25))
     rep.seconds = time.perf_counter() - t0
     return rep
-
-
-def write_plot(rep: BenchReport, path: Path) -> Path:
-    """Error against positions and error against time for every position-count approximation."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
-    floor = 1e-16
-    for label, pts in rep.series.items():
-        if not pts:
-            continue
-        n = [p[0] for p in pts]
-        e = [max(p[1], floor) for p in pts]
-        t = [p[2] * 1e3 for p in pts]
-        ax1.loglog(n, e, "o-", label=label, ms=4)
-        ax2.loglog(t, e, "o-", label=label, ms=4)
-    ax1.set_xlabel("positions per cycle")
-    ax1.set_ylabel("relative error against the reference")
-    ax2.set_xlabel("time, ms")
-    ax2.set_ylabel("relative error against the reference")
-    for ax in (ax1, ax2):
-        ax.grid(True, which="both", lw=0.3)
-    ax1.legend(fontsize=7, loc="best")
-    fig.suptitle(f"reportgen bench: {Path(rep.task).parent.name} (errors below 1e-16 drawn at 1e-16)")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return path
 
 
 def machine() -> str:

@@ -1,0 +1,303 @@
+"""The note's renderer of a :class:`reportgen.scenes.scene.Scene` (the same scene a sheet draws).
+
+Matplotlib, not TikZ: every other figure of the note is matplotlib already (its fonts, its vector
+PDF, NoteBuilder saves it), the label placement needs text extents and collision tests that are
+plain Python here and would be TeX macros in TikZ, and a scene of a few thousand entities (the
+plan of positions with its trajectories) would slow every LaTeX run.
+
+The figure is drawn at a true scale: 1 mm of the scene is ``reduction`` mm of the page (1, or a
+smaller factor when the scene is larger than the text block), and
+is included at its natural size (``fig.reportgen_exact``; the template reads ``fig.width_cm``): at
+1:1 where it fits the text block (a reader can measure it), else reduced to fill the block. Labels are in the note's font size, placed beside their anchor (a point,
+or the middle of their vector) where they overlap no other label; ``fig.reportgen_labels`` keeps
+the placed boxes (scene mm) for the tests."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.patches import Circle as MplCircle
+from matplotlib.patches import Polygon as MplPolygon
+
+from reportgen.scenes.scene import Arrow, Circle, Label, Polyline, Scene, Segment
+
+from . import new_figure
+
+#: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
+#: caption).
+TEXT_W_MM, TEXT_H_MM = 160.0, 215.0
+#: Letter size of labels, pt, and its height in page mm.
+LABEL_PT = 9.0
+LABEL_MM = LABEL_PT * 25.4 / 72.0
+PAD_MM = 6.0          # page mm round the drawing
+
+PENS = {"contour": (1.1, "-"), "thin": (0.45, "-"), "hidden": (0.9, (0, (4, 2))), "phantom": (0.5, (0, (6, 2, 1, 2, 1, 2))),
+        "axis": (0.45, (0, (8, 2, 1, 2))), "vectors": (1.0, "-"), "construction": (0.3, ":")}
+COLOURS = {"absolute": "black", "relative": "tab:blue", "normal": "tab:green", "tangential": "tab:red",
+           "coriolis": "tab:purple", "sliding": "tab:orange",
+           "load": "black", "found": "tab:red", "read": "tab:blue"}
+
+
+@dataclass(frozen=True)
+class PlacedLabel:
+    """A label as the note drew it: its text, anchor, box (scene mm) and the distance from the box
+    to its anchor point (scene mm)."""
+    text: str
+    anchor: str
+    box: tuple[float, float, float, float]
+    distance: float
+    leader: bool = False
+
+
+def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = TEXT_H_MM) -> float:
+    """1 if the scene (with its labels' margin) fits the text block, else the reduction that makes
+    it fill the block (the caption then says the figure is reduced and which sheet has the scale)."""
+    x0, y0, x1, y1 = scene.bounds()
+    w, h = x1 - x0, y1 - y0
+    fit = min((max_w_mm - 2 * PAD_MM) / max(w, 1e-9), (max_h_mm - 2 * PAD_MM) / max(h, 1e-9))
+    return min(1.0, fit)
+
+
+def reduction_text(r: float) -> str:
+    """1:2,5 for 0.4."""
+    x = 1.0 / r
+    s = f"{x:.2f}".rstrip("0").rstrip(".").replace(".", ",")
+    return f"1:{s}"
+
+
+def _mathtext(tex: str) -> str:
+    """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
+    if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
+        tex = tex.replace("\\text{", "\\mathrm{")
+        parts = tex.split(",")
+        return ", ".join(f"${p}$" for p in parts)
+    return tex
+
+
+def _text_size(text: str, h: float) -> tuple[float, float]:
+    """Rough width and height (same units as ``h``, the letter height) of a label."""
+    plain = text
+    for cmd in ("\\tau", "\\omega", "\\varepsilon", "\\pi"):
+        plain = plain.replace(cmd, "t")
+    n_base = n_small = 0
+    small = False
+    depth = 0
+    for ch in plain:
+        if ch in "_^":
+            small = True
+            continue
+        if ch == "{":
+            depth += 1
+            continue
+        if ch == "}":
+            depth -= 1
+            if depth == 0:
+                small = False
+            continue
+        if small:
+            n_small += 1
+            if depth == 0:
+                small = False
+        else:
+            n_base += 1
+    return (0.62 * h * n_base + 0.45 * h * n_small + 0.2 * h, 1.25 * h)
+
+
+def _boxes_hit(b, boxes) -> bool:
+    return any(not (b[2] <= o[0] or o[2] <= b[0] or b[3] <= o[1] or o[3] <= b[1]) for o in boxes)
+
+
+def _dist_box(p, b) -> float:
+    dx = max(b[0] - p[0], 0.0, p[0] - b[2])
+    dy = max(b[1] - p[1], 0.0, p[1] - b[3])
+    return math.hypot(dx, dy)
+
+
+def _crosses(b, seg) -> bool:
+    """Does segment ``seg`` ((x0, y0), (x1, y1)) meet box ``b`` (Liang–Barsky)?"""
+    (x0, y0), (x1, y1) = seg
+    dx, dy = x1 - x0, y1 - y0
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, x0 - b[0]), (dx, b[2] - x0), (-dy, y0 - b[1]), (dy, b[3] - y0)):
+        if p == 0:
+            if q < 0:
+                return False
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return False
+    return True
+
+
+def _lines(scene: Scene) -> list:
+    """The scene's drawn lines as segments (circles as their bounding squares' sides)."""
+    out = []
+    for e in scene.entities:
+        if isinstance(e, (Segment, Arrow)):
+            out.append((e.a, e.b))
+        elif isinstance(e, Polyline):
+            pts = list(e.points) + ([e.points[0]] if e.closed else [])
+            out += list(zip(pts[:-1], pts[1:]))
+        elif isinstance(e, Circle):
+            n = 12
+            pts = [(e.c[0] + e.r * math.cos(2 * math.pi * k / n), e.c[1] + e.r * math.sin(2 * math.pi * k / n))
+                   for k in range(n + 1)]
+            out += list(zip(pts[:-1], pts[1:]))
+    return out
+
+
+def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
+           lines: list | None = None):
+    """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
+    scene's middle first), or beside the middle of a vector on either side."""
+    w, h = size
+    cands: list[tuple[float, float]] = []
+    if lb.role == "vector" and lb.along is not None and lb.leader:
+        p = np.asarray(lb.at)
+        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
+        d = b - a
+        base = math.atan2(d[0], -d[1])             # across the vector
+        for off in (4.0, 6.0, 8.0, 11.0):
+            for k in range(16):
+                ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
+                cands.append((float(p[0] + math.cos(ang) * (w / 2 + gap * off)),
+                              float(p[1] + math.sin(ang) * (h / 2 + gap * off))))
+    elif lb.role == "vector" and lb.along is not None:
+        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
+        d = b - a
+        n = float(np.hypot(*d)) or 1.0
+        u = d / n
+        nrm = np.array([-u[1], u[0]])
+        for off in (1.0, 2.0, 3.5, 5.0):
+            for t in (0.5, 0.35, 0.65, 0.2, 0.8):
+                for side in (1.0, -1.0):
+                    q = a + d * t + side * nrm * (gap * off + 0.5 * abs(nrm[0]) * w + 0.5 * abs(nrm[1]) * h)
+                    cands.append((float(q[0]), float(q[1])))
+    else:
+        p = np.asarray(lb.at)
+        v = p - centre
+        base = math.atan2(v[1], v[0]) if np.hypot(*v) > 1e-9 else math.pi / 4
+        for off in (1.0, 2.0, 3.5, 5.0, 7.0):
+            for k in range(16):
+                ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
+                ux, uy = math.cos(ang), math.sin(ang)
+                t = min((w / 2) / abs(ux) if abs(ux) > 1e-9 else math.inf,
+                        (h / 2) / abs(uy) if abs(uy) > 1e-9 else math.inf)
+                cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
+    best = None
+    for rank, c in enumerate(cands):
+        box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+        if _boxes_hit(box, boxes):
+            continue
+        near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
+                and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
+        hits = sum(1 for s in near if _crosses(box, s))
+        if hits == 0:
+            return c, box
+        if best is None or (hits, rank) < best[0]:
+            best = ((hits, rank), c, box)
+    if best is not None:
+        return best[1], best[2]
+    c = cands[0]
+    return c, (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+
+
+def anchor_distance(lb: Label, b) -> float:
+    """Distance (scene mm) from a label's box to what it names: its point, or its vector."""
+    if lb.role == "vector" and lb.along is not None:
+        (ax, ay), (bx, by) = lb.along
+        return min(_dist_box((ax + (bx - ax) * t / 40, ay + (by - ay) * t / 40), b) for t in range(41))
+    return _dist_box(lb.at, b)
+
+
+def place_labels(scene: Scene, r: float, roles: tuple[str, ...]) -> list[tuple[Label, tuple[float, float], PlacedLabel]]:
+    """The labels of ``roles`` placed for a figure at reduction ``r``: (label, centre, placed)."""
+    h = LABEL_MM / r
+    gap = 0.8 / r
+    pts = np.array([lb.at for lb in scene.labels]) if scene.labels else np.zeros((1, 2))
+    centre = pts.mean(axis=0)
+    out = []
+    boxes: list = []
+    lines = _lines(scene)
+    for lb in scene.labels:
+        if lb.role not in roles:
+            continue
+        c, b = _place(lb, _text_size(lb.text, h), boxes, centre, gap, lines)
+        boxes.append(b)
+        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), lb.leader)))
+    return out
+
+
+def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float = TEXT_H_MM,
+                 colours: bool = True, roles: tuple[str, ...] = ("point", "vector", "number")):
+    """The scene as a matplotlib figure at a true reduction (see the module's docstring)."""
+    r = reduction_for(scene, max_w_mm, max_h_mm)
+    for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
+        labels = place_labels(scene, r, roles)
+        x0, y0, x1, y1 = scene.bounds()
+        for _, _, pl in labels:
+            x0, y0 = min(x0, pl.box[0]), min(y0, pl.box[1])
+            x1, y1 = max(x1, pl.box[2]), max(y1, pl.box[3])
+        pad = 1.5 / r
+        x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
+        w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
+        over = max(w_mm / max_w_mm, h_mm / max_h_mm)
+        if over <= 1.0 + 1e-9:
+            break
+        r /= over * 1.001
+    fig = new_figure(w_mm / 10.0, h_mm / 10.0)
+    ax = fig.add_axes([0.0, 0.0, 1.0, 1.0])
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    for e in scene.entities:
+        lw, ls = PENS.get(e.kind, (0.6, "-"))
+        if isinstance(e, Segment):
+            a, b = np.asarray(e.a), np.asarray(e.b)
+            d = float(np.hypot(*(b - a)))
+            if d <= sum(e.trim):
+                continue
+            u = (b - a) / d
+            a2, b2 = a + u * e.trim[0], b - u * e.trim[1]
+            ax.plot([a2[0], b2[0]], [a2[1], b2[1]], color="black", lw=lw, ls=ls, solid_capstyle="round")
+        elif isinstance(e, Polyline):
+            xy = np.asarray(e.points)
+            if e.closed:
+                xy = np.vstack([xy, xy[:1]])
+            ax.plot(xy[:, 0], xy[:, 1], color="black", lw=lw, ls=ls)
+        elif isinstance(e, Circle):
+            ax.add_patch(MplCircle(e.c, e.r, facecolor="white" if e.hinge else "none", edgecolor="black",
+                                   lw=min(lw, 0.8), ls=ls, zorder=4 if e.hinge else 2))
+        elif isinstance(e, Arrow):
+            a, b = np.asarray(e.a), np.asarray(e.b)
+            d = float(np.hypot(*(b - a)))
+            if d < 1e-9:
+                continue
+            colour = COLOURS.get(e.style, "black") if colours else "black"
+            head = min(3.0 / r, d)               # a 3 mm head on the page
+            u = (b - a) / d
+            nrm = np.array([-u[1], u[0]])
+            base = b - u * head
+            ax.plot([a[0], base[0]], [a[1], base[1]], color=colour, lw=lw, solid_capstyle="butt")
+            ax.add_patch(MplPolygon([b, base + nrm * head / 6, base - nrm * head / 6], closed=True,
+                                    facecolor=colour, edgecolor=colour, lw=0.3, zorder=3))
+    for lb, c, pl in labels:
+        if lb.leader:
+            bx = min(max(lb.at[0], pl.box[0]), pl.box[2])
+            by = min(max(lb.at[1], pl.box[1]), pl.box[3])
+            ax.plot([bx, lb.at[0]], [by, lb.at[1]], color="0.3", lw=0.4)
+        ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
+                style="italic" if lb.role == "point" else "normal",
+                color="tab:blue" if lb.role == "number" else "black", zorder=6)
+    fig.reportgen_exact = True
+    fig.reportgen_labels = tuple(pl for _, _, pl in labels)
+    fig.reportgen_reduction = r
+    fig.width_cm = w_mm / 10.0
+    fig.scene = scene
+    return fig

@@ -1,0 +1,41 @@
+"""The room each construction is given on paper, mm. The scenes and the graphical replicas choose
+their scales from these boxes; the solvers hold none of them (the stages pass ``project.boxes`` in).
+The defaults are the views of the A1 sheets; a caller that draws elsewhere passes its own boxes,
+and the note draws the same scenes (reduced where the text block is smaller, and says so)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class GraphLayout:
+    """Room on the sheet for the diagrams of section 3, mm (sized for an A1 sheet 3: the column of M,
+    A, ΔE, ω on the left, the Wittenbauer diagram with J_red(φ) turned under it in the middle; the
+    note's section 3 uses the same scales, so that note and sheet agree)."""
+    phi_axis: float = 260.0       # length of the φ axis for one cycle
+    m_height: float = 80.0        # largest |M_red|
+    a_height: float = 80.0        # largest |A| of the work diagram
+    e_height: float = 80.0        # span of ΔE
+    j_width: float = 160.0        # largest J_red (from J = 0)
+    pole_step: float = 10.0       # H is a multiple of this
+
+
+@dataclass(frozen=True)
+class SceneBoxes:
+    #: Sheet 1: the drawing of the mechanism (the scheme view less its label and caption margins).
+    scheme: tuple[float, float] = (470.0 - 28.0 - 28.0, 400.0 - 36.0 - 38.0)
+    #: Sheet 2: the longest vector of a force polygon or of the lever's plan, mm; the extent
+    #: (diagonal) of the mechanism on the scheme of section 2, mm.
+    polygon_mm: float = 200.0
+    scheme_diagonal_mm: float = 450.0
+    #: Sheet 2: a polygon is drawn larger than ``polygon_mm`` gives as long as it fits this box
+    #: (width, height); a narrower one when two or more groups (three polygons) share the sheet.
+    polygon: tuple[float, float] = (400.0, 180.0)
+    polygon_many: tuple[float, float] = (350.0, 180.0)
+    #: Sheet 2: the lever's plan (width, height).
+    lever: tuple[float, float] = (250.0, 400.0)
+    #: Sheet 3: the diagrams.
+    diagrams: GraphLayout = field(default_factory=GraphLayout)
+
+
+DEFAULT = SceneBoxes()

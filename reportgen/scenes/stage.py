@@ -1,0 +1,41 @@
+"""``project.scenes``: the scenes of one project, each built once, when first asked for, from the
+project's stages and its boxes (:mod:`.boxes`). The note and the sheets read them from here."""
+from __future__ import annotations
+
+from functools import cached_property
+
+from .plans import plan_scene
+from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
+from .scene import Scene
+
+
+class Scenes:
+    def __init__(self, project) -> None:
+        self.project = project
+
+    @cached_property
+    def scheme_data(self) -> SchemeData:
+        return scheme_data(self.project, self.project.analysed)
+
+    @cached_property
+    def positions_scales(self) -> list[tuple[float, str]]:
+        """The ГОСТ scales of the plan of positions, the chosen one first."""
+        return positions_scales(bounds(self.scheme_data, self.project.linkage), self.project.boxes)
+
+    def positions_at(self, k: float, ratio: str) -> Scene:
+        """The plan of positions at another scale (a sheet whose views do not fit)."""
+        return positions_scene(self.project, self.scheme_data, k, ratio)
+
+    @cached_property
+    def positions(self) -> Scene:
+        """The plan of positions at its scale (sheet 1's scheme; the note's figure, reduced)."""
+        return self.positions_at(*self.positions_scales[0])
+
+    @cached_property
+    def velocity_plan(self) -> Scene:
+        return plan_scene(self.project.plans[0])
+
+    @cached_property
+    def acceleration_plan(self) -> Scene:
+        v, a = self.project.plans
+        return plan_scene(a, (set(v.points) - {"p"}) | {"π"})
