@@ -22,6 +22,7 @@ from matplotlib.patches import Polygon as MplPolygon
 
 from reportgen.scenes.scene import Arrow, Circle, Label, Polyline, Scene, Segment
 
+from ..parts import active
 from . import new_figure
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
@@ -69,6 +70,7 @@ def reduction_text(r: float) -> str:
 def _mathtext(tex: str) -> str:
     """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
+        tex = active().localize_latex(tex)      # the note's language: F_{\\text{и}1} → F_{\\text{i}1}
         tex = tex.replace("\\text{", "\\mathrm{")
         parts = tex.split(",")
         return ", ".join(f"${p}$" for p in parts)
