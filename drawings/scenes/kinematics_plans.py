@@ -96,7 +96,7 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         view.text_mm((view.rect.x0 + 2.0, view.rect.y1 - 1.0), title, 3.5, "top-left")
     else:
         scale = scene.scale()
-        caption = f"{scale.symbol} = {format_significant(scale.value, 4)} {scale.unit}"
+        caption = f"{scale.symbol} = {format_significant(scale.value, 4)} {words_unit(scale.unit)}"
         view.text_mm((view.rect.center[0], view.rect.y0 + 4.0), caption, 5.0, "bottom-center")
         view.title(title)
     head = 3.5 if small else 5.0
