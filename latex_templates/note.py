@@ -9,6 +9,7 @@ from typing import Any, Literal, Mapping, Sequence
 
 from markupsafe import Markup
 
+from reportgen.balance import check_balance
 from reportgen.calc import CalcRecord, evaluate_displayed
 from reportgen.task import Document
 
@@ -129,6 +130,11 @@ from reportgen.task import Document
         if bad:
             raise ValueError("printed formulas do not reproduce their printed results: "
                              + "; ".join(f"{r.symbol} = {r.expr}" for r in bad))
+        unbalanced = [b for b in self.symbols.balances if not check_balance(b).ok]
+        if unbalanced:
+            raise ValueError("printed balance equations do not hold with their printed results: "
+                             + "; ".join(f"{b.equation_latex()} with {b.result.symbol} = "
+                                         f"{b.result.result_number_latex()}" for b in unbalanced))
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")
         return tex_path

@@ -16,6 +16,7 @@ import re
 import numpy as np
 from markupsafe import Markup
 
+from reportgen.balance import Balance, BalanceTerm
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
@@ -64,45 +65,6 @@ def _check(rec: CalcRecord, expected: float, what: str) -> None:
         raise RuntimeError(f"kinetostatics note: {what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
-def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: list[tuple[str, dict]] = ()
-                 ) -> tuple[list[CalcRecord], list[tuple[str, dict]]]:
-    """Σ sign·F·h over ``terms`` (sign, force Var, arm Var) + ``extra`` (expression over X and its
-    operands: {"X": Var, other names: Var}); split into partial sums of :data:`TERMS_PER_RECORD` terms
-    when longer. Returns the partial records and the (expression, operands) list of the final formula."""
-    items: list[tuple[str, dict]] = []
-    for n, (s, F, h) in enumerate(terms):
-        fn, hn = f"F{n}", f"h{n}"
-        items.append((("- " if s < 0 else "+ ") + f"{fn} * {hn}", {fn: F, hn: h}))
-    for n, (expr, ops) in enumerate(extra):
-        items.append((expr.replace("X", f"X{n}"), {(f"X{n}" if k == "X" else k): v for k, v in ops.items()}))
-    if len(items) <= TERMS_PER_RECORD:
-        return [], items
-    parts, out = [], []
-    for c in range(0, len(items), TERMS_PER_RECORD):
-        chunk = items[c:c + TERMS_PER_RECORD]
-        expr = " ".join(e for e, _ in chunk).lstrip("+ ").strip()
-        named = {k: v for _, d in chunk for k, v in d.items()}
-        rec = record(f"\\Sigma^{{({prefix})}}_{{{c // TERMS_PER_RECORD + 1}}}", expr, "Н·мм", **named,
-                     meaning="частичная сумма моментов")
-        parts.append(rec)
-        out.append((f"+ S{c // TERMS_PER_RECORD}", {f"S{c // TERMS_PER_RECORD}": rec}))
-    return parts, out
-
-
-def _final(symbol: str, items, denominator: tuple[str, Var], unit: str, negate: bool, meaning) -> CalcRecord:
-    expr = " ".join(e for e, _ in items).strip()
-    if expr.startswith("+ "):
-        expr = expr[2:]
-    if not expr:
-        expr = "0"
-    named = {k: v for _, d in items for k, v in d.items()}
-    dn, dv = denominator
-    full = f"-({expr}) / {dn}" if negate else f"({expr}) / {dn}"
-    if expr == "0":
-        full = f"0 * {dn}"
-    return record(symbol, full, unit, **named, **{dn: dv}, meaning=meaning)
-
-
 def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counter, arms_shown: list
                ) -> tuple[list[tuple[float, Var, Var]], list[tuple[str, Var]], list[str]]:
     """The moment terms of a replica as (sign, |F| Var, h Var); zero-arm forces listed apart."""
@@ -144,11 +106,16 @@ def _meaning(name: str, read: bool) -> Markup:
     return Markup(f"сила ${s}$")
 
 
-def _couples(extra_terms, mu_l: Var, link: int) -> list[tuple[str, dict]]:
+def _balance_terms(terms: list[tuple[float, Var, Var]]) -> tuple[BalanceTerm, ...]:
+    """(sign, force, arm) triples as the known terms of a balance."""
+    return tuple(BalanceTerm(1 if sgn > 0 else -1, F, h) for sgn, F, h in terms)
+
+
+def _couples(extra_terms, mu_l: Var, link: int) -> tuple[BalanceTerm, ...]:
     """Couples enter a sum of moments in N·mm as M/μl."""
-    return [("+ X / mu_l" if t.moment >= 0 else "- X / mu_l",
-             {"X": Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", f"сумма моментов пар сил на звене {link}"),
-              "mu_l": mu_l}) for t in extra_terms]
+    return tuple(BalanceTerm(1 if t.moment >= 0 else -1,
+                             Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", f"сумма моментов пар сил на звене {link}"),
+                             divisor=mu_l) for t in extra_terms)
 
 
 def _polygon_rows(polygon) -> list[list]:
@@ -224,14 +191,17 @@ def content(project) -> PartContent:
             P = _pair_letter(r, sp, gg.key)
             l = Var("l", f"{P}{sp.centre}", sp.length_mm_measured, "мм",
                     f"длина звена {P}{sp.centre} на схеме")
-            parts, items = _sum_records(terms, f"{sp.link}", _couples(extra, mu_l, sp.link))
-            rec = _final(f"R^{{\\tau}}_{{{sp.name[1:]}}}", items, ("l", l), "Н", False,
-                         Markup(f"касательная составляющая реакции ${sym(sp.name)}$"))
+            bal = Balance(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}}", f"R^{{\\tau}}_{{{sp.name[1:]}}}", "Н",
+                          -1, l, _balance_terms(terms) + _couples(extra, mu_l, sp.link),
+                          Markup(f"касательная составляющая реакции ${sym(sp.name)}$"),
+                          partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning="частичная сумма моментов", per_line=TERMS_PER_RECORD)
+            sol = bal.solve()
+            parts, rec = list(sol.parts), sol.result
             _check(rec, sp.tau_measured, f"R^τ {sp.name}")
             splits.append({"name": sp.name, "link": sp.link, "centre": sp.centre, "pair": P, "parts": parts,
                            "rec": rec, "terms": terms, "through": [Markup(f"${sym(x)}$") for x in through],
                            "negative": rec.value < 0, "exact": sp.tau, "dev": sp.deviation_percent,
-                           "moment_eq": _moment_equation(sp, P, terms, extra)})
+                           "balance": sol})
         reads = _read_records(gg.polygon, mu_f)
         for v in list(gg.polygon.vectors) + list(gg.polygon.extra):
             c = _canon(v.name)
@@ -266,16 +236,6 @@ def _width(fig) -> str:
 def _pair_letter(r, sp, key: str) -> str:
     """The letter of the outer pair of a split (its joint)."""
     return next(p.joint for p in r.pairs if p.group == key and p.external and sp.link in (p.lo, p.hi))
-
-
-def _moment_equation(sp, P: str, terms, extra) -> Markup:
-    """ΣM_Q(link) = −R^τ·l + Σ ±F·h = 0 in symbols."""
-    body = [f"-R^{{\\tau}}_{{{sp.name[1:]}}} \\cdot {P}{sp.centre}"]
-    for s, F, h in terms:
-        body.append(("+ " if s > 0 else "- ") + f"{F.latex} \\cdot {h.latex}")
-    for t in extra:
-        body.append(("+ " if t.moment >= 0 else "- ") + f"M_{{{sp.link}}}")
-    return Markup(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}} = " + " ".join(body) + " = 0")
 
 
 def _loads_section(project, ks, mu_l: Var) -> dict:
@@ -449,19 +409,20 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
     OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
              f"длина кривошипа {r.crank_axis}{r.crank_pin} на схеме")
-    parts, items = _sum_records(terms, "1", _couples(extra, mu_l, d))
-    F = _final("F_{\\text{ур}}", items, ("l", OA), "Н", True, "уравновешивающая сила, приложенная в точке "
-               + r.crank_pin + " перпендикулярно кривошипу")
+    # F_ур at the pin along the crank turned +90°: its moment about the axis is +F_ур·OA
+    sol = Balance(f"\\sum M_{{{r.crank_axis}}}", "F_{\\text{ур}}", "Н", 1, OA,
+                  _balance_terms(terms) + _couples(extra, mu_l, d),
+                  "уравновешивающая сила, приложенная в точке " + r.crank_pin + " перпендикулярно кривошипу",
+                  partial="\\Sigma^{(1)}", partial_unit="Н·мм", partial_meaning="частичная сумма моментов", per_line=TERMS_PER_RECORD).solve()
+    parts, F = list(sol.parts), sol.result
     _check(F, c.balancing_force_measured, "F_ур (groups)")
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
                "м", f"длина кривошипа {r.crank_axis}{r.crank_pin}")
     M = record("M_{\\text{ур}}", "F * l_OA", "Н·м", l_oa, F=F, meaning="уравновешивающий момент")
     _check(M, c.balancing_moment_measured, "M_ур (groups)")
     mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
-    eq = [f"-F_{{\\text{{ур}}}} \\cdot {OA.latex}"] + [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}"
-                                                      for s, Fv, h in terms]
     return {"F": F, "M": M, "parts": parts, "through": [Markup(f"${sym(x)}$") for x in through],
-            "moment_eq": Markup(f"\\sum M_{{{r.crank_axis}}} = " + " ".join(eq) + " = 0"),
+            "balance": sol,
             "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
@@ -505,19 +466,21 @@ def _lever(project, ks, counter, figures) -> dict:
             Fv = Var("F", s, t.magnitude, "Н", _meaning(t.name, False))
             h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
                     Markup(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
-            sign = -math.copysign(1.0, t.arm_mm_measured) * (1.0 if lev.omega1 >= 0 else -1.0)
-            terms.append((sign, Fv, h))
+            terms.append((math.copysign(1.0, t.arm_mm_measured), Fv, h))
             ent["h"] = f"h_{{{n}}}"
         loads.append(ent)
     mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", "масштабный коэффициент повёрнутого плана скоростей")
-    extra = [("- X / mu_v" if (p >= 0) == (lev.omega1 >= 0) else "+ X / mu_v",
-              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Markup(f"мощность пары ${sym(name)}$")), "mu_v": mu})
-             for name, p in L.direct if p != 0.0]
-    parts, items = _sum_records(terms, "\\text{Ж}", extra)
+    # moments about the pole, counter-clockwise positive; the direct couples enter as P/μv
+    extra = tuple(BalanceTerm(1 if p >= 0 else -1,
+                              Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Markup(f"мощность пары ${sym(name)}$")),
+                              divisor=mu) for name, p in L.direct if p != 0.0)
     pa = Var("pa", f"p{r.crank_pin.lower()}", L.pa_mm_measured, "мм",
              f"отрезок плана, изображающий скорость точки {r.crank_pin}")
-    F = _final("F_{\\text{ур}}^{\\text{Ж}}", items, ("pa", pa), "Н", False,
-               "уравновешивающая сила по рычагу Жуковского")
+    # F_ур at the image of the pin: its moment about p is +F·pa when the crank turns counter-clockwise
+    sol = Balance("\\sum M_{p}", "F_{\\text{ур}}^{\\text{Ж}}", "Н", 1 if lev.omega1 >= 0 else -1, pa,
+                  _balance_terms(terms) + extra, "уравновешивающая сила по рычагу Жуковского",
+                  partial="\\Sigma^{(\\text{Ж})}", partial_unit="Н·мм", partial_meaning="частичная сумма моментов", per_line=TERMS_PER_RECORD).solve()
+    parts, F = list(sol.parts), sol.result
     _check(F, L.balancing_force_measured, "F_ур (lever)")
     fp = next(p for p in r.pairs if p.group == str(r.crank))
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
@@ -526,11 +489,7 @@ def _lever(project, ks, counter, figures) -> dict:
                meaning="уравновешивающий момент по рычагу Жуковского")
     _check(M, L.balancing_moment_measured, "M_ур (lever)")
     figures["kst_lever"] = kf.lever_figure(points, segments, loads)
-    eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
-    sign_pa = "-" if lev.omega1 >= 0 else "+"
-    return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(),
-            "moment_eq": Markup(f"\\sum M_{{p}} = {sign_pa}F_{{\\text{{ур}}}}^{{\\text{{Ж}}}} \\cdot {pa.latex} "
-                                + " ".join(eq) + " = 0"),
+    return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(), "balance": sol,
             "n_zero": sum(1 for t in L.terms if t.arm_mm_measured == 0.0 and t.magnitude > 0),
             "direct": bool(extra)}
 
