@@ -21,6 +21,8 @@ from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
+from reportgen.numbers import plain, significant
+
 from . import style
 
 Vec = tuple[float, float]
@@ -32,27 +34,15 @@ Vec = tuple[float, float]
 def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str:
     """``value`` with a decimal comma: ``format_number(0.0200) == "0,02"``; ``-0`` becomes ``0``.
 
-    ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept.
+    ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept. The
+    rounding is the note's (:func:`reportgen.numbers.plain`).
     """
-    if not math.isfinite(value):
-        raise ValueError(f"cannot format {value!r}")
-    s = f"{value:.{decimals}f}"
-    if strip and "." in s:
-        s = s.rstrip("0").rstrip(".")
-    if s in ("-0", "-0.0", ""):
-        s = "0"
-    if s.startswith("-") and float(s) == 0.0:
-        s = s[1:]
-    return s.replace(".", ",")
+    return plain(value, decimals, strip=strip)
 
 
 def format_significant(value: float, digits: int = 3) -> str:
     """``value`` rounded to ``digits`` significant digits, decimal comma (``0,0123``, ``1230``)."""
-    if value == 0 or not math.isfinite(value):
-        return format_number(value, 0)
-    exponent = math.floor(math.log10(abs(value)))
-    decimals = max(digits - 1 - exponent, 0)
-    return format_number(round(value, decimals), decimals)
+    return significant(value, digits)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -8,6 +8,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import FuncFormatter  # noqa: E402
 
+from reportgen.numbers import significant  # noqa: E402
+
 STYLE = {
     "font.family": "serif",
     "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],
@@ -27,8 +29,7 @@ STYLE = {
 
 def comma(x: float, _pos=None) -> str:
     """Tick label with a decimal comma and a true minus."""
-    s = f"{x:.6g}".replace(".", ",").replace("-", "\u2212")
-    return s
+    return significant(x, 6).replace("-", "\u2212")
 
 
 COMMA = FuncFormatter(comma)

@@ -18,6 +18,7 @@ import numpy as np
 from markupsafe import Markup
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.numbers import clean_array
 
 from . import PartContent
 
@@ -64,23 +65,28 @@ def _point_velocity(kin, k: int, point: np.ndarray, i: int) -> np.ndarray:
     return qd[i, k, :2] + qd[i, k, 2] * np.array([-r[1], r[0]])
 
 
-def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
+def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str], list[str]]:
     """P = F·V·cos α of every force and M·ω of every couple acting in position i (inertia excluded,
     as in M_red); also the LaTeX symbols of the loads that act but do no work there (a force
-    perpendicular to its point's velocity)."""
+    perpendicular to its point's velocity), and of those whose point does not move."""
     from reportgen.loads import external_loads
 
     kin = project.kinematics
     loads = external_loads(project.task.mechanism, project.linkage, project.model, kin, project.strokes)
     out: list[PowerTerm] = []
     idle: list[str] = []
+    still: list[str] = []
+    v_scale = max([float(np.hypot(*np.asarray(m.vel)[i])) for m in kin.points.values()] + [0.0])
     for j, f in enumerate(loads.forces):
         vec = np.asarray(f.vector)[i]
         F = float(np.hypot(*vec))
         if F <= ZERO_FORCE:
             continue
-        v = _point_velocity(kin, f.link, f.point, i)
+        v = clean_array(_point_velocity(kin, f.link, f.point, i), v_scale)
         V = float(np.hypot(*v))
+        if V == 0.0:
+            still.append(_sub(f.name))    # its point does not move (a centre of mass on a fixed axis)
+            continue
         alpha = math.degrees(math.atan2(abs(vec[0] * v[1] - vec[1] * v[0]), float(vec @ v))) if V > 0 else 90.0
         if abs(float(vec @ v)) <= PERPENDICULAR * F * max(V, ZERO_FORCE):
             idle.append(_sub(f.name))     # perpendicular to its velocity (a slider's weight): no power
@@ -108,7 +114,7 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
         wv = Var(f"w{j}", rf"\omega_{{{mo.link}}}", w, "рад/с", f"угловая скорость звена {mo.link}")
         rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Markup(f"мощность момента ${sym}$"))
         out.append(PowerTerm(mo.name, rec))
-    return out, idle
+    return out, idle, still
 
 
 def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, CalcRecord]:
@@ -350,7 +356,7 @@ def content(project) -> PartContent:
     w1 = abs(float(project.linkage.omega))
     omega = Var("omega1", r"\omega_1", w1, "рад/с", "угловая скорость кривошипа (средняя)")
     delta = Var("delta", r"\delta", res.delta_target, "", "заданный коэффициент неравномерности движения")
-    terms, idle = power_terms(project, i)
+    terms, idle, still = power_terms(project, i)
     P_sum, M_rec = moment_records(terms, omega)
     shares, J_rec = inertia_records(project, i, omega)
     positions = int(round(2 * math.pi / float(_first_step(res.graphical.theta))))
@@ -372,7 +378,8 @@ def content(project) -> PartContent:
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
         "i": i, "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
-        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Markup(f"${x}$") for x in idle], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
+        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Markup(f"${x}$") for x in idle],
+        "still": [Markup(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(x.startswith("и") for x in labels),
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,

@@ -18,6 +18,7 @@ from markupsafe import Markup
 
 from reportgen.balance import Balance, BalanceTerm
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.numbers import clean
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
 
@@ -221,7 +222,8 @@ def content(project) -> PartContent:
     ctx = {"pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
-           "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky, "disc": ks.discrepancy_percent,
+           "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky,
+           "disc": clean(ks.discrepancy_percent, 100.0),
            "first_group": groups_ctx[0]["label"] if groups_ctx else "",
            "trans": [{"label": by_key[k].label, "mu": v} for k, v in ks.transmission_deg.items()],
            "width": {name: _width(fig) for name, fig in figures.items()}}
@@ -250,10 +252,15 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
         if b.mass <= 0 and b.inertia <= 0:
             continue
         m = Var("m", f"m_{{{k}}}", b.mass, "кг", f"масса звена {k}")
-        ent: dict = {"k": k, "G": None, "F": None, "M": None, "h": None, "h_mm": None, "repl": None}
+        ent: dict = {"k": k, "G": None, "F": None, "M": None, "h": None, "h_mm": None, "repl": None,
+                     "F_zero": False}
         a_s = float(np.hypot(*np.asarray(kin.coms[k].acc)[0]))
         eps = abs(float(np.asarray(kin.links[k].epsilon)[0]))
-        if b.mass > 0:
+        if b.mass > 0 and a_s == 0.0:          # a centre of mass on a fixed axis (kinematics: exact 0)
+            if lk.g:
+                ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=f"сила тяжести звена {k}")
+            ent["F_zero"] = True
+        elif b.mass > 0:
             if lk.g:
                 ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=f"сила тяжести звена {k}")
             aS = Var("a", f"a_{{S{k}}}", a_s, "м/с²", f"ускорение центра масс звена {k}")
@@ -497,7 +504,7 @@ def _lever(project, ks, counter, figures) -> dict:
 def _comparison(ks, crank, lever) -> dict:
     Fg = Var("F_g", "F_{\\text{ур}}", crank["F"].value, "Н", "уравновешивающая сила по планам сил")
     Fz = Var("F_z", "F_{\\text{ур}}^{\\text{Ж}}", lever["F"].value, "Н", "уравновешивающая сила по рычагу Жуковского")
-    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "\\%", Fg, Fz, meaning="расхождение методов")
+    delta = record("\\delta", "100 * (F_g - F_z) / F_z", "%", Fg, Fz, meaning="расхождение методов")
     _check(delta, ks.graphical.discrepancy_percent, "the graphical discrepancy")
     return {"delta": delta}
 
@@ -516,7 +523,7 @@ def _cycle(project, ks, figures) -> dict:
     rows = []
     for j in range(len(at.phi)):
         mg, mz = float(at.groups[j]), float(at.zhukovsky[j])
-        dev = 100.0 * (mg - mz) / mz if mz != 0 else 0.0
+        dev = clean(100.0 * (mg - mz) / mz, 100.0) if mz != 0 else 0.0
         rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Markup(f"${_sci(dev)}$")])
     return {"rows": rows, "max": float(np.max(dense.groups)), "min": float(np.min(dense.groups)),
             "mean": float(np.mean(np.asarray(dense.groups)[:-1]))}

@@ -16,6 +16,7 @@ import numpy as np
 
 from ..errors import AssemblyError, SingularPositionError
 from ..linkage import Linkage, compile_linkage, sketch_q
+from ..numbers import clean_array
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
 from .constraints import assemble, gamma, jacobian_rows, known_terms, perp, rot, world
@@ -315,9 +316,28 @@ class KinematicModel:
             trans[g.key] = _ro(mu)
             for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG):
                 flags.append((int(i), g.key, float(mu[i])))
+        points, coms, links = self._without_residue(points, coms, links)
         return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), MappingProxyType(points),
                                 MappingProxyType(coms), MappingProxyType(links), MappingProxyType(trans),
                                 tuple(flags))
+
+    def _without_residue(self, points, coms, links):
+        """Velocities and accelerations that are round-off residue (a centre of mass on a fixed axis
+        comes out at ~1e-16 m/s²) become exact zeros: residue against |ω1|·L, ω1²·L (L the size of
+        the mechanism), |ω1|, ω1² (:func:`reportgen.numbers.clean_array`)."""
+        sketch = np.array(list(self.linkage.sketch.values()), dtype=float).reshape(-1, 2)
+        size = float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
+        w = abs(self.omega) or 1.0
+        v_scale, a_scale = w * size, w * w * size
+
+        def pm(m: PointMotion) -> PointMotion:
+            return PointMotion(m.pos, _ro(clean_array(m.vel, v_scale)), _ro(clean_array(m.acc, a_scale)))
+
+        def lm(m: LinkMotion) -> LinkMotion:
+            return LinkMotion(m.angle, _ro(clean_array(m.omega, w)), _ro(clean_array(m.epsilon, w * w)))
+
+        return ({n: pm(m) for n, m in points.items()}, {k: pm(m) for k, m in coms.items()},
+                {k: lm(m) for k, m in links.items()})
 
     @staticmethod
     def _point_motion(q, qd, qdd, k: int, p: tuple) -> PointMotion:
