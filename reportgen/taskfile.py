@@ -52,7 +52,7 @@ ANALYSIS_KEYS = ("positions", "start", "force_position")
 DYNAMICS_KEYS = ("delta", "crank_inertia", "flywheel")
 FLYWHEEL_KEYS = ("shape", "density", "width_ratio")
 FLYWHEEL_SHAPES = ("disk", "rim")
-GEARS_KEYS = ("z1", "z2", "module", "x1", "x2", "alpha_deg", "ha", "c")
+GEARS_KEYS = ("z1", "z2", "module", "x1", "x2", "alpha_deg", "ha", "c", "eps_min", "sa_min")
 PLANETARY_KEYS = ("scheme", "motor_rpm", "ratio", "tolerance", "satellites", "module")
 PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-row-int-int")
 
@@ -588,6 +588,8 @@ def _gears(value: Any, path: str) -> Gears:
         alpha_deg=t.get("alpha_deg", Number(gt=0, lt=45, unit="degrees"), 20.0),
         ha=t.get("ha", Number(gt=0, le=2), 1.0),
         c=t.get("c", Number(ge=0, le=1), 0.25),
+        eps_min=t.get("eps_min", Number(ge=1, le=2.5), Gears.eps_min),
+        sa_min=t.get("sa_min", Number(ge=0, le=1, unit="a share of the module"), Gears.sa_min),
     )
 
 
