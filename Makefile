@@ -5,12 +5,14 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
-	texlive-fonts-recommended latexmk fonts-liberation fonts-texgyre-math poppler-utils librecad xvfb xauth
+	texlive-fonts-recommended latexmk fonts-liberation fonts-texgyre-math poppler-utils librecad xvfb xauth \
+	fonts-osifont
 DEMO_OUT ?= demo
 
 .PHONY: demo test system venv bench clean
 
-# Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets.
+# Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets,
+# osifont (ISO 3098 lettering) for the sheets' previews.
 system:
 	@missing=""; for p in $(DEB_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \

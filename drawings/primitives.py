@@ -40,6 +40,13 @@ def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str
     return plain(value, decimals, strip=strip)
 
 
+def ratio_label(k: float) -> str:
+    """A scale as written on a drawing from ``k`` sheet mm per real mm: 0.4 → "1:2,5", 2 → "2:1"."""
+    if not (k > 0 and math.isfinite(k)):
+        raise ValueError(f"scale {k!r} is not a positive number")
+    return f"{significant(k, 4)}:1" if k >= 1 else f"1:{significant(1.0 / k, 4)}"
+
+
 def format_significant(value: float, digits: int = 3) -> str:
     """``value`` rounded to ``digits`` significant digits, decimal comma (``0,0123``, ``1230``)."""
     return significant(value, digits)

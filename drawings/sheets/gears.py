@@ -33,11 +33,12 @@ def draw(project, number: int, count: int) -> Sheet:
         pic = meshing_picture(pair, n_teeth=3)
         mesh_rect = Rect(left.x0, left.y1 - 415, left.x1, left.y1)
         scale = draw_meshing(sheet, pair, pic, mesh_rect)
+        sheet.set_scale(scale.label)                                   # the meshing, the main view
         slide_rect = Rect(left.x0, left.y0, left.x1, mesh_rect.y0 - 10)
         draw_sliding(sheet, pair, slide_rect, scale.factor)
     if task.planetary is not None and task.planetary.module is not None:
         stage = project.planetary
         region = right if task.gears is not None else Rect(left.x0, left.y0, right.x1, left.y1)
         draw_reducer(sheet, stage, Rect(region.x0, sheet.title_rect.y1 + 8, region.x1, region.y1))
-    # the views have different scales, each written in its caption: «Масштаб» stays blank (ГОСТ 2.104)
+    # «Масштаб»: the main view's scale (the meshing, else the reducer); each view's scale is in its title
     return sheet

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from drawings.primitives import format_number
+from drawings.primitives import format_number, ratio_label
 from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
@@ -126,6 +126,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     by_key = {gr.key: gr for gr in st.groups}
     where = f"положение {ks.position}, " if ks.position is not None else ""
     note = f"Положение силового расчёта: {where}φ1 = {format_number(ks.phi_deg, 2, strip=False)}°"
+    sheet.set_scale(ratio_label(1.0 / (1000.0 * g.length_scale)))       # the groups' schemes at μl
     pv = sheet.add_view("position", style.text_width(note, 5.0) + 4.0, 9.0, preferred="top-left")
     pv.text_mm((pv.rect.x0 + 2.0, pv.rect.y0 + 2.0), note, 5.0)
 
