@@ -101,7 +101,8 @@ class Balance:
 
     # ---- the solution ----------------------------------------------------------------------------
     def solve(self) -> "BalanceSolution":
-        """Partial sums of ``per_line`` terms (when longer), then ``U = −(Σ)/(s_u·l)``."""
+        """Partial sums of ``per_line`` terms (when longer; their total too when there are more than
+        ``per_line`` of them), then ``U = −(Σ)/(s_u·l)``."""
         items = self._items()
         parts: list[CalcRecord] = []
         final_items = items
@@ -116,6 +117,13 @@ class Balance:
                              meaning=self.partial_meaning)
                 parts.append(rec)
                 final_items.append((f"+ S{n}", {f"S{n}": rec}))
+        if len(final_items) > self.per_line:
+            # many partial sums: their total first (a sum wraps over lines; a long fraction cannot)
+            expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()
+            named = {k: v for _, d in final_items for k, v in d.items()}
+            total = record(self.partial, expr, self.partial_unit, **named, meaning=self.partial_meaning)
+            parts.append(total)
+            final_items = [("+ T", {"T": total})]
         expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()
         named = {k: v for _, d in final_items for k, v in d.items()}
         if not expr:
