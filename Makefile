@@ -9,7 +9,7 @@ DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
 	fonts-osifont
 DEMO_OUT ?= demo
 
-.PHONY: demo test system venv bench clean
+.PHONY: demo test system venv bench clean review
 
 # Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets,
 # osifont (ISO 3098 lettering) for the sheets' previews.
@@ -40,6 +40,23 @@ demo: system venv
 # The whole test suite (what CI runs).
 test: system venv
 	$(PY) -m pytest -n 2 -p no:cacheprovider tests
+
+# Every example's note pages (60 dpi) and sheet previews as PNG in one folder, for a human to look
+# through (not part of CI): $(REVIEW_OUT)/<example>-page-NN.png, <example>-sheetN-….png; the builds
+# themselves go to a fresh temporary folder that is removed afterwards.
+REVIEW_OUT ?= review
+REVIEW_DPI ?= 60
+review: system venv
+	@mkdir -p $(REVIEW_OUT); tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	for task in examples/*/task.toml; do \
+	  ex=$$(basename $$(dirname $$task)); \
+	  echo "== $$ex"; \
+	  $(VENV)/bin/reportgen build $$task -o "$$tmp/$$ex" > "$$tmp/$$ex.log" 2>&1 \
+	    || { echo "build of $$ex failed:"; tail -20 "$$tmp/$$ex.log"; continue; }; \
+	  pdftoppm -png -r $(REVIEW_DPI) "$$tmp/$$ex/report.pdf" "$(REVIEW_OUT)/$$ex-page"; \
+	  for png in "$$tmp/$$ex"/sheets/*.png; do cp "$$png" "$(REVIEW_OUT)/$$ex-$$(basename $$png)"; done; \
+	done; \
+	echo "look through $(REVIEW_OUT)/ ($$(ls $(REVIEW_OUT) | wc -l) images)"
 
 bench: venv
 	$(VENV)/bin/reportgen bench

@@ -23,6 +23,7 @@ class Document:
     author: str = ""
     group: str = ""
     supervisor: str = ""
+    university: str = ""          # the title page's institution (above the department)
     organization: str = ""
     city: str = ""
     year: int | None = None

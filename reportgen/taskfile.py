@@ -33,7 +33,8 @@ MAX_LENGTH = 1000.0
 COLLINEAR_RTOL = 1e-9
 
 TOP_KEYS = ("document", "mechanism", "analysis", "dynamics", "gears", "planetary")
-DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "organization", "city", "year", "language")
+DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "university", "organization", "city", "year",
+                 "language")
 MECHANISM_KEYS = ("name", "g", "ground", "points", "link", "slide", "drive", "mass_rules", "load")
 LINK_KEYS = ("id", "kind", "points", "length", "lengths", "mass", "inertia", "com")
 SLIDE_KEYS = ("link", "point", "guide", "line", "along")
@@ -129,6 +130,7 @@ def _document(value: Any, path: str) -> Document:
         author=t.get("author", Str(), d.author),
         group=t.get("group", Str(), d.group),
         supervisor=t.get("supervisor", Str(), d.supervisor),
+        university=t.get("university", Str(), d.university),
         organization=t.get("organization", Str(), d.organization),
         city=t.get("city", Str(), d.city),
         year=t.get("year", Int(ge=1000, le=9999, what="a year: an integer"), d.year),

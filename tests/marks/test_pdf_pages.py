@@ -26,6 +26,7 @@ PAGE_H = 297.0
 TEXT = (30.0, 195.0, 20.0, 270.0)   # x from, x to, y from the top, y to (mm): preamble's geometry
 DEPTH = 3.5                          # the last line's descenders and subscripts below the block, mm
 STAMP = (20.0, 205.0, 277.0, 292.0)  # the title block (form 2a) inside the frame
+STAMP_FORM2 = (20.0, 205.0, 252.0, 292.0)  # form 2 on the first sheet of the text (the contents)
 SLACK = 0.5
 
 
@@ -71,10 +72,11 @@ def test_no_glyph_outside_the_text_block(example, built):
     for n, page in enumerate(html.split("<page ")[1:], 1):
         if n == 1:
             continue                  # the title page has its own layout (ГОСТ 7.32: no frame)
+        box = STAMP_FORM2 if ">Разраб.<" in page else STAMP
         for m in re.finditer(r'xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)<', page):
             a, b, c, d = (float(v) * MM_PER_PT for v in m.groups()[:4])
             inside = a >= x0 - 1 and c <= x1 + 1 and b >= y0 - 1 and d <= y1 + DEPTH
-            stamp = a >= STAMP[0] and c <= STAMP[1] and b >= STAMP[2] and d <= STAMP[3]
+            stamp = a >= box[0] and c <= box[1] and b >= box[2] and d <= box[3]
             if not inside and not stamp:
                 bad.append((n, m.group(5), round(a), round(b)))
     assert not bad, bad[:20]
@@ -87,3 +89,21 @@ def test_no_residue_in_the_pdf_text(example, built):
         assert residue not in text, residue
     tiny = [m.group(0) for m in re.finditer(r"\d\s*[·⋅]\s*10\s*[−-]\s*(\d+)", text) if int(m.group(1)) >= 9]
     assert not tiny, tiny
+
+
+@pytest.mark.parametrize("example", ["press", "conveyor"])
+def test_front_matter(example, built):
+    """Title page with the university; form 2 (ГОСТ 2.104) on the first sheet of the text, the contents;
+    an introduction that says what the machine does and cites the references."""
+    out = built(example)
+    pages = _pdftext(out / "report.pdf").split("\f")
+    if example == "press":
+        assert "Технический университет" in pages[0]
+    first = next(i for i, p in enumerate(pages) if "СОДЕРЖАНИЕ" in p)
+    assert "Разраб." in pages[first] and "Листов" in pages[first] and "Утв." in pages[first]
+    assert all("Разраб." not in p for p in pages[first + 1:])
+    intro = next(p for p in pages if "ВВЕДЕНИЕ" in p and "СОДЕРЖАНИЕ" not in p)
+    intro = " ".join(re.sub(r"-\s*\n\s*", "", intro).split())      # hyphenation and line breaks undone
+    assert "Механизм преобразует" in intro and "[1, 2]" in intro and "[3]" in intro
+    if example == "conveyor":
+        assert "зубчат" not in intro            # no [gears] in this task
