@@ -117,6 +117,35 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str], list[str]]
     return out, idle, still
 
 
+def angle_table(project) -> tuple[list, list]:
+    """The force–velocity angles α_i of every load in every position of the analysis (as the course
+    tabulates them for M_пр), with M_пр: the header (LaTeX) and the rows. A load whose point does not
+    move or that does not act in a position shows «---»; one perpendicular to its velocity 90°."""
+    columns: list[str] = []
+    per_position = []
+    w1 = abs(float(project.linkage.omega))
+    for j in range(len(project.phi)):
+        terms, idle, still = power_terms(project, j)
+        angles: dict[str, float | None] = {}
+        for t in terms:
+            alpha = next((v for v in t.record.variables if v.name.startswith("a")), None)
+            if alpha is not None:                         # a force (a couple has no angle)
+                angles[_sub(t.name)] = alpha.value
+        angles.update({x: 90.0 for x in idle})
+        angles.update({x: None for x in still})
+        columns += [x for x in angles if x not in columns]
+        total = sum(t.record.value for t in terms)
+        per_position.append((j, math.degrees(float(project.phi[j])) % 360.0, angles, total / w1))
+    header = [Markup("№"), Markup("$\\varphi_1$, \\textdegree")]
+    header += [Markup(f"$\\alpha_{{{c}}}$, \\textdegree") for c in columns]
+    header.append(Markup("$M_\\text{пр}$, Н$\\cdot$м"))
+    rows = []
+    for j, phi, angles, M in per_position:
+        cells = [angles.get(c) for c in columns]
+        rows.append([j, phi] + [Markup("---") if a is None else a for a in cells] + [M])
+    return header, rows
+
+
 def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, CalcRecord]:
     """ΣP of the loads and M_red = ΣP / ω1 for the analysed position."""
     named = {f"P{j}": t.record for j, t in enumerate(terms)}
@@ -389,6 +418,7 @@ def content(project) -> PartContent:
         "index_K": labels[res.graphical.index_K], "index_L": labels[res.graphical.index_L],
         "theta_K": math.degrees(res.exact.theta_K), "theta_L": math.degrees(res.exact.theta_L),
         "J_zero": res.exact.J_fly <= 0,
+        "angles": angle_table(project),
     }
     strings = Strings(project.task.document.language or "ru")
     concl = [strings.get("findings_dynamics.flywheel").format(
