@@ -203,6 +203,7 @@ def content(project) -> PartContent:
                            "rec": rec, "terms": terms, "through": [Markup(f"${sym(x)}$") for x in through],
                            "negative": rec.value < 0, "exact": sp.tau, "dev": sp.deviation_percent,
                            "balance": sol})
+        slot = _slot_step(ks, grp, gg, counter, mu_l, read_mags) if gg.method == "exact-read" else None
         reads = _read_records(gg.polygon, mu_f)
         for v in list(gg.polygon.vectors) + list(gg.polygon.extra):
             c = _canon(v.name)
@@ -212,7 +213,7 @@ def content(project) -> PartContent:
                            "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
                            "rows": _polygon_rows(gg.polygon), "reads": reads,
                            "unknown": [Markup(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
-                           "mu_tr": ks.transmission_deg.get(gg.key)})
+                           "mu_tr": ks.transmission_deg.get(gg.key), "slot": slot})
     crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
     lever_ctx = _lever(project, ks, counter, figures)
     comparison = _comparison(ks, crank_ctx, lever_ctx)
@@ -238,6 +239,68 @@ def _width(fig) -> str:
 def _pair_letter(r, sp, key: str) -> str:
     """The letter of the outer pair of a split (its joint)."""
     return next(p.joint for p in r.pairs if p.group == key and p.external and sp.link in (p.lo, p.hi))
+
+
+def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> dict | None:
+    """The course's graphical step for a group of a block sliding in a slotted link pivoted at the
+    frame (RPR): the block's reaction on the slotted link is perpendicular to the slot (no friction)
+    and acts at the block's point, so ΣM_C(slotted link) = 0 gives it; the polygon follows."""
+    from reportgen.kinetostatics.graphical import measure
+    r = ks.reactions
+    frame = [p for p in r.pairs if p.group == gg.key and p.external and 0 in (p.lo, p.hi) and p.kind == "R"]
+    inner = [p for p in r.pairs if p.group == gg.key and not p.external and p.kind == "P"]
+    if len(frame) != 1 or len(inner) != 1 or len(grp.links) != 2:
+        return None
+    k3 = frame[0].other(0)
+    P = inner[0]
+    if k3 not in (P.lo, P.hi):
+        return None
+    k2 = P.other(k3)
+    C, A, n = frame[0].point[0], P.point[0], np.asarray(P.normal[0], float)
+    step = ks.graphical.arm_reading_mm
+    mu = mu_l.value
+    repl = {x.link: x for x in ks.graphical.inertia}
+    arrows: list = []
+    couples: list = []
+    _loads_on(ks, (k3,), repl, arrows, couples)
+    own = {p.name for p in r.pairs if p.group == gg.key}
+    for p in r.pairs_of(k3):                                # reactions found on the previous steps
+        j = p.other(k3)
+        if p.name not in own and j not in grp.links:
+            arrows.append({"point": p.point[0], "vector": p.on(k3)[0], "name": pair_name(j, k3), "read": True})
+    terms, arms, through = [], [], []
+    for a in arrows:
+        F = np.asarray(a["vector"], float)
+        c = _canon(a["name"]) if a.get("read") else None
+        mag = read_mags.get(c, float(np.hypot(*F))) if c else float(np.hypot(*F))
+        rr = np.asarray(a["point"], float) - C
+        mom = float(rr[0] * F[1] - rr[1] * F[0])
+        arm_mm = measure(abs(mom) / mag / mu, step) if mag > 0 else 0.0
+        if arm_mm == 0.0:
+            through.append(Markup(f"${sym(a['name'])}$"))
+            continue
+        nmb = counter.next()
+        s = sym(a["name"])
+        terms.append(BalanceTerm(1 if mom > 0 else -1, Var("F", s, mag, "Н", _meaning(a["name"], bool(c))),
+                                 Var("h", f"h_{{{nmb}}}", arm_mm, "мм",
+                                     Markup(f"плечо силы ${s}$ относительно точки ${frame[0].joint}$, измеренное на схеме"))))
+        arms.append(nmb)
+    extra = tuple(BalanceTerm(1 if cp["value"] >= 0 else -1,
+                              Var("M", sym(cp["name"]), abs(cp["value"]), "Н·м",
+                                  f"момент, приложенный к звену {k3}"), divisor=mu_l) for cp in couples)
+    lever = float((A - C)[0] * n[1] - (A - C)[1] * n[0])    # moment of a unit force along n at A about C
+    d = n if lever > 0 else -n                              # the positive sense: a counter-clockwise moment
+    arm = Var("l", f"{frame[0].joint}{P.joint}", measure(abs(lever) / mu, step), "мм",
+              f"плечо реакции относительно точки {frame[0].joint} (длина {frame[0].joint}{P.joint} на схеме)")
+    name = pair_name(k2, k3)
+    sol = Balance(f"\\sum M_{{{frame[0].joint}}}^{{({k3})}}", sym(name), "Н", 1, arm,
+                  tuple(terms) + extra, Markup(f"реакция ${sym(name)}$, перпендикулярная кулисе"),
+                  partial=f"\\Sigma^{{({k3})}}", partial_unit="Н·мм", partial_meaning="частичная сумма моментов",
+                  per_line=TERMS_PER_RECORD).solve()
+    exact = float(np.asarray(P.on(k3)[0]) @ d)
+    return {"balance": sol, "parts": list(sol.parts), "rec": sol.result, "exact": exact, "name": Markup(f"${sym(name)}$"),
+            "slot_link": k3, "block": k2, "C": frame[0].joint, "A": P.joint, "through": through,
+            "negative": sol.value < 0}
 
 
 def _loads_section(project, ks, mu_l: Var) -> dict:
