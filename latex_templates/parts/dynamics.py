@@ -18,7 +18,7 @@ import numpy as np
 from markupsafe import Markup
 
 from reportgen.calc import CalcRecord, Var, record
-from reportgen.numbers import clean_array
+from reportgen.numbers import ANGLE_DECIMALS, clean_array
 
 from . import PartContent
 
@@ -99,7 +99,8 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str], list[str]]
         Fv = Var(f"F{j}", sym, F, "Н", kind)
         Vv = Var(f"V{j}", vsym, V, "м/с", f"скорость точки {where}" if not where.startswith("S")
                  else f"скорость центра масс звена {f.link}")
-        av = Var(f"a{j}", rf"\alpha_{{{sym}}}", alpha, "°",
+        # the angle as the course measures it, to 0,01° (the power follows from the printed angle)
+        av = Var(f"a{j}", rf"\alpha_{{{sym}}}", round(alpha, ANGLE_DECIMALS), "°",
                  Markup(f"угол между силой ${sym}$ и скоростью ${vsym}$"))
         rec = record(f"P_{{{sym}}}", f"F{j} * V{j} * cos(radians(a{j}))", "Вт", Fv, Vv, av,
                      meaning=Markup(f"мощность силы ${sym}$"))
