@@ -9,7 +9,7 @@ DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
 	fonts-osifont
 DEMO_OUT ?= demo
 
-.PHONY: demo test system venv bench clean review
+.PHONY: demo test check generated system venv bench clean review
 
 # Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets,
 # osifont (ISO 3098 lettering) for the sheets' previews.
@@ -40,6 +40,11 @@ demo: system venv
 # The whole test suite (what CI runs).
 test: system venv
 	$(PY) -m pytest -n 2 -p no:cacheprovider tests
+
+# Files written from reportgen/taskspec.py and examples/: docs/task-format.md, the JSON Schema
+# examples/task.schema.json and the package's copy of the examples (reportgen/examples/).
+generated: venv
+	$(PY) -m reportgen.taskdoc
 
 # Every example's note pages (60 dpi) and sheet previews as PNG in one folder, for a human to look
 # through (not part of CI): $(REVIEW_OUT)/<example>-page-NN.png, <example>-sheetN-….png; the builds

@@ -15,7 +15,7 @@ import shapely
 from shapely.geometry import box
 from shapely.geometry.base import BaseGeometry
 
-from reportgen.errors import BuildError
+from reportgen.errors import BuildError, GeometryError, ParameterError
 
 Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right", "center"]
 CORNERS: tuple[str, ...] = ("top-left", "top-right", "bottom-left", "bottom-right", "center")
@@ -31,7 +31,7 @@ class Rect:
 
     def __post_init__(self) -> None:
         if not (self.x1 >= self.x0 and self.y1 >= self.y0):
-            raise ValueError(f"degenerate rectangle {self}")
+            raise GeometryError(f"rectangle {self}", "degenerate (x1 < x0 or y1 < y0)")
 
     @classmethod
     def from_size(cls, x0: float, y0: float, width: float, height: float) -> "Rect":
@@ -107,7 +107,7 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
     out: list[Rect] = []
     for req in requests:
         if req.preferred not in CORNERS:
-            raise ValueError(f"preferred must be one of {CORNERS}, not {req.preferred!r}")
+            raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
         tx, ty = _corner_target(region, req.preferred)
         best: tuple[float, Rect] | None = None
         for cx, cy in _candidates(region, done, req.width, req.height, gap):
@@ -179,7 +179,7 @@ def try_pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 
     eps = 1e-6
     for req in requests:
         if req.preferred not in CORNERS:
-            raise ValueError(f"preferred must be one of {CORNERS}, not {req.preferred!r}")
+            raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
         tx, ty = _corner_target(region, req.preferred)
         fx = {"top-left": 0.0, "bottom-left": 0.0, "top-right": 1.0, "bottom-right": 1.0}.get(req.preferred, 0.5)
         fy = {"top-left": 1.0, "top-right": 1.0, "bottom-left": 0.0, "bottom-right": 0.0}.get(req.preferred, 0.5)

@@ -21,6 +21,7 @@ from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
+from reportgen.errors import ParameterError
 from reportgen.numbers import plain, significant
 
 from . import style
@@ -37,13 +38,15 @@ def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str
     ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept. The
     rounding is the note's (:func:`reportgen.numbers.plain`).
     """
+    if not math.isfinite(value):
+        raise ParameterError("value", value, "a finite number to print")
     return plain(value, decimals, strip=strip)
 
 
 def ratio_label(k: float) -> str:
     """A scale as written on a drawing from ``k`` sheet mm per real mm: 0.4 → "1:2,5", 2 → "2:1"."""
     if not (k > 0 and math.isfinite(k)):
-        raise ValueError(f"scale {k!r} is not a positive number")
+        raise ParameterError("scale", k, "a positive number (sheet mm per real mm)")
     return f"{significant(k, 4)}:1" if k >= 1 else f"1:{significant(1.0 / k, 4)}"
 
 
@@ -68,7 +71,7 @@ class Transform:
 
     def __post_init__(self) -> None:
         if not (self.scale > 0 and math.isfinite(self.scale)):
-            raise ValueError(f"scale must be positive and finite, not {self.scale!r}")
+            raise ParameterError("scale", self.scale, "a positive finite number")
 
     def __call__(self, p: Sequence[float]) -> Vec:
         return (self.at[0] + self.scale * (float(p[0]) - self.origin[0]),
@@ -169,7 +172,7 @@ class Canvas:
     # -- plain geometry ------------------------------------------------------------------------
     def _attrs(self, layer: str) -> dict:
         if layer not in style.LAYER_NAMES:
-            raise ValueError(f"unknown layer {layer!r}; use one of {style.LAYER_NAMES}")
+            raise ParameterError("layer", layer, f"one of {style.LAYER_NAMES}")
         return {"layer": layer}
 
     def _sheet_polyline(self, pts: Sequence[Vec], layer: str, closed: bool = False) -> None:
@@ -244,7 +247,7 @@ class Canvas:
             for part in geom.geoms:
                 self.geometry(part, layer)
         else:  # pragma: no cover - shapely has no other kinds
-            raise TypeError(f"cannot draw {kind}")
+            raise ParameterError("geometry", kind, "a shapely geometry")
 
     # -- text ----------------------------------------------------------------------------------
     def text_mm(self, pos: Vec, text: str, height: float = 3.5, align: str = "bottom-left",

@@ -21,6 +21,7 @@ from shapely.geometry import Polygon, box
 from . import style
 from .layout import Overlap, Rect, Request, find_overlaps, pack
 from .primitives import _ALIGN, _ALIGN_NAMES, Annotations, Canvas, Transform
+from reportgen.errors import InternalError, ParameterError
 
 # ---------------------------------------------------------------------------------------------
 # formats and the title block grid
@@ -95,7 +96,7 @@ class TitleBlock:
 
     def __post_init__(self) -> None:
         if not (1 <= self.number <= self.count):
-            raise ValueError(f"sheet number {self.number} must be in 1…{self.count}")
+            raise ParameterError("sheet number", self.number, f"1…{self.count}")
 
     @classmethod
     def from_document(cls, document: Any, *, title: str, code: str, number: int = 1,
@@ -229,7 +230,7 @@ class Sheet:
         """Reserve ``width`` × ``height`` mm, packed near ``preferred``; model ``origin`` maps to
         the view's lower-left corner, ``scale`` sheet mm per model unit."""
         if name in self.views:
-            raise ValueError(f"a view named {name!r} is already on the sheet")
+            raise InternalError("sheet", f"a view named {name!r} is already on it")
         placed = [v.rect for v in self.views.values()]
         rect = pack(self.free_region, [Request(name, width, height, preferred)], gap=gap,
                     placed=placed)[0]
@@ -283,6 +284,7 @@ class Sheet:
     def save(self, path: str | os.PathLike[str]) -> Drawing:
         """Write the DXF (reproducibly: fixed dates and GUIDs) and return the document."""
         with style.reproducible():
+            style.fix_classes_order(self.doc)
             self.doc.saveas(os.fspath(path))
         return self.doc
 

@@ -144,6 +144,29 @@ def reproducible() -> Iterator[None]:
         ezdxf.options.write_fixed_meta_data_for_testing = old
 
 
+def fix_classes_order(doc: Drawing) -> None:
+    """Register the CLASSES section's entries in a fixed order before the document is written.
+
+    ezdxf adds one class per entity type in use while saving, iterating a set of type names, so
+    the section's order (and the file's bytes) followed PYTHONHASHSEED. Registered here first —
+    ezdxf's required classes, then the rest sorted by name — saving finds them all present.
+    """
+    doc.commit_pending_changes()
+    doc.classes.add_required_classes(doc.dxfversion)
+    classes = doc.classes.classes
+    names = _required_class_names(doc.dxfversion)
+    required = sorted((k for k in classes if k[0] in names), key=lambda k: (names.index(k[0]), k))
+    rest = sorted(k for k in classes if k[0] not in names)
+    ordered = {k: classes[k] for k in required + rest}
+    classes.clear()
+    classes.update(ordered)
+
+
+def _required_class_names(dxfversion: str) -> list[str]:
+    from ezdxf.sections.classes import REQ_R2004, REQUIRED_CLASSES
+    return list(REQUIRED_CLASSES.get(dxfversion, REQ_R2004))
+
+
 def new_document(paper_width: float, paper_height: float) -> Drawing:
     """A new R2013 document in mm with the sheet's layers, line types, text and dimension styles."""
     with reproducible():

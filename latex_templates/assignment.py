@@ -65,52 +65,52 @@ def assignment_section(project) -> Section:
 
 def introduction_paragraphs(project, left_out) -> list:
     """Paragraphs about this task, from the strings catalogue (``intro.*``)."""
-    from markupsafe import Markup
+    from .render import Tex
     from .numbers import num
     strings = Strings(_lang(project))
     task = project.task
     out = []
     if task.mechanism is not None:
         mech = task.mechanism
-        name = mech.name.lower() if mech.name else strings.get("intro.default_name")
+        name = _in_sentence(mech.name) if mech.name else strings.get("intro.default_name")
         text = strings.get("intro.object").format(
-            name=name, link=mech.drive.link, omega=Markup(num(abs(mech.drive.omega))),
+            name=name, link=mech.drive.link, omega=Tex(num(abs(mech.drive.omega))),
             sense=strings.get("intro.ccw" if mech.drive.omega > 0 else "intro.cw"))
         st = project.strokes
         if st is not None:
             key = "intro.output_slider" if st.output.kind == "slider" else "intro.output_rocker"
-            text = Markup(text + " ") + strings.get(key).format(
-                link=st.output.link, work=Markup(num(st.working_deg)), idle=Markup(num(st.idle_deg)))
-            text = Markup(text + " ") + _machine(project, strings)
+            text = Tex(text + " ") + strings.get(key).format(
+                link=st.output.link, work=Tex(num(st.working_deg)), idle=Tex(num(st.idle_deg)))
+            text = Tex(text + " ") + _machine(project, strings)
         out.append(text)
     out += _work_paragraphs(project, strings)
     if left_out:
-        out.append(strings.get("sections.left_out") + Markup(" ") + Markup("; ").join(left_out) + Markup("."))
+        out.append(strings.get("sections.left_out") + Tex(" ") + Tex("; ").join(left_out) + Tex("."))
     return out
 
 
 def _machine(project, strings):
     """What this machine does: the motion it makes and the resistance it works against."""
-    from markupsafe import Markup
+    from .render import Tex
     from .numbers import num
     st, mech = project.strokes, project.task.mechanism
     slider = st.output.kind == "slider"
     H = st.stroke * 1000.0 if slider else math.degrees(st.stroke)
     text = strings.get("marks.intro.machine_slider" if slider else "marks.intro.machine_rocker").format(
-        crank=mech.drive.link, link=st.output.link, H=Markup(num(abs(H))))
+        crank=mech.drive.link, link=st.output.link, H=Tex(num(abs(H))))
     for ld in mech.loads:
         if ld.kind == "resistance" and ld.link == st.output.link:
             if ld.force is not None:
-                text = Markup(text + " ") + strings.get("marks.intro.load_force").format(F=Markup(num(ld.force)))
+                text = Tex(text + " ") + strings.get("marks.intro.load_force").format(F=Tex(num(ld.force)))
             elif ld.moment is not None:
-                text = Markup(text + " ") + strings.get("marks.intro.load_moment").format(M=Markup(num(ld.moment)))
+                text = Tex(text + " ") + strings.get("marks.intro.load_moment").format(M=Tex(num(ld.moment)))
             break
     return text
 
 
 def _work_paragraphs(project, strings) -> list:
     """What the project does (by the sections the task feeds), citing the references."""
-    from markupsafe import Markup
+    from .render import Tex
     task = project.task
     keys = []
     if task.mechanism is not None:
@@ -124,5 +124,13 @@ def _work_paragraphs(project, strings) -> list:
     if not keys:
         return []
     names = [strings.get(f"marks.intro.{k}") for k in keys]
-    parts = names[0] if len(names) == 1 else Markup(", ").join(names[:-1]) + Markup(" и~") + names[-1]
+    parts = names[0] if len(names) == 1 else Tex(", ").join(names[:-1]) + Tex(" и~") + names[-1]
     return [strings.get("marks.intro.work").format(parts=parts), strings.get("marks.intro.layout").format()]
+
+
+def _in_sentence(name: str) -> str:
+    """A name inside a sentence: its first letter lowered unless the first word is an abbreviation (КШМ)."""
+    first = name.split(" ", 1)[0]
+    if len(first) > 1 and first[1:2].isupper():
+        return name
+    return name[:1].lower() + name[1:]

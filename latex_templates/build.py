@@ -46,6 +46,67 @@ def build_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
 
     ``strict_references``: unresolved references or citations are an error (else a warning).
     """
+    return start_pdf(tex_path, latexmk=latexmk, strict_references=strict_references,
+                     source_date_epoch=source_date_epoch).wait()
+
+
+class PendingPdf:
+    """latexmk running in the background (started by :func:`start_pdf`); :meth:`wait` joins it and
+    checks the result as :func:`build_pdf` does. Python may draw other outputs meanwhile."""
+
+    def __init__(self, tex: Path, proc: subprocess.Popen, strict_references: bool) -> None:
+        self.tex = tex
+        self.proc = proc
+        self.strict_references = strict_references
+        self.started = time.perf_counter()
+        self._report: BuildReport | None = None
+
+    def cancel(self) -> None:
+        """Stop latexmk (and its xelatex) when the build fails elsewhere."""
+        if self.proc.poll() is None:
+            try:
+                os.killpg(self.proc.pid, 15)
+            except (ProcessLookupError, PermissionError):
+                pass
+            self.proc.wait()
+
+    def wait(self) -> BuildReport:
+        if self._report is not None:
+            return self._report
+        try:
+            out, err = self.proc.communicate()
+        except BaseException:
+            self.cancel()
+            raise
+        seconds = time.perf_counter() - self.started
+        tex, work = self.tex, self.tex.parent
+        build_dir = work / BUILD_DIR
+        log = build_dir / (tex.stem + ".log")
+        log_text = log.read_text(encoding="utf-8", errors="replace") if log.is_file() else ""
+        built = build_dir / (tex.stem + ".pdf")
+        if self.proc.returncode != 0 or not built.is_file():
+            excerpt = error_excerpt(log_text) or ((out or "") + (err or ""))[-2000:]
+            raise BuildError(STAGE, f"xelatex stopped on an error:\n{excerpt}",
+                             kept=f"the LaTeX source {tex} and the log {log}")
+        undefined = sorted(set(m.group(0).strip() for m in _UNDEFINED_RE.finditer(log_text)))
+        warnings = [m.group(0).strip() for m in _MISSING_CHAR_RE.finditer(log_text)]
+        if undefined and self.strict_references:
+            raise BuildError(STAGE, "unresolved references:\n" + "\n".join(undefined),
+                             kept=f"the LaTeX source {tex}, the PDF {built} and the log {log}")
+        warnings += undefined
+        pdf = work / (tex.stem + ".pdf")
+        shutil.copyfile(built, pdf)
+        self._report = BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings))
+        return self._report
+
+
+def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_references: bool = True,
+              source_date_epoch: str | None = None) -> PendingPdf:
+    """Start compiling ``tex_path`` (latexmk + xelatex, in its own process group) and return at once.
+
+    An existing ``latex-build/`` beside the .tex (aux, toc, fdb of an earlier build of the same note)
+    is reused: latexmk then runs only the passes the changes need.
+    """
     tex = Path(tex_path).resolve()
     work = tex.parent
     exe = shutil.which(latexmk)
@@ -55,32 +116,67 @@ def build_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
                                 f"{APT_INSTALL}", kept=f"the LaTeX source {tex}")
     build_dir = work / BUILD_DIR
     build_dir.mkdir(exist_ok=True)
+    if not (build_dir / (tex.stem + ".aux")).exists():
+        toc = provisional_toc(tex.read_text(encoding="utf-8"))
+        if toc.strip():
+            (build_dir / (tex.stem + ".toc")).write_text(toc, encoding="utf-8")
     env = dict(os.environ)
     env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH",
                                                              DEFAULT_SOURCE_DATE_EPOCH)
     env["FORCE_SOURCE_DATE"] = "1"
     cmd = [exe, "-xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
            f"-outdir={BUILD_DIR}", tex.name]
-    start = time.perf_counter()
-    proc = subprocess.run(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL,
-                          capture_output=True, text=True, errors="replace")
-    seconds = time.perf_counter() - start
-    log = build_dir / (tex.stem + ".log")
-    log_text = log.read_text(encoding="utf-8", errors="replace") if log.is_file() else ""
-    built = build_dir / (tex.stem + ".pdf")
-    if proc.returncode != 0 or not built.is_file():
-        excerpt = error_excerpt(log_text) or (proc.stdout + proc.stderr)[-2000:]
-        raise BuildError(STAGE, f"xelatex stopped on an error:\n{excerpt}",
-                         kept=f"the LaTeX source {tex} and the log {log}")
-    undefined = sorted(set(m.group(0).strip() for m in _UNDEFINED_RE.finditer(log_text)))
-    warnings = [m.group(0).strip() for m in _MISSING_CHAR_RE.finditer(log_text)]
-    if undefined and strict_references:
-        raise BuildError(STAGE, "unresolved references:\n" + "\n".join(undefined),
-                         kept=f"the LaTeX source {tex}, the PDF {built} and the log {log}")
-    warnings += undefined
-    pdf = work / (tex.stem + ".pdf")
-    shutil.copyfile(built, pdf)
-    return BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings))
+    proc = subprocess.Popen(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
+    return PendingPdf(tex, proc, strict_references)
+
+
+_HEADING_RE = re.compile(r"\\(notestructheading|section|subsection|subsubsection)\{")
+
+
+def provisional_toc(tex_text: str) -> str:
+    """A table of contents with the note's headings and placeholder page numbers, written before
+    the first xelatex pass of a cold build.
+
+    Without it the first pass typesets an empty contents page, every later page moves when the
+    contents appear, and latexmk needs three passes; with it the first pass already paginates
+    as the last one, so the second pass (page numbers filled in) is also the confirming one.
+    It is only a head start: latexmk still reruns until the auxiliary files stop changing, so
+    the PDF is the same whatever this guesses.
+    """
+    body = tex_text.split("\\begin{document}", 1)[-1]
+    counters = [0, 0, 0]
+    lines = []
+    for m in _HEADING_RE.finditer(body):
+        title = _braced(body, m.end() - 1)
+        if title is None:
+            continue
+        kind = m.group(1)
+        if kind == "notestructheading":
+            lines.append(f"\\contentsline {{section}}{{{title}}}{{0}}{{section*.0}}%")
+            continue
+        level = ("section", "subsection", "subsubsection").index(kind)
+        counters[level] += 1
+        counters[level + 1:] = [0] * (2 - level)
+        number = ".".join(str(c) for c in counters[:level + 1])
+        lines.append(f"\\contentsline {{{kind}}}{{\\numberline {{{number}}}{title}}}{{0}}{{{kind}.{number}}}%")
+    return "\n".join(lines) + "\n"
+
+
+def _braced(text: str, start: int) -> str | None:
+    """The contents of the brace group opening at ``text[start]`` (nested braces kept)."""
+    depth = 0
+    for i in range(start, min(len(text), start + 2000)):
+        c = text[i]
+        if c == "\\":
+            continue
+        if c == "{" and (i == 0 or text[i - 1] != "\\"):
+            depth += 1
+        elif c == "}" and text[i - 1] != "\\":
+            depth -= 1
+            if depth == 0:
+                return text[start + 1:i]
+    return None
 
 
 def error_excerpt(log_text: str, context_lines: int = 1) -> str:

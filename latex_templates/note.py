@@ -7,14 +7,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Mapping, Sequence
 
-from markupsafe import Markup
-
 from reportgen.balance import check_balance
 from reportgen.calc import CalcRecord, evaluate_displayed
+from reportgen.errors import InternalError, OptionError, ParameterError
 from reportgen.task import Document
 
 from .build import BuildReport, build_pdf
-from .render import LANGUAGES, Strings, SymbolTracker, make_environment
+from .render import LANGUAGES, Strings, SymbolTracker, Tex, make_environment
 
 FrameKind = Literal["none", "frame", "eskd"]
 _KEY_RE = re.compile(r"^[a-z0-9][a-z0-9-]*$")
@@ -46,16 +45,16 @@ class Section:
 
     def __post_init__(self) -> None:
         if not _KEY_RE.match(self.key):
-            raise ValueError(f"section key {self.key!r}: use lower-case letters, digits and '-'")
+            raise ParameterError("section key", self.key, "lower-case letters, digits and '-'")
         if (self.template is None) == (self.body is None):
-            raise ValueError(f"section {self.key!r}: give exactly one of template= or body=")
+            raise ParameterError(f"section {self.key!r}", "template and body", "exactly one of template= or body=")
 
 
 @dataclass(frozen=True)
 class _RenderedSection:
     key: str
     title: str
-    body: Markup
+    body: Tex
 
 
 class NoteBuilder:
@@ -76,9 +75,9 @@ from reportgen.task import Document
         self.document = document
         self.language = language or document.language or "ru"
         if self.language not in LANGUAGES:
-            raise ValueError(f"language {self.language!r}: expected one of {', '.join(LANGUAGES)}")
+            raise OptionError("language", f"{self.language!r} has no strings catalogue", "one of " + ", ".join(LANGUAGES))
         if frame not in ("none", "frame", "eskd"):
-            raise ValueError(f"frame {frame!r}: expected none, frame or eskd")
+            raise ParameterError("frame", frame, "none, frame or eskd")
         self.frame = frame
         self.designation = designation
         self.template_dirs = tuple(template_dirs)
@@ -100,7 +99,7 @@ from reportgen.task import Document
     def add_section(self, section: Section) -> None:
         """Append a numbered section (in the order of the note)."""
         if any(s.key == section.key for s in self.sections):
-            raise ValueError(f"section key {section.key!r} used twice")
+            raise ParameterError("section key", section.key, "a key not used twice in the note")
         self.sections.append(section)
 
     # ------------------------------------------------------------------ rendering
@@ -125,16 +124,16 @@ from reportgen.task import Document
             introduction=self.introduction, conclusions=self.conclusions,
             references=self.references, frame=self.frame, designation=self.designation,
             bottom_margin_mm=27 if self.frame == "eskd" else 20,
-            babel_languages=babel_languages, extra_preamble=Markup(self.extra_preamble))
+            babel_languages=babel_languages, extra_preamble=Tex(self.extra_preamble))
         bad = [r for r in self.symbols.records if not evaluate_displayed(r).ok]
         if bad:
-            raise ValueError("printed formulas do not reproduce their printed results: "
+            raise InternalError("note", "printed formulas do not reproduce their printed results: "
                              + "; ".join(f"{r.symbol} = {r.expr}" for r in bad))
         unbalanced = [b for b in self.symbols.balances if not check_balance(b).ok]
         if unbalanced:
-            raise ValueError("printed balance equations do not hold with their printed results: "
-                             + "; ".join(f"{b.equation_latex()} with {b.result.symbol} = "
-                                         f"{b.result.result_number_latex()}" for b in unbalanced))
+            raise InternalError("note", "printed balance equations do not hold with their printed results: "
+                                + "; ".join(f"{b.equation_latex()} with {b.result.symbol} = "
+                                            f"{b.result.result_number_latex()}" for b in unbalanced))
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")
         return tex_path
@@ -152,10 +151,10 @@ from reportgen.task import Document
         figures = {name: _place_figure(obj, out / "figures", f"{sec.key}-{name}", sec.key, name)
                    for name, obj in sec.figures.items()}
         if sec.body is not None:
-            body = Markup(sec.body)
+            body = Tex(sec.body)
         else:
             context = {**base, "figures": _Namespace(figures), "section": sec, **sec.context}
-            body = Markup(env.get_template(sec.template).render(context))
+            body = Tex(env.get_template(sec.template).render(context))
         return _RenderedSection(sec.key, sec.title, body)
 
 
@@ -200,7 +199,7 @@ def _place_figure(obj: Any, fig_dir: Path, stem: str, section_key: str, name: st
     else:
         src = Path(obj)
         if not src.is_file():
-            raise FileNotFoundError(f"figure {name!r} of section {section_key!r}: no file {src}")
+            raise InternalError(f"figure {name!r} of section {section_key!r}", f"no file {src}")
         target = fig_dir / f"{safe}{src.suffix.lower()}"
         shutil.copyfile(src, target)
     return FigureRef(path=f"figures/{target.name}", label=f"fig:{section_key}:{name}")

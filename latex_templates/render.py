@@ -28,11 +28,9 @@ from markupsafe import Markup
 
 from reportgen.balance import BalanceSolution
 from reportgen.calc import CalcRecord, Var, unit_latex
+from reportgen.errors import InternalError, OptionError
 
 from . import numbers
-
-Tex = Markup
-"""Trusted LaTeX source: printed as is by ``\\VAR{}``."""
 
 LANGUAGES = {"ru": "russian", "uk": "ukrainian", "en": "english"}
 FALLBACK_LANGUAGE = "ru"
@@ -40,37 +38,78 @@ FALLBACK_LANGUAGE = "ru"
 _SPECIALS = {
     "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
     "%": r"\%", "_": r"\_", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+    '"': r"\textquotedbl{}",  # babel's Russian/Ukrainian make " a shorthand ("--- , "< …)
+    "'": r"\textquotesingle{}", "`": r"\textasciigrave{}",  # else the font's mapping curls them
 }
+# TeX ligatures of the font mapping (-- --- `` '' ,, << >> !` ?`): broken with {} so text prints as typed
+_LIGATURE_RE = re.compile(r"([-,<>!?])(?=[-,<>]|\\textasciigrave)")
 _SPECIALS_RE = re.compile("|".join(re.escape(c) for c in _SPECIALS))
 
 
-def escape_latex(text: Any) -> Markup:
-    """Text that prints literally in LaTeX (every special character escaped); ``Tex`` passes."""
-    if isinstance(text, Markup):
+def _escape_text(text: str) -> str:
+    out = _SPECIALS_RE.sub(lambda m: _SPECIALS[m.group(0)], text)
+    return _LIGATURE_RE.sub(r"\1{}", out)
+
+
+class Tex(Markup):
+    """Trusted LaTeX source: printed as is by ``\\VAR{}``.
+
+    The one escaping type of the note. Whatever is combined with a ``Tex`` — ``+``, ``%``,
+    ``.format()``, ``.join()`` — is LaTeX-escaped unless it is already markup, so a fragment built in
+    Python from user text (a title, a mechanism name) prints that text literally. (Plain
+    ``markupsafe.Markup`` would escape for HTML: ``<`` → ``&lt;`` and ``%`` left as a TeX comment.)
+    """
+
+    __slots__ = ()
+
+    @classmethod
+    def escape(cls, s: Any) -> "Tex":  # type: ignore[override]
+        return escape_latex(s)
+
+
+def escape_latex(text: Any) -> Tex:
+    """Text that prints literally in LaTeX (every special character escaped); markup passes."""
+    if isinstance(text, Tex):
         return text
-    return Markup(_SPECIALS_RE.sub(lambda m: _SPECIALS[m.group(0)], str(text)))
+    if isinstance(text, Markup):
+        return Tex(str(text))
+    return Tex(_escape_text(str(text)))
 
 
-def tex(source: Any) -> Markup:
+def tex(source: Any) -> Tex:
     """Mark ``source`` as trusted LaTeX (printed without escaping)."""
-    return Markup(str(source))
+    return Tex(str(source))
+
+
+def _join(value: Iterable[Any], d: Any = "", attribute: Any = None) -> Tex:
+    """The ``join`` filter: items and separator escaped as text unless markup."""
+    items = [getattr(v, attribute) if attribute is not None else v for v in value]
+    return escape_latex(d).join(escape_latex(v) for v in items)
+
+
+def _replace(s: Any, old: str, new: str, count: int | None = None) -> Any:
+    """The ``replace`` filter: markup stays markup, text stays text (escaped when printed)."""
+    n = -1 if count is None else count
+    if isinstance(s, Markup):
+        return tex(str(s).replace(str(old), str(new), n))
+    return str(s).replace(str(old), str(new), n)
 
 
 def _finalize(value: Any) -> Any:
     """Applied to every ``\\VAR{}`` value before autoescape: escape text, format numbers."""
     if isinstance(value, Markup):
-        return value
+        return value if isinstance(value, Tex) else tex(value)
     if value is None:
         raise jinja2.UndefinedError("None printed into the note (give a value or test for it)")
     if isinstance(value, bool):
-        return Markup(str(value))
+        return Tex(str(value))
     if isinstance(value, (int, float)):
-        return Markup(numbers.num(value))
+        return Tex(numbers.num(value))
     return escape_latex(value)
 
 
 # --------------------------------------------------------------------------- strings catalogue
-class MissingString(KeyError):
+class MissingString(InternalError, KeyError):
     """A key the strings catalogue of a language does not have."""
 
 
@@ -83,7 +122,7 @@ class Strings:
 
     def __init__(self, language: str) -> None:
         if language not in LANGUAGES:
-            raise ValueError(f"language {language!r}: expected one of {', '.join(LANGUAGES)}")
+            raise OptionError("language", f"{language!r} has no strings catalogue", "one of " + ", ".join(LANGUAGES))
         self.language = language
         self._data = _load_strings(language)
         self._fallback = _load_strings(FALLBACK_LANGUAGE) if language != FALLBACK_LANGUAGE else {}
@@ -122,8 +161,8 @@ def _as_tex(found: Any, key: str, strings: Strings) -> Any:
     if isinstance(found, dict):
         return _StringTable(strings, key)
     if isinstance(found, list):
-        return [Markup(x) for x in found]
-    return Markup(found)
+        return [tex(x) for x in found]
+    return tex(found)
 
 
 def _lookup(data: Mapping[str, Any], key: str) -> Any:
@@ -167,7 +206,7 @@ def _merge_catalogue(into: dict[str, Any], data: Mapping[str, Any], source: str,
             if isinstance(into[key], dict) and isinstance(value, dict):
                 _merge_catalogue(into[key], value, source, dotted + ".")
                 continue
-            raise ValueError(f"strings catalogue: key {dotted!r} defined twice (again in {source})")
+            raise InternalError("strings catalogue", f"key {dotted!r} defined twice (again in {source})")
         into[key] = value
 
 
@@ -229,12 +268,12 @@ def visible_width(source: str) -> int:
 @dataclass(frozen=True)
 class CalcParts:
     """The LaTeX pieces of a record for the ``calc`` macro."""
-    symbol: Markup
-    symbolic: Markup | None      # None when it would repeat the substitution
-    substituted: Markup | None   # None when it would repeat the result
-    result: Markup
+    symbol: Tex
+    symbolic: Tex | None      # None when it would repeat the substitution
+    substituted: Tex | None   # None when it would repeat the result
+    result: Tex
     wide: bool
-    substituted_lines: tuple[Markup, ...] = ()   # the substitution broken at top-level + and −
+    substituted_lines: tuple[Tex, ...] = ()   # the substitution broken at top-level + and −
 
 
 #: A line of a split formula shows about this many characters (14 pt text on A4 with the frame).
@@ -285,33 +324,54 @@ def calc_parts(rec: CalcRecord) -> CalcParts:
     width = visible_width(" ".join([rec.symbol, symbolic if show_symbolic else "",
                                     substituted if show_substituted else "", rec.result_latex()]))
     wide = width > WIDE_FORMULA and show_symbolic and show_substituted
-    lines: tuple[Markup, ...] = ()
+    lines: tuple[Tex, ...] = ()
     if wide and visible_width(substituted) > LINE_WIDTH:
-        lines = tuple(Markup(p) for p in break_sum(substituted))
+        lines = tuple(Tex(p) for p in break_sum(substituted))
     return CalcParts(
-        symbol=Markup(rec.symbol),
-        symbolic=Markup(symbolic) if show_symbolic else None,
-        substituted=Markup(substituted) if show_substituted else None,
-        result=Markup(rec.result_latex()),
+        symbol=Tex(rec.symbol),
+        symbolic=Tex(symbolic) if show_symbolic else None,
+        substituted=Tex(substituted) if show_substituted else None,
+        result=Tex(rec.result_latex()),
         wide=wide,
         substituted_lines=lines if len(lines) > 1 else (),
     )
 
 
-def table_cell(value: Any, decimals: int | None = None) -> Markup:
+def table_cell(value: Any, decimals: int | None = None) -> Tex:
     """A table cell: a number with ``decimals`` fixed places (or 4 significant digits), else text."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         if decimals is not None:
-            return Markup(numbers.fixed(value, decimals))
-        return Markup(numbers.num(value))
+            return Tex(numbers.fixed(value, decimals))
+        return Tex(numbers.num(value))
     if value is None:
-        return Markup("")
+        return Tex("")
     return escape_latex(value)
 
 
-def unit_text(unit: str) -> Markup:
+def unit_text(unit: str) -> Tex:
     """A unit in running text (escaped)."""
     return escape_latex(unit)
+
+
+#: Letters that the math font (TeX Gyre Termes Math) does not have: Latin-1 letters with diacritics,
+#: Cyrillic (Russian, Ukrainian, Belarusian …). In math they print as the text font's italic.
+MATH_TEXT_LETTERS: tuple[str, ...] = tuple(
+    chr(c) for c in (*range(0x00C0, 0x0100), *range(0x0400, 0x0460), *range(0x0490, 0x04A0))
+    if chr(c).isalpha() and c not in (0x00D7, 0x00F7))
+
+
+def math_text_letters() -> str:
+    """The preamble's ``\\mathtextletter{А}…`` for every letter of :data:`MATH_TEXT_LETTERS`."""
+    return "".join(f"\\mathtextletter{{{ch}}}" for ch in MATH_TEXT_LETTERS)
+
+
+#: Characters the text font lacks that a point name may hold (subscript digits): DejaVu Serif prints them.
+FALLBACK_GLYPHS: tuple[str, ...] = tuple(chr(c) for c in range(0x2080, 0x208A))
+
+
+def fallback_glyph_classes() -> str:
+    """The preamble's ``\\XeTeXcharclass`₁=\\fallbackglyphclass`` lines."""
+    return "\n".join(f"\\XeTeXcharclass`{ch}=\\fallbackglyphclass" for ch in FALLBACK_GLYPHS)
 
 
 # --------------------------------------------------------------------------- environment
@@ -332,14 +392,16 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
         keep_trailing_newline=True,
     )
     env.filters.update(
-        num=lambda v, digits=4: Markup(numbers.num(v, digits)),
-        fixed=lambda v, decimals=2: Markup(numbers.fixed(v, decimals)),
-        deg=lambda v, decimals=1: Markup(numbers.deg(v, decimals)),
-        angle=lambda v, decimals=1: Markup(numbers.angle(v, decimals)),
-        mnum=lambda v, digits=4: Markup(numbers.mnum(v, digits)),
-        mfixed=lambda v, decimals=2: Markup(numbers.mfixed(v, decimals)),
+        num=lambda v, digits=4: Tex(numbers.num(v, digits)),
+        fixed=lambda v, decimals=2: Tex(numbers.fixed(v, decimals)),
+        deg=lambda v, decimals=1: Tex(numbers.deg(v, decimals)),
+        angle=lambda v, decimals=1: Tex(numbers.angle(v, decimals)),
+        mnum=lambda v, digits=4: Tex(numbers.mnum(v, digits)),
+        mfixed=lambda v, decimals=2: Tex(numbers.mfixed(v, decimals)),
         tex=tex, escape_latex=escape_latex, unit=unit_text,
-        unit_math=lambda u: Markup(unit_latex(u)),
+        e=escape_latex, escape=escape_latex, forceescape=escape_latex, join=_join, replace=_replace,
+        unit_math=lambda u: Tex(unit_latex(u)),
     )
-    env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell)
+    env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell, math_text_letters=math_text_letters,
+                       fallback_glyph_classes=fallback_glyph_classes)
     return env

@@ -34,6 +34,7 @@ from dataclasses import dataclass, field, replace
 from decimal import Decimal
 from typing import Callable, Mapping
 
+from .errors import InternalError, ParameterError
 from .numbers import decimal_text, significant_decimals
 
 __all__ = [
@@ -45,7 +46,7 @@ MAX_DIGITS = 15
 SMALL_NUMBER = 1e-3   # below this magnitude a number is shown as m·10^k
 
 
-class CalcExpressionError(ValueError):
+class CalcExpressionError(InternalError, ValueError):
     """An expression uses something a calculation record does not allow, or names no variable."""
 
 
@@ -90,7 +91,7 @@ def format_decimal(value: float, digits: int = 4, *, decimals: int | None = None
     ``trailing_zeros`` keeps them (``1{,}980``).
     """
     if not math.isfinite(value):
-        raise ValueError(f"cannot format {value!r}")
+        raise ParameterError("value", value, "a finite number to print")
     if decimals is None and value != 0 and abs(value) < SMALL_NUMBER:
         exponent = math.floor(math.log10(abs(value)))
         mantissa = value / 10.0 ** exponent
@@ -135,7 +136,7 @@ def parse_decimal(text: str) -> float:
     """Inverse of :func:`format_decimal` (math-mode form): ``-1\\,234{,}5`` → -1234.5."""
     m = _NUMBER_RE.match(text.strip())
     if not m:
-        raise ValueError(f"not a formatted number: {text!r}")
+        raise ParameterError("text", text, "a number as the note prints it, e.g. -1\\,234{,}5")
     mant = m.group("mant").replace("\\,", "").replace("{,}", ".")
     value = float(Decimal(mant))
     if m.group("exp") is not None:

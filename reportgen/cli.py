@@ -4,19 +4,24 @@ Each sub-command lives in ``reportgen/commands/<name>.py`` and provides ``regist
 which adds its parser and sets ``func(args) -> int``. The command modules are presentation: they may
 import ``latex_templates`` and ``drawings``; the solvers never import them.
 
-Exit status (RESULTS_FORMAT.md): 0 success, 2 bad input (the message names the key or option),
-1 a failed build stage.
+Exit status (RESULTS_FORMAT.md): 0 success, 2 bad input (a ``ReportgenInputError``: the message names
+the key or option), 1 a failed stage (any other ``ReportgenError``, or a bug: one line, never a
+traceback unless ``REPORTGEN_DEBUG`` is set).
 """
 from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
+import traceback
 
 from . import __version__
-from .errors import BuildError, ReportgenInputError
+from .errors import ReportgenError, ReportgenInputError
 
 # Sub-command modules, in the order `reportgen --help` lists them.
+DEBUG_ENV = "REPORTGEN_DEBUG"  # set to print the traceback of an internal error
+
 COMMANDS: tuple[str, ...] = ("build", "solve", "gear", "planetary", "bench")
 
 
@@ -49,11 +54,17 @@ def main(argv: list[str] | None = None) -> int:
     except ReportgenInputError as exc:
         print(f"reportgen {args.command}: error: {exc}", file=sys.stderr)
         return 2
-    except BuildError as exc:
+    except ReportgenError as exc:  # BuildError, InternalError, ComputationError …: a stage failed
         print(f"reportgen {args.command}: error: {exc}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         return 130
+    except Exception as exc:  # a bug: one line, the traceback only on request
+        if os.environ.get(DEBUG_ENV):
+            traceback.print_exc()
+        print(f"reportgen {args.command}: internal error: {type(exc).__name__}: {exc} (please report it "
+              f"with the task file; set {DEBUG_ENV}=1 to see where it happened)", file=sys.stderr)
+        return 1
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -18,6 +18,7 @@ import numpy as np
 from .kinematics.extremes import Output, Strokes, output_coordinate
 from .kinematics.solve import KinematicModel
 from .plans import MEASURE_MM, round_scale
+from .geometry import readonly as _ro
 
 #: Length of the crank-angle axis for one turn, mm (seed 000 uses 192–240 mm).
 AXIS_MM = 240.0
@@ -152,7 +153,3 @@ def _output_acc(model: KinematicModel, out: Output, q, qd, qdd) -> np.ndarray:
     return qdd[:, out.link, 2]
 
 
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a

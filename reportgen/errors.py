@@ -9,6 +9,9 @@ from __future__ import annotations
 class ReportgenError(Exception):
     """Base class of every error raised on purpose by reportgen."""
 
+    def __str__(self) -> str:  # the message as given, also for the KeyError subclasses
+        return BaseException.__str__(self)
+
 
 class ReportgenInputError(ReportgenError, ValueError):
     """Bad input: the task file, a command-line option, or a mechanism that cannot work."""
@@ -55,6 +58,23 @@ class OptionError(ReportgenInputError):
         if expected:
             msg += f" (expected {expected})"
         super().__init__(msg)
+
+
+class OutputFolderError(OptionError):
+    """``build`` refuses its output folder: ``folder`` as given, ``problem`` why, ``expected`` what to do.
+
+    Nothing is written or deleted when this is raised (see ``reportgen/commands/outdir.py``).
+    """
+
+    def __init__(self, option: str, folder, problem: str, expected: str | None = None) -> None:
+        self.folder = str(folder)
+        self.option = option
+        self.problem = problem
+        self.expected = expected
+        msg = f"{option} {self.folder}: refused, {problem}; nothing was written or deleted"
+        if expected:
+            msg += f". Use {expected}"
+        ReportgenInputError.__init__(self, msg)
 
 
 class StructureError(ReportgenInputError):
@@ -168,3 +188,64 @@ class PlanetarySynthesisError(ReportgenInputError):
             msg += "; no valid set found near it either"
         msg += " (expected a ratio this scheme can give, a larger tolerance or another scheme)"
         super().__init__(msg)
+
+
+# ------------------------------------------------------------------------------ not bad input
+# Everything below is exit status 1 (a stage failed); ``build`` keeps ``OUT.failed/`` for it.
+
+class InternalError(ReportgenError, RuntimeError):
+    """A check of reportgen's own consistency failed (a bug, not the task's fault).
+
+    ``what`` names the check, ``detail`` what was found. The message asks for a report.
+    """
+
+    def __init__(self, what: str, detail: str = "") -> None:
+        self.what = what
+        self.detail = detail
+        msg = f"{what}: {detail}" if detail else what
+        super().__init__(msg + " (an internal error of reportgen; please report it with the task file)")
+
+
+class ParameterError(InternalError, ValueError):
+    """A function got a parameter outside its range: ``name``, ``value`` and the ``expected`` range.
+
+    The loader validates the task first, so this is reached only by a caller's mistake.
+    """
+
+    def __init__(self, name: str, value: object, expected: str) -> None:
+        self.name = name
+        self.value = value
+        self.expected = expected
+        super().__init__(f"{name} = {value!r}", f"expected {expected}")
+
+
+class NameLookupError(InternalError, KeyError):
+    """A name (a link id, a point, a force, a gear quantity) that a result does not hold.
+
+    ``kind`` says what was looked up, ``name`` the name asked for, ``known`` the names there are.
+    """
+
+    def __init__(self, kind: str, name: object, known: tuple = ()) -> None:
+        self.kind = kind
+        self.name = name
+        self.known = tuple(known)
+        shown = ", ".join(map(str, self.known[:20])) + (" …" if len(self.known) > 20 else "")
+        super().__init__(f"no {kind} {name!r}", f"known: {shown}" if self.known else "")
+
+
+class ComputationError(ReportgenError, ArithmeticError):
+    """A numerical method failed: ``method`` names it, ``detail`` says how."""
+
+    def __init__(self, method: str, detail: str) -> None:
+        self.method = method
+        self.detail = detail
+        super().__init__(f"{method}: {detail}")
+
+
+class GeometryError(ReportgenError, ValueError):
+    """A geometric construction has no solution (a line that misses a circle …): ``what`` and ``detail``."""
+
+    def __init__(self, what: str, detail: str = "") -> None:
+        self.what = what
+        self.detail = detail
+        super().__init__(f"{what}: {detail}" if detail else what)

@@ -21,17 +21,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import TaskError
 from .kinematics import KinematicsResult
-from .kinematics.constraints import rot, world
+from .kinematics.constraints import world
 from .kinematics.extremes import Strokes
 from .linkage import Linkage
-from .task import Load, Mechanism
-
-
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
+from .task import Mechanism
+from .geometry import readonly as _ro
 
 
 @dataclass(frozen=True)
@@ -108,7 +104,7 @@ def resistance_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsRe
     q = np.asarray(kin.q)
     working = win.on_working(kin.phi)
     ends_q, _ = model.positions(np.array([strokes.phi_start, strokes.phi_end]))
-    for ld in mech.loads:
+    for i, ld in enumerate(mech.loads):
         if ld.kind != "resistance":
             continue
         x, kind = link_coordinate(linkage, ld.link, q)
@@ -132,7 +128,10 @@ def resistance_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsRe
             s = next(s for s in linkage.slides if s.link == ld.link and s.guide == 0) \
                 if kind == "slider" else None
             if s is None:
-                raise ValueError(f"the resistance force on link {ld.link} needs a slider on a frame guide")
+                raise TaskError(f"mechanism.load[{i}].force",
+                                f"a resistance force on link {ld.link}, which is not a slider on a frame guide",
+                                "a force on a slider that runs on a guide of the frame, or a moment "
+                                "(`moment = …`) on a rocker")
             u = np.asarray(s.line_dir)
             vec = (-(ld.force * mag * direction))[:, None] * u[None, :]
             pt = world(q, ld.link, s.point_local)

@@ -22,9 +22,11 @@ from typing import Mapping
 
 import numpy as np
 
+from .geometry import perp as _perp
 from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .structure import Group, Structure
+from .errors import NameLookupError
 
 #: Scale factors are 1, 2, 2.5, 4 or 5 × 10^k (so the crank's vector is 50–100 mm, unless another
 #: point's vector would then stand beyond ``PLAN_MAX_MM``).
@@ -101,11 +103,7 @@ class Plan:
         for c in self.components:
             if c.name == name:
                 return c
-        raise KeyError(name)
-
-
-def _perp(v: np.ndarray) -> np.ndarray:
-    return np.array([-v[1], v[0]])
+        raise NameLookupError("plan component", name, tuple(c.name for c in self.components))
 
 
 class _Builder:

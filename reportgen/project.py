@@ -101,7 +101,7 @@ class Project:
         p = self.task.planetary
         if p is None:
             return None
-        from .planetary.drive import drive_check, drive_ratio
+        from .planetary.drive import drive_check, drive_ratio, input_speed
         from .planetary.search import synthesize
         from .planetary.velocity import velocity_triangle
         drive = None
@@ -114,8 +114,7 @@ class Project:
         else:
             target = float(p.ratio)
         design = synthesize(p.scheme, target, p.tolerance, p.satellites, p.module)
-        omega_in = drive.omega_planetary_in if drive is not None else (
-            math.pi * p.motor_rpm / 30.0 if p.motor_rpm else 100.0)
+        omega_in, _ = input_speed(drive, p.motor_rpm)
         triangle = velocity_triangle(design, omega_in, p.module) if p.module else None
         check = drive_check(drive, design.ratio) if drive is not None else None
         return PlanetaryStage(target, drive, design, triangle, check)

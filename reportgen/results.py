@@ -15,6 +15,7 @@ import numpy as np
 from .kinematics import KinematicsResult
 from .kinematics.extremes import Strokes
 from .project import Project
+from .errors import InternalError
 
 FORMAT = "reportgen-results/1"
 
@@ -30,7 +31,7 @@ def _clean(x: Any) -> Any:
     if isinstance(x, (np.floating, float)):
         f = float(x)
         if not math.isfinite(f):
-            raise ValueError("a non-finite number reached results.json")
+            raise InternalError("results.json", "a non-finite number reached it")
         return 0.0 if f == 0.0 else f
     if isinstance(x, np.integer):
         return int(x)

@@ -6,9 +6,11 @@ millimetres and user-facing angles keep their ``_deg`` names, as in the task for
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Literal, Mapping
+
+from .errors import NameLookupError
 
 Vec2 = tuple[float, float]
 
@@ -28,6 +30,17 @@ class Document:
     city: str = ""
     year: int | None = None
     language: str = "ru"
+    #: The project's designation (ЕСКД, ГОСТ 2.201): sheet k is "<code>.<k:03d>", the note
+    #: "<code>.000 ПЗ".
+    code: str = "ТММ.КП.00.00"
+
+    def sheet_code(self, number: int) -> str:
+        """The designation of drawing sheet ``number`` (title block, graph 2)."""
+        return f"{self.code}.{number:03d}"
+
+    def note_code(self) -> str:
+        """The designation of the explanatory note (ПЗ)."""
+        return f"{self.code}.000 ПЗ"
 
 
 @dataclass(frozen=True)
@@ -121,7 +134,7 @@ class Mechanism:
         for ln in self.links:
             if ln.id == link_id:
                 return ln
-        raise KeyError(link_id)
+        raise NameLookupError("link", link_id, tuple(ln.id for ln in self.links))
 
 
 @dataclass(frozen=True)

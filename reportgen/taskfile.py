@@ -1,4 +1,4 @@
-"""Task loading: a TOML task file (``shared/TASK_FORMAT.md``) → :class:`reportgen.task.Task`.
+"""Task loading: a TOML task file (``docs/task-format.md``) → :class:`reportgen.task.Task`.
 
 ``load_task(path)`` reads a file, ``loads_task(text)`` a string, ``parse_task(data)`` an already
 parsed TOML document (a dict). Every key is validated; every error is a
@@ -19,51 +19,48 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from .errors import TaskError, TaskSyntaxError
-from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Drive, Dynamics, Flywheel, Gears,
+from .task import (Analysis, Document, Drive, Dynamics, Flywheel, Gears,
                    Link, Load, MassRules, Mechanism, Planetary, Slide, Task, Vec2, frozen_mapping)
-from .taskfile_values import (Array, Bool, Int, Number, OneOf, Spec, Str, Table, Word, array_of_tables,
-                              check_keys, fmt, index, join, show, suggest, vec2)
+from .taskfile_values import (Array, Int, OneOf, Spec, Table, Word, array_of_tables, check_keys, fmt,
+                              index, join, show, suggest)
+from .taskspec import (INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, POINT_NAME, POINT_XY, SECTION)
 
 __all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "COLLINEAR_RTOL"]
 
-#: Largest coordinate magnitude and link length accepted, m (catches gross unit slips; solver
-#: scale tests go up to ~400 m).
-MAX_LENGTH = 1000.0
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
 COLLINEAR_RTOL = 1e-9
 
-TOP_KEYS = ("document", "mechanism", "analysis", "dynamics", "gears", "planetary")
-DOCUMENT_KEYS = ("title", "author", "group", "supervisor", "university", "organization", "city", "year",
-                 "language")
-MECHANISM_KEYS = ("name", "g", "ground", "points", "link", "slide", "drive", "mass_rules", "load")
-LINK_KEYS = ("id", "kind", "points", "length", "lengths", "mass", "inertia", "com")
-SLIDE_KEYS = ("link", "point", "guide", "line", "along")
-LINE_KEYS = ("through", "angle_deg")
-DRIVE_KEYS = ("link", "omega")
-MASS_RULES_KEYS = ("q", "slider_factor", "triangle_factor")
-LOAD_KINDS = ("resistance", "force", "moment")
-LOAD_KEYS_BY_KIND = {
-    "resistance": ("kind", "link", "force", "moment", "law", "stroke"),
-    "force": ("kind", "link", "point", "com", "vector"),
-    "moment": ("kind", "link", "value"),
-}
-LOAD_KEYS = tuple(dict.fromkeys(k for keys in LOAD_KEYS_BY_KIND.values() for k in keys))
-STROKES = ("working", "idle", "both")
-ANALYSIS_KEYS = ("positions", "start", "force_position")
-DYNAMICS_KEYS = ("delta", "crank_inertia", "flywheel")
-FLYWHEEL_KEYS = ("shape", "density", "width_ratio")
-FLYWHEEL_SHAPES = ("disk", "rim")
-GEARS_KEYS = ("z1", "z2", "module", "x1", "x2", "alpha_deg", "ha", "c", "eps_min", "sa_min")
-PLANETARY_KEYS = ("scheme", "motor_rpm", "ratio", "tolerance", "satellites", "module")
-PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-row-int-int")
+# The keys of every table and the specs of their values: reportgen.taskspec (one source for the
+# loader, docs/task-format.md and the JSON Schema).
+TOP_KEYS = SECTION[""].names
+DOCUMENT_KEYS = SECTION["document"].names
+MECHANISM_KEYS = SECTION["mechanism"].names
+LINK_KEYS = SECTION["mechanism.link"].names
+SLIDE_KEYS = SECTION["mechanism.slide"].names
+LINE_KEYS = SECTION["mechanism.slide.line"].names
+DRIVE_KEYS = SECTION["mechanism.drive"].names
+MASS_RULES_KEYS = SECTION["mechanism.mass_rules"].names
+LOAD_KEYS_BY_KIND = {kind: tuple(k.name for k in SECTION["mechanism.load"].keys if kind in k.kinds)
+                     for kind in LOAD_KINDS}
+LOAD_KEYS = SECTION["mechanism.load"].names
+ANALYSIS_KEYS = SECTION["analysis"].names
+DYNAMICS_KEYS = SECTION["dynamics"].names
+FLYWHEEL_KEYS = SECTION["dynamics.flywheel"].names
+GEARS_KEYS = SECTION["gears"].names
+PLANETARY_KEYS = SECTION["planetary"].names
 
-# Value specs shared by several keys.
-_LENGTH = Number(gt=0, le=MAX_LENGTH, unit="m")
-_MASS = Number(gt=0, unit="kg")
-_INERTIA = Number(ge=0, unit="kg·m²")  # > 0 is checked afterwards, except for slider-rule links
-_INERTIA.expected = "a number > 0, in kg·m² (0 allowed for a slider or block)"
-_POINT_NAME = Str(nonempty=True)
-_LINK_ID = Int(ge=1, what="a link id: an integer")
+_LENGTH = LENGTH
+_INERTIA = INERTIA
+_POINT_NAME = POINT_NAME
+_LINK_ID = LINK_ID
+
+
+def _get(t: Table, section: str, key: str) -> Any:
+    """Read ``key`` of table ``t`` with the spec and default of ``reportgen.taskspec``."""
+    sec = SECTION[section]
+    spec = sec[key].spec
+    assert spec is not None, f"{section}.{key} is a table"
+    return t.get(key, spec, sec.default(key))
 
 
 # ============================================================================================ entry
@@ -117,6 +114,12 @@ def parse_task(data: dict, source: str = "") -> Task:
     dynamics = _dynamics(top.raw("dynamics"), "dynamics") if "dynamics" in top else None
     gears = _gears(top.raw("gears"), "gears") if "gears" in top else None
     planetary = _planetary(top.raw("planetary"), "planetary") if "planetary" in top else None
+    if mechanism is None and gears is None and planetary is None:
+        given = [f"[{k}]" for k in data] if data else []
+        raise TaskError("", "the task has nothing to build" + (
+            f": it gives only {', '.join(given)}" if given else ": it is empty or holds only comments"),
+            "at least one of the sections [mechanism] (a linkage: note sections 1–3, sheets 1–3), "
+            "[gears] (a gear pair: section 4, sheet 4) or [planetary] (a planetary reducer)")
     return Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
                 gears=gears, planetary=planetary, source=str(source))
 
@@ -124,18 +127,7 @@ def parse_task(data: dict, source: str = "") -> Task:
 # ========================================================================================= document
 def _document(value: Any, path: str) -> Document:
     t = Table(value, path, DOCUMENT_KEYS)
-    d = Document()
-    return Document(
-        title=t.get("title", Str(), d.title),
-        author=t.get("author", Str(), d.author),
-        group=t.get("group", Str(), d.group),
-        supervisor=t.get("supervisor", Str(), d.supervisor),
-        university=t.get("university", Str(), d.university),
-        organization=t.get("organization", Str(), d.organization),
-        city=t.get("city", Str(), d.city),
-        year=t.get("year", Int(ge=1000, le=9999, what="a year: an integer"), d.year),
-        language=t.get("language", Word(*LANGUAGES), d.language),
-    )
+    return Document(**{key: _get(t, "document", key) for key in DOCUMENT_KEYS})
 
 
 # ======================================================================================== mechanism
@@ -145,7 +137,7 @@ class _RawLink:
     pos: int
     path: str
     id: int
-    kind: str
+    kind: str | None
     points: tuple[str, ...]
     given: dict[frozenset, tuple[str, str, float, str]]  # {p, q} → (p, q, metres, TOML path)
     mass: float | None
@@ -155,11 +147,10 @@ class _RawLink:
 
 def _mechanism(value: Any, path: str) -> Mechanism:
     t = Table(value, path, MECHANISM_KEYS)
-    name = t.get("name", Str(), "")
-    g = t.get("g", Number(ge=0, le=50, unit="m/s²"), 9.81)
+    name = _get(t, "mechanism", "name")
+    g = _get(t, "mechanism", "g")
     points = _points(t.get("points", _ANY_TABLE), t.at("points"))
-    ground = _ground(t.get("ground", Array(_POINT_NAME, 1, what="an array of ground point names")),
-                     t.at("ground"), points)
+    ground = _ground(_get(t, "mechanism", "ground"), t.at("ground"), points)
 
     link_path = t.at("link")
     raw_links = [_read_link(v, index(link_path, i), i, points)
@@ -169,6 +160,10 @@ def _mechanism(value: Any, path: str) -> Mechanism:
     by_id = _check_ids(raw_links, link_path)
 
     drive = _drive(t.get("drive", _ANY_TABLE), t.at("drive"), by_id, ground)
+    slide_pairs = _slide_pairs(t.raw("slide", []))
+    for ln in raw_links:
+        if ln.kind is None:
+            ln.kind = infer_kind(ln.id, ln.points, drive.link, ground, slide_pairs)
     rules = _mass_rules(t.raw("mass_rules", {}), t.at("mass_rules"))
     links = _resolve_links(raw_links, by_id, drive.link, rules, points)
     links_by_id = {ln.id: ln for ln in links}
@@ -186,6 +181,42 @@ def _mechanism(value: Any, path: str) -> Mechanism:
 
     return Mechanism(name=name, ground=ground, points=frozen_mapping(points), links=tuple(links),
                      drive=drive, slides=tuple(slides), loads=tuple(loads), mass_rules=rules, g=g)
+
+
+def _slide_pairs(raw: Any) -> tuple[tuple[int, int], ...]:
+    """(link, guide) of every [[mechanism.slide]] that names both as integers (the slides are
+    validated later, by ``_slide``); used only to infer the kind of a link."""
+    pairs = []
+    for v in raw if isinstance(raw, list) else []:
+        if isinstance(v, dict):
+            lk, gd = v.get("link"), v.get("guide")
+            if isinstance(lk, int) and isinstance(gd, int) and not isinstance(lk, bool) and not isinstance(gd, bool):
+                pairs.append((lk, gd))
+    return tuple(pairs)
+
+
+def infer_kind(link_id: int, points: tuple[str, ...], drive_link: int, ground: tuple[str, ...],
+               slides: tuple[tuple[int, int], ...]) -> str:
+    """The kind of a link that the task leaves out, from the structure (the kind is wording and the
+    mass rule of a slider; the solvers never read it):
+
+    the driving link is a crank; a link that carries another link's guide is a slotted link
+    (кулиса); a link that slides on a guide of the frame is a slider if it has one point, and so is
+    a one-point link on any guide a block (камень) when the guide is a link; a link turning about a
+    frame point is a rocker; any other a coupler.
+    """
+    guides = {g for lk, g in slides if lk == link_id}
+    if link_id == drive_link:
+        return "crank"
+    if any(g == link_id for _, g in slides):
+        return "slotted"
+    if len(points) == 1:
+        return "slider" if 0 in guides or not guides else "block"
+    if 0 in guides:
+        return "slider"
+    if any(p in ground for p in points):
+        return "rocker"
+    return "coupler"
 
 
 class _AnyValue(Spec):
@@ -206,11 +237,11 @@ def _points(value: Any, path: str) -> dict[str, Vec2]:
         raise TaskError(path, f"got {show(value)}", "a table of point names → [x, y] in m")
     if not value:
         raise TaskError(path, "is empty", "a table of point names → [x, y] in m")
-    spec = vec2("m", MAX_LENGTH)
+    spec = POINT_XY
     out: dict[str, Vec2] = {}
     for name, xy in value.items():
         if not isinstance(name, str) or not name.strip():
-            raise TaskError(path, f"has an empty point name", "non-empty point names")
+            raise TaskError(path, "has an empty point name", "non-empty point names")
         x, y = spec.read(xy, join(path, name))
         out[name] = (x, y)
     return out
@@ -246,9 +277,9 @@ def _split_pair(key: str, pts: tuple[str, ...]) -> list[tuple[str, str]]:
 
 def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _RawLink:
     t = Table(value, path, LINK_KEYS)
-    lid = t.get("id", _LINK_ID)
-    kind = t.get("kind", Word(*LINK_KINDS))
-    pts = t.get("points", Array(_POINT_NAME, 1, 3, what="an array of 1 to 3 point names"))
+    lid = _get(t, "mechanism.link", "id")
+    kind = _get(t, "mechanism.link", "kind")   # None: inferred from the structure (infer_kind)
+    pts = _get(t, "mechanism.link", "points")
     pp = t.at("points")
     for j, p in enumerate(pts):
         _point_ref(p, index(pp, j), list(points), "[mechanism.points]")
@@ -292,8 +323,8 @@ def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _Raw
                 raise TaskError(kp, f"the distance {p}–{q} is given twice", "each distance once")
             given[frozenset((p, q))] = (p, q, _LENGTH.read(v, kp), kp)
 
-    mass = t.get("mass", _MASS, None)
-    inertia = t.get("inertia", _INERTIA, None)
+    mass = _get(t, "mechanism.link", "mass")
+    inertia = _get(t, "mechanism.link", "inertia")
     com = None
     if "com" in t:
         cp = t.at("com")
@@ -303,7 +334,7 @@ def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _Raw
                 raise TaskError(cp, f"got {show(raw)}", f"the link's point name \"{pts[0]}\"")
             com = _point_ref(raw, cp, list(pts), "the points of this link")
         else:
-            com = OneOf(Number(ge=0, le=1), Str(nonempty=True)).read(raw, cp)
+            com = _get(t, "mechanism.link", "com")
             if isinstance(com, str):
                 _point_ref(com, cp, list(pts), "the points of this link")
     return _RawLink(pos, path, lid, kind, tuple(pts), given, mass, inertia, com)
@@ -328,7 +359,7 @@ def _check_ids(raw_links: list[_RawLink], path: str) -> dict[int, _RawLink]:
 
 def _drive(value: Any, path: str, by_id: dict[int, _RawLink], ground: tuple[str, ...]) -> Drive:
     t = Table(value, path, DRIVE_KEYS)
-    lid = t.get("link", _LINK_ID)
+    lid = _get(t, "mechanism.drive", "link")
     if lid not in by_id:
         raise TaskError(t.at("link"), f"there is no link {lid}", f"a link id 1..{len(by_id)}")
     ln = by_id[lid]
@@ -339,18 +370,13 @@ def _drive(value: Any, path: str, by_id: dict[int, _RawLink], ground: tuple[str,
                "it has no moving point")
         raise TaskError(t.at("link"), f"link {lid} cannot be the driving crank: {why}",
                         "a link that lists exactly one ground point, its axis, and a moving point")
-    omega = t.get("omega", Number(nonzero=True, ge=-1e4, le=1e4, unit="rad/s"))
+    omega = _get(t, "mechanism.drive", "omega")
     return Drive(link=lid, omega=omega)
 
 
 def _mass_rules(value: Any, path: str) -> MassRules:
     t = Table(value, path, MASS_RULES_KEYS)
-    d = MassRules()
-    return MassRules(
-        q=t.get("q", Number(gt=0, unit="kg/m"), d.q),
-        slider_factor=t.get("slider_factor", Number(gt=0), d.slider_factor),
-        triangle_factor=t.get("triangle_factor", Number(gt=0), d.triangle_factor),
-    )
+    return MassRules(**{key: _get(t, "mechanism.mass_rules", key) for key in MASS_RULES_KEYS})
 
 
 # ------------------------------------------------------------------------------------- mass rules
@@ -450,13 +476,13 @@ def _link_ref(value: Any, path: str, links: Mapping[int, Link]) -> Link:
 
 def _slide(value: Any, path: str, links: Mapping[int, Link], before: list[Slide]) -> Slide:
     t = Table(value, path, SLIDE_KEYS)
-    ln = _link_ref(t.get("link", _LINK_ID), t.at("link"), links)
+    ln = _link_ref(_get(t, "mechanism.slide", "link"), t.at("link"), links)
     if "point" in t or len(ln.points) != 1:
-        point = t.get("point", Str(nonempty=True))
+        point = t.get("point", POINT_NAME)
         _point_ref(point, t.at("point"), list(ln.points), f"link {ln.id}")
     else:
         point = ln.points[0]
-    guide = t.get("guide", Int(ge=0, what="0 (the frame) or a link id: an integer"))
+    guide = _get(t, "mechanism.slide", "guide")
     through = angle = along = None
     if guide == 0:
         if "along" in t:
@@ -464,20 +490,20 @@ def _slide(value: Any, path: str, links: Mapping[int, Link], before: list[Slide]
                             "line = { through = [x, y], angle_deg = … } for guide = 0")
         lt = Table(t.get("line", _ANY_TABLE), t.at("line"), LINE_KEYS,
                    "an inline table { through = [x, y], angle_deg = … }")
-        through = lt.get("through", vec2("m", MAX_LENGTH))
-        angle = lt.get("angle_deg", Number(ge=-360, le=360, unit="degrees"))
+        through = _get(lt, "mechanism.slide.line", "through")
+        angle = _get(lt, "mechanism.slide.line", "angle_deg")
     else:
         if guide not in links:
             raise TaskError(t.at("guide"), f"there is no link {guide}", f"0 (the frame) or a link id 1..{len(links)}")
         if guide == ln.id:
             raise TaskError(t.at("guide"), f"link {ln.id} cannot slide along itself",
-                            f"0 (the frame) or the id of another link")
+                            "0 (the frame) or the id of another link")
         if "line" in t:
             raise TaskError(t.at("line"), "is for a guide fixed to the frame (guide = 0)",
                             "along = [P, Q]: two points of the guide link")
         gl = links[guide]
         ap = t.at("along")
-        along = t.get("along", Array(_POINT_NAME, 2, 2, what=f"two point names of link {guide}"))
+        along = t.get("along", _along_spec(guide))
         for j, p in enumerate(along):
             _point_ref(p, index(ap, j), list(gl.points), f"link {guide}")
         if along[0] == along[1]:
@@ -489,11 +515,15 @@ def _slide(value: Any, path: str, links: Mapping[int, Link], before: list[Slide]
     return Slide(link=ln.id, point=point, guide=guide, through=through, angle_deg=angle, along=along)
 
 
+def _along_spec(guide: int) -> Spec:
+    """``along`` as the slide's spec reads it, naming the guide link in the message."""
+    spec = SECTION["mechanism.slide"]["along"].spec
+    assert isinstance(spec, Array)
+    return Array(spec.item, spec.min_len, spec.max_len, what=f"two point names of link {guide}")
+
+
 def _law(value: Any, path: str) -> tuple[tuple[float, float], ...]:
-    pair = Array(Number(ge=0, le=1), 2, 2,
-                 what="[fraction of the stroke, fraction of the maximum], both numbers in [0, 1]")
-    law = Array(pair, 2, what="an array of at least 2 pairs [stroke fraction, load fraction] in [0, 1], "
-                              "from [0, …] to [1, …]").read(value, path)
+    law = LAW.read(value, path)
     for i in range(1, len(law)):
         if not law[i][0] > law[i - 1][0]:
             raise TaskError(index(index(path, i), 0),
@@ -510,25 +540,25 @@ def _law(value: Any, path: str) -> tuple[tuple[float, float], ...]:
 
 def _load(value: Any, path: str, links: Mapping[int, Link]) -> Load:
     t = Table(value, path, LOAD_KEYS)
-    kind = t.get("kind", Word(*LOAD_KINDS))
+    kind = _get(t, "mechanism.load", "kind")
     allowed = LOAD_KEYS_BY_KIND[kind]
     for key in t.data:
         if key not in allowed:
             raise TaskError(t.at(key), f"`{key}` is not a key of a {kind} load",
                             "one of: " + ", ".join(allowed))
-    ln = _link_ref(t.get("link", _LINK_ID), t.at("link"), links)
+    ln = _link_ref(_get(t, "mechanism.load", "link"), t.at("link"), links)
     if kind == "resistance":
         has_f, has_m = "force" in t, "moment" in t
         if has_f == has_m:
             raise TaskError(path, "gives both force and moment" if has_f else "gives neither force nor moment",
                             "exactly one of force = … N (a slider) or moment = … N·m (a rotating link)")
-        force = t.get("force", Number(gt=0, unit="N"), None)
-        moment = t.get("moment", Number(gt=0, unit="N·m"), None)
+        force = _get(t, "mechanism.load", "force")
+        moment = _get(t, "mechanism.load", "moment")
         law = _law(t.raw("law"), t.at("law")) if "law" in t else Load.__dataclass_fields__["law"].default
-        stroke = t.get("stroke", Word(*STROKES), "working")
+        stroke = _get(t, "mechanism.load", "stroke")
         return Load(kind="resistance", link=ln.id, force=force, moment=moment, law=law, stroke=stroke)
     if kind == "force":
-        com = t.get("com", Bool(), False)
+        com = _get(t, "mechanism.load", "com")
         if com and "point" in t:
             raise TaskError(t.at("com"), "com = true and a point are both given",
                             "either point = \"…\" or com = true")
@@ -537,22 +567,20 @@ def _load(value: Any, path: str, links: Mapping[int, Link]) -> Load:
             if "point" not in t:
                 raise TaskError(t.at("point"), "is missing",
                                 f"a point of link {ln.id} (one of: {', '.join(ln.points)}) or com = true")
-            point = _point_ref(t.get("point", _POINT_NAME), t.at("point"), list(ln.points), f"link {ln.id}")
-        vector = t.get("vector", vec2("N"))
+            point = _point_ref(t.get("point", POINT_NAME), t.at("point"), list(ln.points), f"link {ln.id}")
+        vector = _get(t, "mechanism.load", "vector")
         return Load(kind="force", link=ln.id, point=point, com=com, vector=vector)
-    value_ = t.get("value", Number(unit="N·m"))
+    value_ = _get(t, "mechanism.load", "value")
     return Load(kind="moment", link=ln.id, value=value_)
 
 
 # ====================================================================== analysis, dynamics, gears…
 def _analysis(value: Any, path: str) -> Analysis:
     t = Table(value, path, ANALYSIS_KEYS)
-    d = Analysis()
-    positions = t.get("positions", Int(ge=3, le=360), d.positions)
-    start = t.get("start", OneOf(Word("extreme"), Number(ge=-360, le=360, unit="degrees (a crank angle)")),
-                  d.start)
+    positions = _get(t, "analysis", "positions")
+    start = _get(t, "analysis", "start")
     fp_spec = OneOf(Word("max-load"), Int(ge=0, le=positions - 1, what="a position index"))
-    force_position = t.get("force_position", fp_spec, d.force_position)
+    force_position = t.get("force_position", fp_spec, SECTION["analysis"].default("force_position"))
     if isinstance(force_position, int) and force_position >= positions:  # the default with few positions
         raise TaskError(t.at("force_position"), f"got {force_position}", fp_spec.expected)
     return Analysis(positions=positions, start=start, force_position=force_position)
@@ -560,46 +588,28 @@ def _analysis(value: Any, path: str) -> Analysis:
 
 def _dynamics(value: Any, path: str) -> Dynamics:
     t = Table(value, path, DYNAMICS_KEYS)
-    d = Flywheel()
-    flywheel = d
+    flywheel = Flywheel()
     if "flywheel" in t:
         ft = Table(t.raw("flywheel"), t.at("flywheel"), FLYWHEEL_KEYS,
                    "a table { shape = \"disk\" | \"rim\", density = …, width_ratio = … }")
-        flywheel = Flywheel(
-            shape=ft.get("shape", Word(*FLYWHEEL_SHAPES), d.shape),
-            density=ft.get("density", Number(gt=0, unit="kg/m³"), d.density),
-            width_ratio=ft.get("width_ratio", Number(gt=0), d.width_ratio),
-        )
+        flywheel = Flywheel(**{key: _get(ft, "dynamics.flywheel", key) for key in FLYWHEEL_KEYS})
     return Dynamics(
-        delta=t.get("delta", Number(gt=0, lt=1)),
-        crank_inertia=t.get("crank_inertia", Number(ge=0, unit="kg·m²"), 0.0),
+        delta=_get(t, "dynamics", "delta"),
+        crank_inertia=_get(t, "dynamics", "crank_inertia"),
         flywheel=flywheel,
     )
 
 
 def _gears(value: Any, path: str) -> Gears:
     t = Table(value, path, GEARS_KEYS)
-    z = Int(ge=5, le=1000, what="a number of teeth: an integer")
-    shift = OneOf(Word("auto"), Number(ge=-3, le=3))
-    return Gears(
-        z1=t.get("z1", z),
-        z2=t.get("z2", z),
-        module=t.get("module", Number(gt=0, le=1000, unit="mm")),
-        x1=t.get("x1", shift, 0.0),
-        x2=t.get("x2", shift, 0.0),
-        alpha_deg=t.get("alpha_deg", Number(gt=0, lt=45, unit="degrees"), 20.0),
-        ha=t.get("ha", Number(gt=0, le=2), 1.0),
-        c=t.get("c", Number(ge=0, le=1), 0.25),
-        eps_min=t.get("eps_min", Number(ge=1, le=2.5), Gears.eps_min),
-        sa_min=t.get("sa_min", Number(ge=0, le=1, unit="a share of the module"), Gears.sa_min),
-    )
+    return Gears(**{key: _get(t, "gears", key) for key in GEARS_KEYS})
 
 
 def _planetary(value: Any, path: str) -> Planetary:
     t = Table(value, path, PLANETARY_KEYS)
-    scheme = t.get("scheme", Word(*PLANETARY_SCHEMES))
-    motor_rpm = t.get("motor_rpm", Number(gt=0, le=1e5, unit="rpm"), None)
-    ratio = t.get("ratio", OneOf(Word("auto"), Number(gt=1)), "auto")
+    scheme = _get(t, "planetary", "scheme")
+    motor_rpm = _get(t, "planetary", "motor_rpm")
+    ratio = _get(t, "planetary", "ratio")
     if ratio == "auto" and motor_rpm is None:
         raise TaskError(t.at("motor_rpm"), "is missing; ratio = \"auto\" is computed from it",
                         "a number > 0, in rpm (or a numeric ratio)")
@@ -607,7 +617,7 @@ def _planetary(value: Any, path: str) -> Planetary:
         scheme=scheme,
         motor_rpm=motor_rpm,
         ratio=ratio,
-        tolerance=t.get("tolerance", Number(gt=0, lt=1), 0.05),
-        satellites=t.get("satellites", OneOf(Word("auto"), Int(ge=1, le=12)), "auto"),
-        module=t.get("module", Number(gt=0, le=1000, unit="mm"), None),
+        tolerance=_get(t, "planetary", "tolerance"),
+        satellites=_get(t, "planetary", "satellites"),
+        module=_get(t, "planetary", "module"),
     )

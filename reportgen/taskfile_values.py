@@ -99,6 +99,14 @@ class Spec:
     def fail(self, value: Any, path: str, extra: str = "") -> TaskError:
         return TaskError(path, f"got {show(value)}{extra}", self.expected)
 
+    def schema(self) -> dict[str, Any]:
+        """The JSON Schema of the values this spec accepts (``reportgen.taskspec`` builds on it)."""
+        return {}
+
+    def type_name(self) -> str:
+        """The TOML type in words, for the generated reference (``docs/task-format.md``)."""
+        return "any"
+
 
 class Str(Spec):
     """Any string (optionally non-empty)."""
@@ -111,6 +119,12 @@ class Str(Spec):
         if not isinstance(value, str) or (self.nonempty and not value.strip()):
             raise self.fail(value, path)
         return value
+
+    def schema(self) -> dict[str, Any]:
+        return {"type": "string", "pattern": r"\S"} if self.nonempty else {"type": "string"}
+
+    def type_name(self) -> str:
+        return "string"
 
 
 class Word(Spec):
@@ -131,6 +145,12 @@ class Word(Spec):
             if near:
                 extra = f"; did you mean \"{near}\"?"
         raise self.fail(value, path, extra)
+
+    def schema(self) -> dict[str, Any]:
+        return {"enum": list(self.words)}
+
+    def type_name(self) -> str:
+        return "string"
 
 
 def _range_text(gt: float | None, ge: float | None, lt: float | None, le: float | None,
@@ -156,6 +176,7 @@ class Number(Spec):
     def __init__(self, *, gt: float | None = None, ge: float | None = None, lt: float | None = None,
                  le: float | None = None, nonzero: bool = False, unit: str = "") -> None:
         self.gt, self.ge, self.lt, self.le, self.nonzero = gt, ge, lt, le, nonzero
+        self.unit = unit
         self.expected = "a number" + _range_text(gt, ge, lt, le, nonzero)
         if unit:
             self.expected += f", in {unit}"
@@ -175,6 +196,19 @@ class Number(Spec):
             raise self.fail(value, path)
         return x
 
+    def schema(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"type": "number"}
+        for key, limit in (("exclusiveMinimum", self.gt), ("minimum", self.ge),
+                           ("exclusiveMaximum", self.lt), ("maximum", self.le)):
+            if limit is not None:
+                out[key] = limit
+        if self.nonzero:
+            out["not"] = {"const": 0}
+        return out
+
+    def type_name(self) -> str:
+        return "number"
+
 
 class Int(Spec):
     """A TOML integer (not a float, not a boolean) within limits."""
@@ -193,6 +227,17 @@ class Int(Spec):
             raise self.fail(value, path)
         return int(value)
 
+    def schema(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"type": "integer"}
+        if self.ge is not None:
+            out["minimum"] = self.ge
+        if self.le is not None:
+            out["maximum"] = self.le
+        return out
+
+    def type_name(self) -> str:
+        return "integer"
+
 
 class Bool(Spec):
     expected = "true or false"
@@ -201,6 +246,12 @@ class Bool(Spec):
         if not isinstance(value, bool):
             raise self.fail(value, path)
         return value
+
+    def schema(self) -> dict[str, Any]:
+        return {"type": "boolean"}
+
+    def type_name(self) -> str:
+        return "boolean"
 
 
 class OneOf(Spec):
@@ -223,6 +274,12 @@ class OneOf(Spec):
             if near:
                 extra = f"; did you mean \"{near}\"?"
         raise self.fail(value, path, extra)
+
+    def schema(self) -> dict[str, Any]:
+        return {"anyOf": [s.schema() for s in self.specs]}
+
+    def type_name(self) -> str:
+        return " or ".join(dict.fromkeys(s.type_name() for s in self.specs))
 
 
 class Array(Spec):
@@ -249,6 +306,47 @@ class Array(Spec):
             raise TaskError(path, f"has {n} element{'s' if n != 1 else ''}", self.expected)
         return tuple(self.item.read(v, index(path, i)) for i, v in enumerate(value))
 
+    def schema(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"type": "array", "items": self.item.schema()}
+        if self.min_len:
+            out["minItems"] = self.min_len
+        if self.max_len is not None:
+            out["maxItems"] = self.max_len
+        return out
+
+    def type_name(self) -> str:
+        return f"array of {self.item.type_name()}"
+
+
+class NameMap(Spec):
+    """A TOML table of free names → values read by ``item`` (at least ``min_len`` entries)."""
+
+    def __init__(self, item: Spec, min_len: int = 0, what: str = "") -> None:
+        self.item, self.min_len = item, min_len
+        self.expected = what or f"a table of names → {item.expected}"
+
+    def read(self, value: Any, path: str) -> dict[str, Any]:
+        if not isinstance(value, dict):
+            raise self.fail(value, path)
+        if len(value) < self.min_len:
+            raise TaskError(path, "is empty", self.expected)
+        out: dict[str, Any] = {}
+        for name, v in value.items():
+            if not isinstance(name, str) or not name.strip():
+                raise TaskError(path, "has an empty name", "non-empty names")
+            out[name] = self.item.read(v, join(path, name))
+        return out
+
+    def schema(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"type": "object", "propertyNames": {"pattern": r"\S"},
+                               "additionalProperties": self.item.schema()}
+        if self.min_len:
+            out["minProperties"] = self.min_len
+        return out
+
+    def type_name(self) -> str:
+        return f"table of {self.item.type_name()}"
+
 
 def vec2(unit: str = "", limit: float | None = None) -> Array:
     """A spec for ``[x, y]``: two finite numbers (with |x|, |y| ≤ limit if given)."""
@@ -260,7 +358,15 @@ def vec2(unit: str = "", limit: float | None = None) -> Array:
 
 
 # ------------------------------------------------------------------------------------------- tables
-_REQUIRED = object()
+class _Required:
+    """The default of a key that must be given."""
+
+    def __repr__(self) -> str:
+        return "REQUIRED"
+
+
+#: ``Table.get(key, spec, REQUIRED)``: a missing key is an error.
+REQUIRED: Any = _Required()
 
 
 class Table:
@@ -280,10 +386,10 @@ class Table:
     def __contains__(self, key: str) -> bool:
         return key in self.data
 
-    def get(self, key: str, spec: Spec, default: Any = _REQUIRED) -> Any:
+    def get(self, key: str, spec: Spec, default: Any = REQUIRED) -> Any:
         """Read ``key`` with ``spec``; a missing key gives ``default`` or, if none, an error."""
         if key not in self.data:
-            if default is _REQUIRED:
+            if default is REQUIRED:
                 raise TaskError(self.at(key), "is missing", spec.expected)
             return default
         return spec.read(self.data[key], self.at(key))

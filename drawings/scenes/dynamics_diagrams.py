@@ -20,6 +20,7 @@ import numpy as np
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from reportgen.errors import BuildError
 
 #: Room around a diagram: above (title, scale), below (position numbers), mm.
 TOP_MM = 22.0
@@ -135,7 +136,7 @@ def layout(g, labels: list[str], x0: float, y_top: float, y_bottom: float, omega
     inertia = Rect(xw, inertia_top - j_height, xw + ww, inertia_top)
     o_j = (o_w[0], inertia_top - J_TOP_MM)
     if inertia.y0 < y_bottom or wit.y1 > y_top:
-        raise ValueError("the Wittenbauer and J_red(φ) diagrams do not fit one under the other")
+        raise BuildError("dynamics sheet layout", "the Wittenbauer and J_red(φ) diagrams do not fit one under the other")
     omega = rects[3] if omega_h > 0 else None
     return Layout(rects[0], rects[1], rects[2], wit, inertia, origins[0], origins[1], origins[2], o_w, o_j, omega)
 

@@ -26,10 +26,6 @@ def available(project: Project) -> bool:
     return project.task.mechanism is not None and project.task.dynamics is not None
 
 
-def code(number: int) -> str:
-    return f"ТММ.КП.00.00.{number:03d}"
-
-
 def graph_labels(project: Project) -> list[str]:
     """The names of the graph's positions, as the note's table prints them."""
     from latex_templates.parts.dynamics import _first_step, position_labels
@@ -43,7 +39,7 @@ def graph_labels(project: Project) -> list[str]:
 def draw(project: Project, number: int, count: int) -> Sheet:
     res = project.dynamics
     g = res.graphical
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=project.task.document.sheet_code(number), number=number, count=count)
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM

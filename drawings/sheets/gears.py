@@ -23,7 +23,7 @@ def draw(project, number: int, count: int) -> Sheet:
     from reportgen.gears.meshing import meshing_picture
 
     task = project.task
-    sheet = Sheet.a1(task.document, title=TITLE, code=f"ТММ.КП.00.00.{number:03d}", number=number,
+    sheet = Sheet.a1(task.document, title=TITLE, code=task.document.sheet_code(number), number=number,
                      count=count)
     fr = sheet.frame
     left = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + 395, fr.y1 - 19)

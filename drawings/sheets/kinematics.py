@@ -4,7 +4,6 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
-import itertools
 import math
 from dataclasses import dataclass
 
@@ -41,10 +40,6 @@ GROW_PLANS_MM = 40.0
 
 def available(project: Project) -> bool:
     return project.task.mechanism is not None
-
-
-def code(number: int) -> str:
-    return f"ТММ.КП.00.00.{number:03d}"
 
 
 def analysed_position(project: Project) -> int:
@@ -96,7 +91,7 @@ def scheme_scales(b: tuple[float, float, float, float]) -> list[tuple[float, str
 
 def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
             b: tuple[float, float, float, float], k: float, scale_text: str) -> Sheet:
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=project.task.document.sheet_code(number), number=number, count=count)
     i = data.analysed
     scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)

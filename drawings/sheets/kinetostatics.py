@@ -19,10 +19,6 @@ def available(project: Project) -> bool:
     return project.task.mechanism is not None
 
 
-def code(number: int) -> str:
-    return f"ТММ.КП.00.00.{number:03d}"
-
-
 #: Arrangements tried in turn, each a list of (kind, corner) in packing order: ``lever``, ``bodies``
 #: (the groups and the crank cut out), ``polygons``, or ``rows`` (each body followed by its polygon).
 ARRANGEMENTS: tuple[tuple[tuple[str, str], ...], ...] = (
@@ -122,7 +118,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     ks = kinetostatics_of(project)
     lk, st = project.linkage, project.structure
     g = ks.graphical
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=TITLE, code=project.task.document.sheet_code(number), number=number, count=count)
     by_key = {gr.key: gr for gr in st.groups}
     where = f"положение {ks.position}, " if ks.position is not None else ""
     note = f"Положение силового расчёта: {where}φ1 = {format_number(ks.phi_deg, 2, strip=False)}°"

@@ -2,6 +2,8 @@
 style that matches the note (Liberation Serif, the text font; decimal comma on the axes)."""
 from __future__ import annotations
 
+import re
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -11,7 +13,8 @@ from matplotlib.ticker import FuncFormatter  # noqa: E402
 from reportgen.numbers import significant  # noqa: E402
 
 STYLE = {
-    "font.family": "serif",
+    # a list: matplotlib falls back to the next family for a glyph the first lacks (₁ in "О₁")
+    "font.family": ["Liberation Serif", "DejaVu Serif"],
     "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],
     "font.size": 10,
     "mathtext.fontset": "stix",
@@ -25,6 +28,27 @@ STYLE = {
     "pdf.fonttype": 42,
     "svg.hashsalt": "reportgen",
 }
+
+
+_SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+_SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
+
+
+def math_name(name: str) -> str:
+    """A point name typed by a student, for a matplotlib label, printed as typed: ``О₁`` → ``$О_{1}$``
+    (subscript and superscript digits as such). A name with other characters than letters, digits,
+    primes and spaces stays plain text (its ``$`` escaped), which matplotlib prints as is."""
+    if not re.fullmatch(r"[\w'′ ₀-₉⁰¹²³⁴-⁹]+", name) or "_" in name:
+        return name.replace("$", r"\$")
+    out = []
+    for run in re.findall(r"[₀-₉]+|[⁰¹²³⁴-⁹]+|[^₀-₉⁰¹²³⁴-⁹]+", name):
+        if run[0] in "₀₁₂₃₄₅₆₇₈₉":
+            out.append("_{" + run.translate(_SUB) + "}")
+        elif run[0] in "⁰¹²³⁴⁵⁶⁷⁸⁹":
+            out.append("^{" + run.translate(_SUP) + "}")
+        else:
+            out.append(run.replace(" ", r"\ ").replace("′", "'"))
+    return "$" + "".join(out) + "$"
 
 
 def comma(x: float, _pos=None) -> str:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Circle, Polygon
 
-from .mechanism import world_points, size_of
+from .mechanism import world_points
 
 
 def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):

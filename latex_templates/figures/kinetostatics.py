@@ -13,7 +13,7 @@ import re
 import numpy as np
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
-from . import comma_axes, new_figure
+from . import comma_axes, math_name, new_figure
 from .mechanism import world_points
 
 #: Colours: loads, reactions found in this step, reactions known from an earlier step.
@@ -142,7 +142,7 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
         c = xy.mean(axis=0)
         d = p - c
         d = d / (np.hypot(*d) + 1e-300)
-        _label(ax, p - d * 0.06 * L + np.array([0.0, 0.04 * L]), f"${n}$", "black", placed, L)
+        _label(ax, p - d * 0.06 * L + np.array([0.0, 0.04 * L]), math_name(n), "black", placed, L)
     colour = {"load": LOAD, "found": FOUND, "known": KNOWN}
     for a, (tail, head) in zip(arrows, ends):
         col = colour[a["role"]]
@@ -249,7 +249,7 @@ def lever_figure(points: dict[str, np.ndarray], segments: list[tuple[str, str]],
         ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="0.3", lw=1.0, zorder=2)
     for name, p in points.items():
         ax.plot([p[0]], [p[1]], "ko", ms=2.5, zorder=3)
-        _label(ax, p + np.array([0.03, 0.03]) * size, f"${name}$", "black", placed, size)
+        _label(ax, p + np.array([0.03, 0.03]) * size, math_name(name), "black", placed, size)
     ax.plot([0], [0], "ko", ms=3)
     _label(ax, np.array([-0.04, -0.04]) * size, "$p$", "black", placed, size)
     for ld, head, foot in zip(loads, heads, feet):

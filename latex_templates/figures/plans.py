@@ -60,7 +60,7 @@ def plan_figure(plan, w_cm: float = 12.0):
 
 def positions_figure(linkage, q_all: np.ndarray, bold: tuple[int, ...], traces: dict[str, np.ndarray], w_cm=15.0):
     """All positions of the mechanism: the ``bold`` ones drawn fully, the others thin, with traces."""
-    from .mechanism import draw_mechanism, world_points, size_of
+    from .mechanism import draw_mechanism, world_points
     fig = new_figure(w_cm, 11.0)
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
     allpts = np.concatenate([np.array(list(world_points(linkage, q).values())) for q in q_all])

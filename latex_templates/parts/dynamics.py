@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from markupsafe import Markup
+from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
@@ -101,9 +101,9 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str], list[str]]
                  else f"скорость центра масс звена {f.link}")
         # the angle as the course measures it, to 0,01° (the power follows from the printed angle)
         av = Var(f"a{j}", rf"\alpha_{{{sym}}}", round(alpha, ANGLE_DECIMALS), "°",
-                 Markup(f"угол между силой ${sym}$ и скоростью ${vsym}$"))
+                 Tex(f"угол между силой ${sym}$ и скоростью ${vsym}$"))
         rec = record(f"P_{{{sym}}}", f"F{j} * V{j} * cos(radians(a{j}))", "Вт", Fv, Vv, av,
-                     meaning=Markup(f"мощность силы ${sym}$"))
+                     meaning=Tex(f"мощность силы ${sym}$"))
         out.append(PowerTerm(f.name, rec))
     for j, mo in enumerate(loads.moments):
         M = float(np.asarray(mo.value)[i])
@@ -111,9 +111,9 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str], list[str]]
             continue
         w = float(np.asarray(kin.links[mo.link].omega)[i])
         sym = _sub(mo.name)
-        Mv = Var(f"M{j}", sym, M, "Н·м", Markup(f"момент, приложенный к звену {mo.link} (плюс~--- против часовой стрелки)"))
+        Mv = Var(f"M{j}", sym, M, "Н·м", Tex(f"момент, приложенный к звену {mo.link} (плюс~--- против часовой стрелки)"))
         wv = Var(f"w{j}", rf"\omega_{{{mo.link}}}", w, "рад/с", f"угловая скорость звена {mo.link}")
-        rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Markup(f"мощность момента ${sym}$"))
+        rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Tex(f"мощность момента ${sym}$"))
         out.append(PowerTerm(mo.name, rec))
     return out, idle, still
 
@@ -137,13 +137,13 @@ def angle_table(project) -> tuple[list, list]:
         columns += [x for x in angles if x not in columns]
         total = sum(t.record.value for t in terms)
         per_position.append((j, math.degrees(float(project.phi[j])) % 360.0, angles, total / w1))
-    header = [Markup("№"), Markup("$\\varphi_1$, \\textdegree")]
-    header += [Markup(f"$\\alpha_{{{c}}}$, \\textdegree") for c in columns]
-    header.append(Markup("$M_\\text{пр}$, Н$\\cdot$м"))
+    header = [Tex("№"), Tex("$\\varphi_1$, \\textdegree")]
+    header += [Tex(f"$\\alpha_{{{c}}}$, \\textdegree") for c in columns]
+    header.append(Tex("$M_\\text{пр}$, Н$\\cdot$м"))
     rows = []
     for j, phi, angles, M in per_position:
         cells = [angles.get(c) for c in columns]
-        rows.append([j, phi] + [Markup("---") if a is None else a for a in cells] + [M])
+        rows.append([j, phi] + [Tex("---") if a is None else a for a in cells] + [M])
     return header, rows
 
 
@@ -246,7 +246,7 @@ def _sense(res) -> float:
 
 def scale_records(res) -> dict[str, CalcRecord | Var]:
     g = res.graphical
-    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Markup("длина оси $\\varphi$, изображающая один оборот кривошипа"))
+    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Tex("длина оси $\\varphi$, изображающая один оборот кривошипа"))
     mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
     mu_M = Var("mu_M", r"\mu_M", g.mu_M, "Н·м/мм", "масштабный коэффициент графика приведённого момента")
     H = Var("H", "H", g.H, "мм", "полюсное расстояние при графическом интегрировании")
@@ -263,10 +263,10 @@ def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcReco
     g = res.graphical
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
     psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Markup("угол наклона верхней касательной к оси $J$"), **common)
+                     omega, delta, meaning=Tex("угол наклона верхней касательной к оси $J$"), **common)
     psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Markup("угол наклона нижней касательной к оси $J$"), **common)
-    KL = Var("KL", "KL", g.KL_mm, "мм", Markup("отрезок, отсекаемый касательными на оси $\\Delta E$"))
+                     omega, delta, meaning=Tex("угол наклона нижней касательной к оси $J$"), **common)
+    KL = Var("KL", "KL", g.KL_mm, "мм", Tex("отрезок, отсекаемый касательными на оси $\\Delta E$"))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
                   mu_E=sc["mu_E"], meaning="момент инерции маховика по диаграмме Виттенбауэра")
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
@@ -278,9 +278,9 @@ def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord]:
                    meaning="наибольшая допускаемая угловая скорость кривошипа")
     w_min = record(r"\omega_{\min}", "omega1 * (1 - delta / 2)", "рад/с", omega, delta,
                    meaning="наименьшая допускаемая угловая скорость кривошипа")
-    K = Var("K", "K", ex.K, "Дж", Markup(r"наибольшее значение $\Delta E - J_\text{пр}\omega_{\max}^2/2$ "
+    K = Var("K", "K", ex.K, "Дж", Tex(r"наибольшее значение $\Delta E - J_\text{пр}\omega_{\max}^2/2$ "
                                          r"(точка $K$ пересечения верхней касательной с осью $\Delta E$)"))
-    L = Var("Lk", "L", ex.L, "Дж", Markup(r"наименьшее значение $\Delta E - J_\text{пр}\omega_{\min}^2/2$ (точка $L$)"))
+    L = Var("Lk", "L", ex.L, "Дж", Tex(r"наименьшее значение $\Delta E - J_\text{пр}\omega_{\min}^2/2$ (точка $L$)"))
     J_ex = record(r"J_\text{м}", "(K - Lk) / (omega1**2 * delta)", "кг·м²", K, L, omega, delta,
                   meaning="момент инерции маховика (точно)")
     return {"w_max": w_max, "w_min": w_min, "K": K, "L": L, "J_ex": J_ex}
@@ -288,8 +288,8 @@ def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord]:
 
 def merzalov_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     mz = res.merzalov
-    T_max = Var("T_max", r"T_{\max}", mz.T_max, "Дж", Markup("наибольшее значение $T_\\text{I}$"))
-    T_min = Var("T_min", r"T_{\min}", mz.T_min, "Дж", Markup("наименьшее значение $T_\\text{I}$"))
+    T_max = Var("T_max", r"T_{\max}", mz.T_max, "Дж", Tex("наибольшее значение $T_\\text{I}$"))
+    T_min = Var("T_min", r"T_{\min}", mz.T_min, "Дж", Tex("наименьшее значение $T_\\text{I}$"))
     J_I = record(r"J_\text{I}", "(T_max - T_min) / (omega1**2 * delta)", "кг·м²", T_max, T_min, omega, delta,
                  meaning="момент инерции звеньев первой группы (с маховиком)")
     J_c = Var("J_c", r"J_\text{пост}", mz.J_const, "кг·м²",
@@ -347,9 +347,14 @@ def method_rows(project, res) -> tuple[list[MethodRow], dict[str, np.ndarray]]:
     """J_fly by each method, its difference from the exact one, and the δ it gives (the steady
     motion with that flywheel, by the solver's ``steady_motion``); also ω(θ) of each."""
     from reportgen.dynamics import EnergyProfile, ProjectCycle, steady_motion
+    from reportgen.dynamics.solve import energy_of
 
-    cycle = ProjectCycle(project, res.crank_inertia)
-    profile = EnergyProfile(cycle, np.asarray(res.theta))
+    dyn = project.task.dynamics
+    if dyn is not None and res.crank_inertia == dyn.crank_inertia:
+        cycle, profile = energy_of(project, len(res.theta))     # the solver's own, computed once
+    else:
+        cycle = ProjectCycle(project, res.crank_inertia)
+        profile = EnergyProfile(cycle, np.asarray(res.theta))
     rows, omegas = [], {}
     for c in res.comparison:
         if c.method == "exact":
@@ -408,8 +413,8 @@ def content(project) -> PartContent:
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
         "i": i, "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
-        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Markup(f"${x}$") for x in idle],
-        "still": [Markup(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
+        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle],
+        "still": [Tex(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(x.startswith("и") for x in labels),
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
@@ -423,16 +428,16 @@ def content(project) -> PartContent:
     }
     strings = Strings(project.task.document.language or "ru")
     concl = [strings.get("findings_dynamics.flywheel").format(
-        J=Markup(num(res.J_flywheel)), shape=strings.get(f"findings_dynamics.{res.flywheel.shape}"), delta=Markup(num(res.delta_target)),
-        R=Markup(num(res.flywheel.radius)), b=Markup(num(res.flywheel.width)), m=Markup(num(res.flywheel.mass)),
-        achieved=Markup(num(mot["delta"].value))),
+        J=Tex(num(res.J_flywheel)), shape=strings.get(f"findings_dynamics.{res.flywheel.shape}"), delta=Tex(num(res.delta_target)),
+        R=Tex(num(res.flywheel.radius)), b=Tex(num(res.flywheel.width)), m=Tex(num(res.flywheel.mass)),
+        achieved=Tex(num(mot["delta"].value))),
         strings.get("findings_dynamics.methods").format(
-            merzalov=Markup(num(abs(100 * rows[1].relative), 2)), merzalov_sense=_sense_word(strings, rows[1]),
-            graphical=Markup(num(abs(100 * rows[2].relative), 2)), graphical_sense=_sense_word(strings, rows[2]))]
+            merzalov=Tex(num(abs(100 * rows[1].relative), 2)), merzalov_sense=_sense_word(strings, rows[1]),
+            graphical=Tex(num(abs(100 * rows[2].relative), 2)), graphical_sense=_sense_word(strings, rows[2]))]
     return PartContent("sections/dynamics.tex.j2", ctx, figures, tuple(concl))
 
 
-def _sense_word(strings, row: MethodRow) -> Markup:
+def _sense_word(strings, row: MethodRow) -> Tex:
     return strings.get("findings_dynamics.more" if row.relative > 0 else "findings_dynamics.less")
 
 

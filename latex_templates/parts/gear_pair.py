@@ -211,15 +211,15 @@ def content(project) -> PartContent:
 
 
 def _point_label(label: str):
-    from markupsafe import Markup
+    from ..render import Tex
     names = {"N1": "$N_1$", "N2": "$N_2$", "a": "$a$", "b": "$b$", "P": "$P$", "": ""}
-    return Markup(names[label])
+    return Tex(names[label])
 
 
 def _lam(v: float):
-    from markupsafe import Markup
+    from ..render import Tex
     if math.isinf(v):
-        return Markup(r"$-\infty$" if v < 0 else r"$\infty$")
+        return Tex(r"$-\infty$" if v < 0 else r"$\infty$")
     return v
 
 
@@ -246,7 +246,7 @@ def _alternative(pair) -> dict | None:
 
 def _conclusion(pair, failed, alt=None, language: str = "ru") -> str:
     """A sentence for the conclusions (trusted LaTeX, numbers with a decimal comma)."""
-    from markupsafe import Markup
+    from ..render import Tex
     from latex_templates.numbers import mnum
     g = pair.geometry
     text = (f"Спроектирована эвольвентная передача $z_1 = {g.z1}$, $z_2 = {g.z2}$, $m = {mnum(g.m)}$~мм "
@@ -266,7 +266,7 @@ def _conclusion(pair, failed, alt=None, language: str = "ru") -> str:
                 eps=mnum(alt["eps"], places(alt["eps"], 3)))
     else:
         text += " Все проверки качества зацепления выполнены."
-    return Markup(text)
+    return Tex(text)
 
 
 def _strings(language: str):

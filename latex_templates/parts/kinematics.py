@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from markupsafe import Markup
+from ..render import Tex
 
 from reportgen.calc import Var, record
 from reportgen.diagrams import build_diagrams
@@ -58,7 +58,7 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
     an = record(f"a^n_{{{rel}}}", "w**2 * l", "м/с²", w_exact, lv)
     comp_t = aplan.component(f"a^{{\\tau}}_{{{rel}}}")
     segt = Var("segt", segt_symbol, aplan.measured_mm(comp_t), "мм",
-               Markup(f"отрезок плана ускорений, изображающий $a^\\tau_{{{rel}}}$"))
+               Tex(f"отрезок плана ускорений, изображающий $a^\\tau_{{{rel}}}$"))
     erec = record(rf"\varepsilon_{{{k}}}", "segt * mu_a / l", "рад/с²", segt, lv,
                   mu_a=Var("mu_a", r"\mu_a", aplan.scale, "(м/с²)/мм", "масштабный коэффициент плана ускорений"),
                   meaning=f"угловое ускорение звена {k}")
@@ -137,7 +137,7 @@ def content(project) -> PartContent:
                 l = _len(body, P, Q)
                 comp = vplan.component(f"V_{{{Q}{P}}}")
                 seg = Var("seg", f"{comp.start}{comp.end}",
-                          vplan.measured_mm(comp), "мм", Markup(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
+                          vplan.measured_mm(comp), "мм", Tex(f"отрезок плана скоростей, изображающий $V_{{{Q}{P}}}$"))
                 lv = Var("l", f"l_{{{P}{Q}}}", l, "м", f"длина звена {P}{Q}")
                 omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
                 omega_recs.append(omega_rec)
@@ -154,7 +154,7 @@ def content(project) -> PartContent:
                 comp = vplan.component(f"V_{{{Hg}{G}}}")
                 gh = float(np.hypot(*(np.asarray(kin.points[H].pos[i]) - np.asarray(kin.points[G].pos[i]))))
                 seg = Var("seg", f"{comp.start}{comp.end}", vplan.measured_mm(comp), "мм",
-                          Markup(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
+                          Tex(f"отрезок плана скоростей, изображающий $V_{{{Hg}{G}}}$"))
                 lv = Var("l", f"l_{{{G}{H}}}", gh, "м", f"расстояние {G}{H} в данном положении")
                 omega_rec, w_exact = _omega_record(kin, i, k, seg, lv, mu_v)
                 omega_recs.append(omega_rec)
@@ -199,7 +199,7 @@ def content(project) -> PartContent:
     if strokes is not None:
         dg = build_diagrams(project.model, strokes, float(project.phi[0]), n=24)
         figures["kin_diagrams"] = diagrams_figure(dg)
-        L = Var("L", "L", dg.axis_mm, "мм", Markup("длина оси $\\varphi_1$, изображающая один оборот кривошипа"))
+        L = Var("L", "L", dg.axis_mm, "мм", Tex("длина оси $\\varphi_1$, изображающая один оборот кривошипа"))
         mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning="масштабный коэффициент угла поворота")
         mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning="масштабный коэффициент времени")
         H1 = Var("H1", "H_1", dg.H1, "мм", "полюсное расстояние графика скорости")
@@ -238,8 +238,8 @@ def content(project) -> PartContent:
         from ..render import Strings
         strings = Strings(project.task.document.language or "ru")
         concl.append(strings.get("findings.strokes").format(
-            work=Markup(num(strokes.working_deg)), idle=Markup(num(strokes.idle_deg)),
-            K=Markup(num(stroke_ctx["K"].value))))
+            work=Tex(num(strokes.working_deg)), idle=Tex(num(strokes.idle_deg)),
+            K=Tex(num(stroke_ctx["K"].value))))
     return PartContent("sections/kinematics.tex.j2", ctx, figures, tuple(concl))
 
 
@@ -251,7 +251,7 @@ def _construction(project, strokes):
     """The course's construction of the extreme positions, as sentences with their numbers (or None)."""
     from reportgen.kinematics.extremes import extreme_construction
     from ..numbers import num
-    from ..render import Strings
+    from ..render import Strings, Tex
     c = extreme_construction(project.model, strokes)
     if c is None:
         return None
@@ -261,12 +261,12 @@ def _construction(project, strokes):
         text = strings.get("marks.extremes.in_line").format(O=c.axis, A=c.pin, B=c.far, k=c.coupler)
         for phi, how, ob in c.positions:
             key = "marks.extremes.extended" if how == "extended" else "marks.extremes.folded"
-            text = Markup(text + " ") + strings.get(key).format(
-                O=c.axis, A=c.pin, B=c.far, AB=Markup(num(c.coupler_length * mu)), OA=Markup(num(c.crank_length * mu)),
-                OB=Markup(num(ob * mu)), phi=Markup(num(phi, 5)))
+            text = Tex(text + " ") + strings.get(key).format(
+                O=c.axis, A=c.pin, B=c.far, AB=Tex(num(c.coupler_length * mu)), OA=Tex(num(c.crank_length * mu)),
+                OB=Tex(num(ob * mu)), phi=Tex(num(phi, 5)))
         return text
     text = strings.get("marks.extremes.perpendicular").format(O=c.axis, A=c.pin, B=c.far, k=c.coupler,
-                                                               OB=Markup(num(c.positions[0][2] * mu)),
-                                                               OA=Markup(num(c.crank_length * mu)))
-    phis = [Markup(num(phi, 5)) for phi, _, _ in c.positions]
-    return Markup(text + " ") + strings.get("marks.extremes.perpendicular_at").format(phi1=phis[0], phi2=phis[1])
+                                                               OB=Tex(num(c.positions[0][2] * mu)),
+                                                               OA=Tex(num(c.crank_length * mu)))
+    phis = [Tex(num(phi, 5)) for phi, _, _ in c.positions]
+    return Tex(text + " ") + strings.get("marks.extremes.perpendicular_at").format(phi1=phis[0], phi2=phis[1])

@@ -14,10 +14,11 @@ import math
 import re
 
 import numpy as np
-from markupsafe import Markup
+from ..render import Tex
 
 from reportgen.balance import Balance, BalanceTerm
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.errors import InternalError
 from reportgen.numbers import clean
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
@@ -63,7 +64,7 @@ def _canon(name: str) -> str | None:
 
 def _check(rec: CalcRecord, expected: float, what: str) -> None:
     if not math.isclose(rec.value, expected, rel_tol=1e-9, abs_tol=1e-9 * max(1.0, abs(expected))):
-        raise RuntimeError(f"kinetostatics note: {what} printed as {rec.value!r}, the replica has {expected!r}")
+        raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
 def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counter, arms_shown: list
@@ -84,27 +85,27 @@ def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counte
         s = sym(t.name)
         F = Var("F", s, mag, "Н", _meaning(t.name, c in read_mags))
         h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
-                Markup(f"плечо силы ${s}$ относительно точки ${centre}$, измеренное на схеме"))
+                Tex(f"плечо силы ${s}$ относительно точки ${centre}$, измеренное на схеме"))
         arms_shown.append({"n": n, "name": t.name, "mm": abs(t.arm_mm_measured)})
         out.append((math.copysign(1.0, t.arm_mm_measured), F, h))
     return out, extra, through
 
 
-def _meaning(name: str, read: bool) -> Markup:
+def _meaning(name: str, read: bool) -> Tex:
     """The «где» phrase of a force by its solver name."""
     m = re.fullmatch(r"(G|Fи|F|Fпс|R)(\d*)(′?)", name.split(",")[0]) if ":" not in name else None
     s = sym(name)
     if name.startswith("Fпс"):
-        return Markup("сила производственного сопротивления")
+        return Tex("сила производственного сопротивления")
     if m and m.group(1) == "G":
-        return Markup(f"сила тяжести звена {m.group(2)}")
+        return Tex(f"сила тяжести звена {m.group(2)}")
     if m and m.group(1) == "Fи":
-        return Markup(f"сила инерции звена {m.group(2)}" + (", перенесённая на~плечо $h_\\text{{и}}$" if m.group(3) else ""))
+        return Tex(f"сила инерции звена {m.group(2)}" + (", перенесённая на~плечо $h_\\text{{и}}$" if m.group(3) else ""))
     if name.startswith("R"):
-        return Markup(f"реакция ${s}$" + (", найденная по~плану сил предыдущего шага" if read else ""))
+        return Tex(f"реакция ${s}$" + (", найденная по~плану сил предыдущего шага" if read else ""))
     if ":" in name:
-        return Markup(f"одна из~сил пары, заменяющей момент ${sym(name.split(':')[0])}$")
-    return Markup(f"сила ${s}$")
+        return Tex(f"одна из~сил пары, заменяющей момент ${sym(name.split(':')[0])}$")
+    return Tex(f"сила ${s}$")
 
 
 def _balance_terms(terms: list[tuple[float, Var, Var]]) -> tuple[BalanceTerm, ...]:
@@ -123,8 +124,8 @@ def _polygon_rows(polygon) -> list[list]:
     rows = []
     for v in list(polygon.vectors) + list(polygon.extra):
         dev = v.deviation_percent if math.isfinite(v.deviation_percent) and v.exact_value > 0 else None
-        rows.append([Markup(f"$\\bar {sym(v.name)}$"), _read_mm(polygon, v), v.read_value, v.exact_value,
-                     dev if dev is not None else Markup("---"), "найдена" if not v.known else "задана"])
+        rows.append([Tex(f"$\\bar {sym(v.name)}$"), _read_mm(polygon, v), v.read_value, v.exact_value,
+                     dev if dev is not None else Tex("---"), "найдена" if not v.known else "задана"])
     return rows
 
 
@@ -133,14 +134,14 @@ def _read_mm(polygon, v) -> float:
     return round(v.read_value / polygon.scale, 6)
 
 
-def _equation(eq: str) -> Markup:
+def _equation(eq: str) -> Tex:
     lhs = eq.replace(" = 0", "").split(" + ")
     parts = [f"\\bar {sym(x)}" for x in lhs]
     lines = [" + ".join(parts[i:i + 9]) for i in range(0, len(parts), 9)]
     if len(lines) == 1:
-        return Markup(f"\\[\n{lines[0]} = 0.\n\\]")
+        return Tex(f"\\[\n{lines[0]} = 0.\n\\]")
     body = " \\\\\n+ ".join(lines)
-    return Markup(f"\\begin{{multline*}}\n{body} = 0.\n\\end{{multline*}}")
+    return Tex(f"\\begin{{multline*}}\n{body} = 0.\n\\end{{multline*}}")
 
 
 def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
@@ -151,7 +152,7 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
             continue
         s = sym(v.name)
         ln = Var("len", f"l_{{{s}}}", _read_mm(polygon, v), "мм",
-                 Markup(f"длина вектора ${s}$ на плане сил"))
+                 Tex(f"длина вектора ${s}$ на плане сил"))
         rec = record(s, "len * mu_F", "Н", ln, mu_F=mu_f)
         _check(rec, v.read_value, f"the reading of {v.name}")
         recs.append(rec)
@@ -194,13 +195,13 @@ def content(project) -> PartContent:
                     f"длина звена {P}{sp.centre} на схеме")
             bal = Balance(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}}", f"R^{{\\tau}}_{{{sp.name[1:]}}}", "Н",
                           -1, l, _balance_terms(terms) + _couples(extra, mu_l, sp.link),
-                          Markup(f"касательная составляющая реакции ${sym(sp.name)}$"),
+                          Tex(f"касательная составляющая реакции ${sym(sp.name)}$"),
                           partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning="частичная сумма моментов", per_line=TERMS_PER_RECORD)
             sol = bal.solve()
             parts, rec = list(sol.parts), sol.result
             _check(rec, sp.tau_measured, f"R^τ {sp.name}")
             splits.append({"name": sp.name, "link": sp.link, "centre": sp.centre, "pair": P, "parts": parts,
-                           "rec": rec, "terms": terms, "through": [Markup(f"${sym(x)}$") for x in through],
+                           "rec": rec, "terms": terms, "through": [Tex(f"${sym(x)}$") for x in through],
                            "negative": rec.value < 0, "exact": sp.tau, "dev": sp.deviation_percent,
                            "balance": sol})
         slot = _slot_step(ks, grp, gg, counter, mu_l, read_mags) if gg.method == "exact-read" else None
@@ -212,7 +213,7 @@ def content(project) -> PartContent:
         groups_ctx.append({"key": gg.key, "tag": tag, "label": grp.label, "kind": gg.kind, "links": grp.links,
                            "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
                            "rows": _polygon_rows(gg.polygon), "reads": reads,
-                           "unknown": [Markup(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
+                           "unknown": [Tex(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
                            "mu_tr": ks.transmission_deg.get(gg.key), "slot": slot})
     crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
     lever_ctx = _lever(project, ks, counter, figures)
@@ -277,13 +278,13 @@ def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> 
         mom = float(rr[0] * F[1] - rr[1] * F[0])
         arm_mm = measure(abs(mom) / mag / mu, step) if mag > 0 else 0.0
         if arm_mm == 0.0:
-            through.append(Markup(f"${sym(a['name'])}$"))
+            through.append(Tex(f"${sym(a['name'])}$"))
             continue
         nmb = counter.next()
         s = sym(a["name"])
         terms.append(BalanceTerm(1 if mom > 0 else -1, Var("F", s, mag, "Н", _meaning(a["name"], bool(c))),
                                  Var("h", f"h_{{{nmb}}}", arm_mm, "мм",
-                                     Markup(f"плечо силы ${s}$ относительно точки ${frame[0].joint}$, измеренное на схеме"))))
+                                     Tex(f"плечо силы ${s}$ относительно точки ${frame[0].joint}$, измеренное на схеме"))))
         arms.append(nmb)
     extra = tuple(BalanceTerm(1 if cp["value"] >= 0 else -1,
                               Var("M", sym(cp["name"]), abs(cp["value"]), "Н·м",
@@ -294,11 +295,11 @@ def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> 
               f"плечо реакции относительно точки {frame[0].joint} (длина {frame[0].joint}{P.joint} на схеме)")
     name = pair_name(k2, k3)
     sol = Balance(f"\\sum M_{{{frame[0].joint}}}^{{({k3})}}", sym(name), "Н", 1, arm,
-                  tuple(terms) + extra, Markup(f"реакция ${sym(name)}$, перпендикулярная кулисе"),
+                  tuple(terms) + extra, Tex(f"реакция ${sym(name)}$, перпендикулярная кулисе"),
                   partial=f"\\Sigma^{{({k3})}}", partial_unit="Н·мм", partial_meaning="частичная сумма моментов",
                   per_line=TERMS_PER_RECORD).solve()
     exact = float(np.asarray(P.on(k3)[0]) @ d)
-    return {"balance": sol, "parts": list(sol.parts), "rec": sol.result, "exact": exact, "name": Markup(f"${sym(name)}$"),
+    return {"balance": sol, "parts": list(sol.parts), "rec": sol.result, "exact": exact, "name": Tex(f"${sym(name)}$"),
             "slot_link": k3, "block": k2, "C": frame[0].joint, "A": P.joint, "through": through,
             "negative": sol.value < 0}
 
@@ -338,13 +339,13 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
                        meaning=f"плечо переноса силы инерции звена {k}")
             ent["h"] = h
             ent["h_mm"] = record(f"h_{{\\text{{и}}{k}}}^{{\\text{{сх}}}}", "h / mu_l", "мм", mu_l, h=h,
-                                 meaning=f"плечо переноса на схеме")
+                                 meaning="плечо переноса на схеме")
             ent["repl"] = {"measured": x.h_mm_measured, "swing": x.swing_point is not None,
                            "sense": "против" if x.moment > 0 else "по"}
         links.append(ent)
         rows.append([k, b.mass, b.inertia, ent["G"].value if ent["G"] else 0.0, a_s,
                      ent["F"].value if ent["F"] else 0.0, eps, ent["M"].value if ent["M"] else 0.0,
-                     ent["h"].value if ent["h"] else Markup("---")])
+                     ent["h"].value if ent["h"] else Tex("---")])
     not_replaced = [k for k in lk.moving
                     if lk.bodies[k].inertia > 0 and k not in repl and
                     abs(float(np.asarray(kin.links[k].epsilon)[0])) > 0 and lk.bodies[k].mass > 0]
@@ -389,7 +390,7 @@ def _resistance(project, ks) -> list[dict]:
                     else "размах выходного звена")
             frac = record("s/H", "s / H", "", s, H, meaning="доля пройденного хода")
             kf = float(law_value(ld.law, np.array([frac.value]))[0])
-            kv = Var("k", "k", kf, "", Markup("доля наибольшего сопротивления по~закону нагружения"))
+            kv = Var("k", "k", kf, "", Tex("доля наибольшего сопротивления по~закону нагружения"))
             if is_force:
                 fmax = Var("Fmax", "F_{\\text{пс}}^{\\max}", ld.force, "Н", "наибольшая сила сопротивления")
                 rec = record("F_{\\text{пс}}", "Fmax * k", "Н", fmax, kv, meaning="сила производственного сопротивления")
@@ -491,12 +492,12 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     M = record("M_{\\text{ур}}", "F * l_OA", "Н·м", l_oa, F=F, meaning="уравновешивающий момент")
     _check(M, c.balancing_moment_measured, "M_ур (groups)")
     mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", "масштабный коэффициент плана сил")
-    return {"F": F, "M": M, "parts": parts, "through": [Markup(f"${sym(x)}$") for x in through],
+    return {"F": F, "M": M, "parts": parts, "through": [Tex(f"${sym(x)}$") for x in through],
             "balance": sol,
             "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
-            "pin_forces": [Markup(f"${sym(a['name'])}$") for a in arrows if a["role"] == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
+            "pin_forces": [Tex(f"${sym(a['name'])}$") for a in arrows if a["role"] == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
             "R_couple": float(np.hypot(*r.frame_reaction_with_moment[0]))}
 
 
@@ -535,14 +536,14 @@ def _lever(project, ks, counter, figures) -> dict:
             s = sym(t.name)
             Fv = Var("F", s, t.magnitude, "Н", _meaning(t.name, False))
             h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
-                    Markup(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
+                    Tex(f"плечо силы ${s}$ относительно полюса $p$ рычага"))
             terms.append((math.copysign(1.0, t.arm_mm_measured), Fv, h))
             ent["h"] = f"h_{{{n}}}"
         loads.append(ent)
     mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", "масштабный коэффициент повёрнутого плана скоростей")
     # moments about the pole, counter-clockwise positive; the direct couples enter as P/μv
     extra = tuple(BalanceTerm(1 if p >= 0 else -1,
-                              Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Markup(f"мощность пары ${sym(name)}$")),
+                              Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Tex(f"мощность пары ${sym(name)}$")),
                               divisor=mu) for name, p in L.direct if p != 0.0)
     pa = Var("pa", f"p{r.crank_pin.lower()}", L.pa_mm_measured, "мм",
              f"отрезок плана, изображающий скорость точки {r.crank_pin}")
@@ -587,7 +588,7 @@ def _cycle(project, ks, figures) -> dict:
     for j in range(len(at.phi)):
         mg, mz = float(at.groups[j]), float(at.zhukovsky[j])
         dev = clean(100.0 * (mg - mz) / mz, 100.0) if mz != 0 else 0.0
-        rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Markup(f"${_sci(dev)}$")])
+        rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Tex(f"${_sci(dev)}$")])
     return {"rows": rows, "max": float(np.max(dense.groups)), "min": float(np.min(dense.groups)),
             "mean": float(np.mean(np.asarray(dense.groups)[:-1]))}
 
@@ -602,8 +603,8 @@ def _conclusions(project, ks, comparison) -> tuple[str, ...]:
     from ..render import Strings
     strings = Strings(project.task.document.language or "ru")
     out = [strings.get("findings_kinetostatics.balancing").format(
-        phi=Markup(num(ks.phi_deg)), M=Markup(num(ks.balancing_moment, 6)),
-        Mz=Markup(num(ks.balancing_moment_zhukovsky, 6)), delta=Markup(num(comparison["delta"].value, 2)))]
+        phi=Tex(num(ks.phi_deg)), M=Tex(num(ks.balancing_moment, 6)),
+        Mz=Tex(num(ks.balancing_moment_zhukovsky, 6)), delta=Tex(num(comparison["delta"].value, 2)))]
     if any(mu < WARN_TRANSMISSION_DEG for mu in ks.transmission_deg.values()):
         out.append(strings.get("findings_kinetostatics.dead_centre"))
     return tuple(out)

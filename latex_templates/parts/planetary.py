@@ -7,11 +7,10 @@ through calculation records or filters.
 """
 from __future__ import annotations
 
-import math
 
-from markupsafe import Markup
+from ..render import Tex
 
-from reportgen.calc import CalcRecord, Var, record
+from reportgen.calc import CalcRecord, Var
 from reportgen.planetary.schemes import expand
 
 from . import PartContent
@@ -88,7 +87,7 @@ def planetary_records(stage) -> dict[str, object]:
     if sch.two_row:
         sign = "+" if asm.sign == "+" else "-"
         g = Var("g", r"\text{НОД}(z_2, z_{2'})", asm.g, "", "наибольший общий делитель чисел зубьев венцов сателлита")
-        expr = f"(z1 * z2p {sign} z3 * z2) / (K * g)" if sign == "+" else f"abs(z1 * z2p - z3 * z2) / (K * g)"
+        expr = f"(z1 * z2p {sign} z3 * z2) / (K * g)" if sign == "+" else "abs(z1 * z2p - z3 * z2) / (K * g)"
         r["assembly"] = _rec("C", expr, "", 4, "", z1=zv["z1"], z2p=zv["z2p"], z3=zv["z3"], z2=zv["z2"], K=K, g=g)
     else:
         r["assembly"] = _rec("C", "(z1 + z3) / K", "", 4, "", z1=zv["z1"], z3=zv["z3"], K=K)
@@ -162,7 +161,7 @@ def content(project) -> PartContent:
         crank = {"omega": w, "dev": dev}
     z = expand(d.scheme, d.z)
     labels = d.scheme.labels
-    z_row = [(Markup(f"$z_{{{lab.replace('′', chr(39))}}}$"), zz) for lab, zz in zip(labels, d.z)]
+    z_row = [(Tex(f"$z_{{{lab.replace('′', chr(39))}}}$"), zz) for lab, zz in zip(labels, d.z)]
     alternatives = []
     for cand in d.alternatives:
         alternatives.append(("/".join(str(v) for v in cand.z), cand.satellites, abs(cand.ratio),
@@ -174,11 +173,11 @@ def content(project) -> PartContent:
         what = it.what.replace("′", "'")
         if it.kind == "internal mesh":
             a_, b_ = what.split("−")
-            sym = Markup(f"z_{{{a_}}} - z_{{{b_}}}")
+            sym = Tex(f"z_{{{a_}}} - z_{{{b_}}}")
         else:
-            sym = Markup(f"z_{{{what}}}")
+            sym = Tex(f"z_{{{what}}}")
         undercut.append({"sym": sym, "value": it.value, "limit": it.limit, "holds": it.holds,
-                         "kind": Markup(kinds[it.kind])})
+                         "kind": Tex(kinds[it.kind])})
     figures = {}
     if stage.triangle is not None:
         figures["planetary_scheme"] = planetary_figure(stage)
@@ -200,8 +199,8 @@ def _coax_text(d) -> dict:
     left_num = f"{z1} {s1} {z2}"
     right_sym = f"z_3 {s2} {p_sym}"
     right_num = f"{z3} {s2} {p_val}"
-    return {"left_sym": Markup(left_sym), "left_num": Markup(left_num), "left": d.coaxial.left,
-            "right_sym": Markup(right_sym), "right_num": Markup(right_num), "right": d.coaxial.right,
+    return {"left_sym": Tex(left_sym), "left_num": Tex(left_num), "left": d.coaxial.left,
+            "right_sym": Tex(right_sym), "right_num": Tex(right_num), "right": d.coaxial.right,
             "holds": d.coaxial.holds}
 
 
@@ -215,4 +214,4 @@ def _conclusion(stage, tr) -> str:
     if tr is not None:
         text += (f" По~треугольнику скоростей $u_\\text{{гр}} = {mnum(tr['u_graph'].value, 5)}$ "
                  f"(расхождение ${tr['diff'].result_number_latex()}$~\\%).")
-    return Markup(text)
+    return Tex(text)

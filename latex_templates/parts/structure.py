@@ -63,11 +63,11 @@ def content(project) -> PartContent:
                        "inner": [f"{p.point}" for p in inner], "outer": [f"{p.point}" for p in outer]})
     ctx = {"links": links, "pairs": pairs, "W": W, "structure": st, "groups": groups,
            "formula": st.formula, "driver": st.groups[0].links[0]}
-    from markupsafe import Markup
+    from ..render import Tex
     from ..render import Strings
     strings = Strings(project.task.document.language or "ru")
     conclusions = (strings.get("findings.structure").format(W=st.W, formula=st.formula,
-                                                             cls=Markup(_roman(st.mechanism_class))),)
+                                                             cls=Tex(_roman(st.mechanism_class))),)
     return PartContent("sections/structure.tex.j2", ctx, figures, conclusions)
 
 

@@ -28,7 +28,7 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
     called before each part."""
     from ..project import Project
     from ..taskfile import load_task
-    from . import runs
+    from . import runs, speed
 
     say = progress or (lambda name: None)
     t0 = time.perf_counter()
@@ -51,10 +51,14 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
     if project.task.planetary is not None:
         say("planetary search")
         rep.tables.append(runs.planetary_table(project, (60, 120, 250) if quick else (60, 120, 250, 500, 1000)))
-    say("stages of reportgen build")
-    rep.tables.append(runs.build_table(Path(task_path), quick))
+    say("the build's critical path")
+    rep.tables.append(speed.critical_path_table(Path(task_path), quick))
+    say("cold, warm and incremental builds")
+    rep.tables.append(speed.builds_table(Path(task_path), quick))
+    say("the solver")
+    rep.tables.append(speed.solver_table(Path(task_path), quick))
     say("pylinkage")
-    rep.tables.append(runs.pylinkage_table(36 if quick else 360))
+    rep.tables.append(speed.pylinkage_table(36 if quick else 360, 5 if quick else 25))
     rep.seconds = time.perf_counter() - t0
     return rep
 

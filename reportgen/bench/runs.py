@@ -9,9 +9,6 @@ this module measures the press example (or the example given) across the stages 
 from __future__ import annotations
 
 import math
-import shutil
-import tempfile
-from pathlib import Path
 
 import numpy as np
 
@@ -207,104 +204,4 @@ def planetary_table(project, bounds) -> Table:
     dt, d = best_time(lambda: synthesize(scheme, target, tol, p.satellites, p.module), 3)
     t.notes.append(f"what `build` runs (synthesize: bounds grow from 128 until 6 sets are found): {ms(dt)} ms, "
                    f"z = {'/'.join(map(str, d.z))}, K = {d.satellites}")
-    return t
-
-
-# -- 5. stages of `reportgen build` --------------------------------------------------------------------
-
-def build_table(task_path: Path, quick: bool) -> Table:
-    from ..commands.build import build
-
-    pdf = not quick and shutil.which("latexmk") is not None
-    t = Table("build", f"Wall time of the stages of `reportgen build {task_path.parent.name}/{task_path.name}`",
-              ["stage", "time, s"])
-    with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
-        out = Path(tmp) / "out"
-        try:
-            times = build(str(task_path), out, quiet=True, pdf=pdf, sheets=not quick)
-        except Exception as exc:  # a benchmark reports a failed build, it does not hide the other tables
-            t.notes.append(f"the build failed: {type(exc).__name__}: {str(exc).splitlines()[0][:300]}")
-            return t
-    for k, v in times.items():
-        t.add(k, sec(v))
-    t.add("total", sec(sum(times.values())))
-    if not pdf:
-        t.notes.append("LaTeX not run (" + ("--quick" if quick else "latexmk not found") + ")")
-    if quick:
-        t.notes.append("sheets not drawn (--quick)")
-    t.notes.append("one cold run in a fresh process's first build: imports and caches count here")
-    return t
-
-
-# -- 6. pylinkage side by side -------------------------------------------------------------------------
-
-FOUR_BAR = (0.1, 0.35, 0.3, 0.4)   # crank, coupler, rocker, frame (m): a Grashof crank–rocker
-
-
-def _four_bar_model(a, b, c, d, omega):
-    from ..kinematics import build_model
-    from ..taskfile import loads_task
-    from ..zoo import four_bar
-    # sketch at φ1 = 0: A = (a, 0); B above the frame
-    text = four_bar(a, b, c, d, phi_deg=0.0, omega=omega, name=None, analysis=None)
-    return build_model(loads_task(text).mechanism)
-
-
-def pylinkage_table(n: int = 360) -> Table:
-    t = Table("pylinkage", f"The same four-bar (crank–rocker {'/'.join(f'{v:g}' for v in FOUR_BAR)} m, "
-              f"ω1 = 10 rad/s) over {n} positions: pylinkage and reportgen",
-              ["solver", "positions + v + a, ms", "time / reportgen", "max |Δ pos|, m", "max |Δ v|, m/s",
-               "max |Δ a|, m/s²"])
-    try:
-        import pylinkage
-        from pylinkage.actuators import Crank
-        from pylinkage.components import Ground
-        from pylinkage.dyads import RRRDyad
-        from pylinkage.simulation import Linkage
-    except ImportError:
-        t.notes.append("pylinkage is not installed: `pip install 'reportgen[bench]'` (or `pip install pylinkage`) "
-                       "to compare")
-        return t
-    a, b, c, d = FOUR_BAR
-    omega = 10.0
-    phi = np.arange(1, n + 1) * 2 * math.pi / n      # pylinkage turns the crank before it solves
-    model = _four_bar_model(a, b, c, d, omega)
-    t_rg, r = best_time(lambda: model.solve(phi), 7)
-    B0 = r.points["B"].pos[-1]
-
-    def make():
-        O, C = Ground(0.0, 0.0, name="O"), Ground(d, 0.0, name="C")
-        cr = Crank(O, a, angular_velocity=2 * math.pi / n, initial_angle=0.0, name="A")
-        rr = RRRDyad(cr.output, C, distance1=b, distance2=c, x=float(B0[0]), y=float(B0[1]), name="B")
-        lk = Linkage([O, C, cr, rr], name="four-bar")
-        lk.set_input_velocity(cr, omega=omega)
-        return lk
-
-    def py_loop():
-        out = list(make().step_with_derivatives(iterations=n))
-        return (np.array([o[0][3] for o in out]), np.array([o[1][3] for o in out]),
-                np.array([o[2][3] for o in out]))
-
-    def py_fast():
-        p, v, acc = make().step_fast_with_kinematics(iterations=n)
-        return p[:, 3], v[:, 3], acc[:, 3]
-
-    t.add("reportgen (vectorised closed form + linear systems)", ms(t_rg), "1", "—", "—", "—")
-    P, V, A = r.points["B"].pos, r.points["B"].vel, r.points["B"].acc
-    for label, fn in (("pylinkage step_with_derivatives", py_loop), ("pylinkage step_fast_with_kinematics", py_fast)):
-        try:
-            dt, (p, v, acc) = best_time(fn, 5)
-        except Exception as exc:  # an optional third-party path: report it, do not fail the run
-            t.add(label, "failed", "", type(exc).__name__, "", "")
-            continue
-        t.add(label, ms(dt), f"{dt / t_rg:.1f}", rel(float(np.abs(p - P).max())), rel(float(np.abs(v - V).max())),
-              rel(float(np.abs(acc - A).max())))
-    t.notes.append(f"pylinkage {getattr(pylinkage, '__version__', '?')}; Δ = the largest difference of point B "
-                   f"between the two (|a_B| up to {float(np.hypot(*A.T).max()):.1f} m/s²); best of 5–7 runs, the "
-                   "model built once outside the timing for reportgen, inside it for pylinkage (its linkage is "
-                   "stateful)")
-    try:
-        import numba  # noqa: F401
-    except ImportError:
-        t.notes.append("numba is not installed, so pylinkage's fast path runs as plain Python")
     return t

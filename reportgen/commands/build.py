@@ -3,23 +3,28 @@ results.json.
 
 Everything is written into a temporary folder beside OUT and moved into place at the end, so a
 failure never leaves a half-written OUT. A failed LaTeX run keeps its folder as ``OUT.failed/`` (the
-.tex and the log) and says where; bad input (exit 2) leaves nothing behind.
+.tex and the log) and says where; bad input (exit 2) leaves nothing behind. Which folders OUT may
+be (new, empty or an earlier reportgen output with its manifest) is ``outdir.py``'s rule.
 """
 from __future__ import annotations
 
 import argparse
-import os
 import shutil
-import sys
 import tempfile
 import time
-from contextlib import contextmanager
+import traceback
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from ..errors import BuildError, OptionError, ReportgenInputError
+from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
-from ..results import build_results, dumps
 from ..taskfile import load_task
+from .outdir import check_output_folder, keep_failed, replace_folder
+
+if TYPE_CHECKING:
+    from .pipeline import Timeline
+
+ERROR_LOG = "error.log"  # in OUT.failed/ when a stage other than LaTeX failed
 
 
 def register(sub) -> None:
@@ -30,119 +35,63 @@ def register(sub) -> None:
     p.add_argument("--no-pdf", action="store_true", help="write report.tex and figures but do not run LaTeX")
     p.add_argument("--no-sheets", action="store_true", help="do not draw the DXF sheets")
     p.add_argument("--latexmk", default="latexmk", help="the latexmk program (default: latexmk)")
+    p.add_argument("--no-cache", action="store_true",
+                   help="neither read nor write the build cache (default: $XDG_CACHE_HOME/reportgen)")
+    p.add_argument("--watch", action="store_true",
+                   help="build, then rebuild whenever the task file changes (Ctrl-C ends)")
     p.set_defaults(func=run)
 
 
-class Progress:
-    """Prints each stage with the time it took."""
-
-    def __init__(self, quiet: bool):
-        self.quiet = quiet
-        self.times: dict[str, float] = {}
-
-    @contextmanager
-    def stage(self, name: str):
-        t0 = time.perf_counter()
-        if not self.quiet:
-            print(f"  {name} …", end="", flush=True)
-        try:
-            yield
-        except BaseException:
-            if not self.quiet:
-                print(" failed", flush=True)
-            raise
-        dt = time.perf_counter() - t0
-        self.times[name] = dt
-        if not self.quiet:
-            print(f" {dt:.2f} s", flush=True)
-
-
 def _designation(task) -> str:
-    return "ТММ.КП.00.00.000 ПЗ"
+    """The designation of the note: [document] code with « ПЗ» (reportgen.task.Document.note_code)."""
+    return task.document.note_code()
 
 
 def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, sheets: bool = True,
-          latexmk: str = "latexmk") -> dict[str, float]:
-    """Build everything into ``out``; returns the time of each stage."""
-    progress = Progress(quiet)
+          latexmk: str = "latexmk", cache: bool = False, timeline: "Timeline | None" = None) -> dict[str, float]:
+    """Build everything into ``out``; returns the time of each stage (``timeline`` gets the spans:
+    what ran in parallel, see :mod:`reportgen.commands.pipeline`); ``cache``: read and write the
+    build cache (:mod:`reportgen.cache`; the command line's default).
+
+    ``out`` must pass the output-folder rule (:mod:`reportgen.commands.outdir`) before anything is
+    written."""
+    from .. import cache as build_cache
+    from . import pipeline
+
+    progress = timeline if timeline is not None else pipeline.Timeline(quiet)
     with progress.stage("task"):
         task = load_task(task_path)
     project = Project(task)
-    out = out.resolve()
-    parent = out.parent
-    if not parent.is_dir():
-        raise OptionError("--out", f"the folder {parent} does not exist", "a path in an existing folder")
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=parent))
+    out = check_output_folder(out, Path(task_path))
+    store = build_cache.open_cache(task_path, pdf=pdf, sheets=sheets, latexmk=latexmk) if cache else None
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
     try:
-        with progress.stage("solve"):
-            results = build_results(project)
-        if task.mechanism is not None or task.gears is not None or task.planetary is not None:
-            _note(project, tmp, progress, pdf, latexmk)
-        if sheets:
-            _sheets(project, tmp, progress)
-        (tmp / "results.json").write_text(dumps(results), encoding="utf-8")
+        if store is not None and store.restore_build(tmp):
+            progress.spans.append(pipeline.Span("from the cache", pipeline.MAIN, progress.origin, time.perf_counter()))
+            if not quiet:
+                print("  unchanged task: outputs from the cache", flush=True)
+        else:
+            pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
+            if store is not None:
+                store.store_build(tmp)
+    except ReportgenInputError:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
     except BuildError as exc:
-        failed = out.with_name(out.name + ".failed")
-        shutil.rmtree(failed, ignore_errors=True)
-        tmp.rename(failed)
+        failed = keep_failed(tmp, out)
         kept = (exc.kept or "").replace(str(tmp), str(failed)) or str(failed)
         raise BuildError(exc.stage, exc.problem.replace(str(tmp), str(failed)), kept) from None
+    except Exception as exc:  # any other failure of a stage (a ReportgenError or a bug): keep what was made
+        (tmp / ERROR_LOG).write_text(traceback.format_exc(), encoding="utf-8")
+        failed = keep_failed(tmp, out)
+        problem = str(exc) if isinstance(exc, ReportgenError) else f"{type(exc).__name__}: {exc}"
+        raise BuildError(progress.current or "build", problem,
+                         f"what was made, in {failed} ({ERROR_LOG}: the error and where it happened)") from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    _replace_dir(tmp, out)
+    replace_folder(tmp, out)
     return progress.times
-
-
-def _note(project: Project, tmp: Path, progress: Progress, pdf: bool, latexmk: str) -> None:
-    from latex_templates import NoteBuilder
-    from latex_templates.assignment import assignment_section, introduction_paragraphs
-    from latex_templates.compose import compose
-
-    with progress.stage("note: sections and figures"):
-        from latex_templates.render import Strings
-        sections, left_out = compose(project, Strings(project.task.document.language or "ru"))
-        note = NoteBuilder(project.task.document, designation=_designation(project.task),
-                           introduction=introduction_paragraphs(project, left_out),
-                           conclusions=[c for s in sections for c in s.conclusions],
-                           assignment=assignment_section(project))
-        for s in sections:
-            note.add_section(s.section)
-        note.render(tmp)
-    if pdf:
-        with progress.stage("note: LaTeX"):
-            try:
-                note.build(tmp, latexmk=latexmk)
-            except BuildError as exc:
-                raise BuildError("LaTeX", exc.problem, exc.kept) from None
-
-
-def _sheets(project: Project, tmp: Path, progress: Progress) -> None:
-    from drawings.preview import render_png
-    from drawings.sheets import available_sheets
-
-    todo = available_sheets(project)
-    if not todo:
-        return
-    folder = tmp / "sheets"
-    folder.mkdir()
-    for i, (stem, mod) in enumerate(todo, start=1):
-        with progress.stage(f"sheet {i}: {stem}"):
-            sheet = mod.draw(project, i, len(todo))
-            dxf = folder / f"{stem}.dxf"
-            sheet.save(dxf)
-            render_png(dxf, folder / f"{stem}.png", dpi=60)
-
-
-def _replace_dir(tmp: Path, out: Path) -> None:
-    """Move ``tmp`` to ``out``, replacing an old ``out`` only once the new one is complete."""
-    old = None
-    if out.exists():
-        old = out.with_name(f".{out.name}.old-{os.getpid()}")
-        out.rename(old)
-    tmp.rename(out)
-    if old is not None:
-        shutil.rmtree(old, ignore_errors=True)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -150,7 +99,11 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         print(f"reportgen build {args.task} → {out}/")
     t0 = time.perf_counter()
-    build(args.task, out, quiet=args.quiet, pdf=not args.no_pdf, sheets=not args.no_sheets, latexmk=args.latexmk)
+    if args.watch:
+        from .watch import watch
+        return watch(args, build)
+    build(args.task, out, quiet=args.quiet, pdf=not args.no_pdf, sheets=not args.no_sheets, latexmk=args.latexmk,
+          cache=not args.no_cache)
     if not args.quiet:
         made = (["report.pdf"] if not args.no_pdf else ["report.tex"]) + ([] if args.no_sheets else ["sheets/"])
         print(f"done in {time.perf_counter() - t0:.1f} s: " + ", ".join(f"{out}/{m}" for m in made + ["results.json"]))

@@ -7,7 +7,7 @@ import json
 import math
 
 from ..errors import OptionError, PlanetarySynthesisError, TaskError
-from ..planetary.drive import drive_check, drive_ratio
+from ..planetary.drive import DEFAULT_INPUT_OMEGA, drive_check, drive_ratio, input_speed
 from ..planetary.results import planetary_block
 from ..planetary.schemes import SCHEMES, expand
 from ..planetary.search import PlanetaryDesign, evaluate, synthesize
@@ -36,7 +36,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--z", nargs="+", default=None, metavar="Z",
                    help="check this tooth set (z1 z2 z3 or z1 z2 z2′ z3) instead of searching")
     p.add_argument("--alternatives", default="5", help="how many next candidates to list (default 5)")
-    p.add_argument("--motor-rpm", default=None, help="motor speed, rpm (for --ratio auto)")
+    p.add_argument("--motor-rpm", default=None,
+                   help="motor speed, rpm: for --ratio auto, and the input speed of the velocity triangle "
+                        f"(without it: {DEFAULT_INPUT_OMEGA:g} rad/s, as the build)")
     p.add_argument("--open", nargs=2, default=None, metavar=("Z1", "Z2"),
                    help="tooth numbers of the open pair, z1 driving (for --ratio auto)")
     p.add_argument("--omega-crank", default=None, help="crank speed ω1, rad/s (for --ratio auto)")
@@ -81,7 +83,10 @@ def _design(args: argparse.Namespace):
     check = drive_check(drive, design.ratio) if drive is not None else None
     triangle = None
     if module is not None:
-        w_in = drive.omega_planetary_in if drive is not None else 1.0
+        motor = None if args.motor_rpm is None else _number("--motor-rpm", args.motor_rpm)
+        if motor is not None and not motor > 0:
+            raise OptionError("--motor-rpm", f"{args.motor_rpm!r}", "a motor speed > 0, rpm")
+        w_in, _ = input_speed(drive, motor)   # the build's rule: the motor's speed when given
         triangle = velocity_triangle(design, w_in)
     return design, check, triangle
 
@@ -134,7 +139,7 @@ def summary(design: PlanetaryDesign, drive=None, triangle=None) -> str:
                      f"ω1 achieved {drive.omega_crank_achieved:.4f} 1/s ({drive.deviation * 100:+.2f} %)")
     if triangle is not None:
         t = triangle
-        lines.append(f"  triangle   scale {t.scale_label}; v_A = {t.v_a:.4f} m/s as {t.vector_mm:g} mm; "
+        lines.append(f"  triangle   ω1 = {abs(t.omega1):.4g} 1/s; scale {t.scale_label}; v_A = {t.v_a:.4f} m/s as {t.vector_mm:g} mm; "
                      f"v_B read {t.v_b_mm_read:.2f} mm = {t.v_b:.4f} m/s; ω_H = {t.omega_h:.3f} 1/s; "
                      f"u = {t.ratio_graphical:.3f} ({t.difference_percent:+.3f} % from analytic)")
     lines.append("  valid" if design.valid else "  NOT VALID: see the conditions marked FAILS")

@@ -4,7 +4,6 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import sys
 import tempfile
 
 from ..errors import OptionError

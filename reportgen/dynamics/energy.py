@@ -9,18 +9,12 @@ is exact to the quadrature's precision wherever the grid falls.
 """
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.optimize import minimize_scalar
-
+from ..roots import EXTREME_XTOL, extremes
 from .cycle import TWO_PI, Cycle
-from .quadrature import DEFAULT_ORDER, cumulative, integrate_intervals, split_at
-
-#: Absolute tolerance on θ (rad) when an extreme between grid nodes is refined (the value near an
-#: extreme errs by the square of it).
-EXTREME_XTOL = 1e-9
+from .quadrature import DEFAULT_ORDER, cumulative, gauss_legendre, integrate_intervals, split_at
 
 
 class EnergyProfile:
@@ -52,7 +46,7 @@ class EnergyProfile:
         t = np.atleast_1d(np.asarray(theta, dtype=float))
         j = np.clip(np.searchsorted(self.nodes, t, side="right") - 1, 0, self.nodes.size - 1)
         pl, pr, owner = split_at(self.nodes[j], t, self.cycle.breaks)
-        x, w = np.polynomial.legendre.leggauss(self.order)
+        x, w = gauss_legendre(self.order)
         half = 0.5 * (pr - pl)
         gl = (0.5 * (pr + pl))[:, None] + half[:, None] * x[None, :]
         r = self.cycle.reduced(np.concatenate((gl.ravel(), t)))
@@ -67,28 +61,12 @@ class EnergyProfile:
 
 
 def extreme(g: Callable[[np.ndarray], np.ndarray], nodes: np.ndarray, values: np.ndarray,
-            kind: str) -> tuple[float, float]:
+             kind: str) -> tuple[float, float]:
     """(θ, g(θ)) of the largest (``kind`` = "max") or smallest value of a continuous periodic g:
-    the best node, then Brent's bounded search on each neighbouring interval (g is smooth inside
-    an interval between nodes, since the break angles are nodes)."""
-    s = 1.0 if kind == "max" else -1.0
-    j = int(np.argmax(s * values))
-    best_t, best_v = float(nodes[j]), float(values[j])
-    last = nodes.size - 1
-    pairs = [(j - 1, j), (j, j + 1)]
-    if j in (0, last):          # 0 and 2π are the same position of a periodic g
-        pairs = [(0, 1), (last - 1, last)]
-    for lo, hi in pairs:
-        if lo < 0 or hi > last:
-            continue
-        a, b = float(nodes[lo]), float(nodes[hi])
-        if b - a <= EXTREME_XTOL:
-            continue
-        r = minimize_scalar(lambda t: -s * float(g(np.array([t]))[0]), bounds=(a, b), method="bounded",
-                            options={"xatol": EXTREME_XTOL})
-        v = -s * float(r.fun)
-        if s * v > s * best_v:
-            best_t, best_v = float(r.x), v
-    if not math.isfinite(best_v):
-        raise ArithmeticError("a non-finite value in the search for an extreme")
-    return best_t, best_v
+    the best node, then a vectorised search on each neighbouring interval (g is smooth inside an
+    interval between nodes, since the break angles are nodes; see :func:`reportgen.roots.extremes`,
+    which also serves several searches with one evaluation per round)."""
+    return extremes(lambda t: (g(t),), nodes, [(lambda st: st[0], values, kind)])[0]
+
+
+__all__ = ["EnergyProfile", "extreme", "extremes", "EXTREME_XTOL"]

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 
 from .errors import DynamicsInputError
+from ..errors import ParameterError
 
 #: Radial thickness of a rim over its outer radius.
 RIM_THICKNESS_RATIO = 0.15
@@ -44,7 +45,7 @@ def flywheel_size(J: float, shape: str = "disk", density: float = 7860.0, width_
     if not (width_ratio > 0 and math.isfinite(width_ratio)):
         raise DynamicsInputError("dynamics.flywheel.width_ratio", f"{width_ratio!r} is not a ratio", "a number > 0")
     if not (0 < rim_thickness_ratio <= 1):
-        raise ValueError("rim_thickness_ratio must be in (0, 1]")
+        raise ParameterError("rim_thickness_ratio", rim_thickness_ratio, "a ratio in (0, 1]")
     J = max(float(J), 0.0)
     k = 1.0 if shape == "disk" else rim_thickness_ratio
     shape_factor = k * (1.0 - (1.0 - k) ** 4)

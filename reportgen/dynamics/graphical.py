@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .cycle import TWO_PI, Cycle
+from ..geometry import readonly as _ro
 
 #: Reading accuracy of a length measured on the sheet, mm.
 READING_MM = 0.5
@@ -109,12 +110,6 @@ def tangent_slopes(mu_J: float, mu_E: float, omega_m: float, delta: float) -> tu
 def flywheel_from_KL(KL_mm: float, mu_E: float, omega_m: float, delta: float) -> float:
     """J_fly = KL·μE / (ω_m²·δ), kg·m² (seed 000: 102.418·24.544/(18²·0.05) = 155.17)."""
     return KL_mm * mu_E / (omega_m * omega_m * delta)
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def replica_positions(cycle: Cycle, positions: int) -> np.ndarray:

@@ -16,12 +16,12 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
 
-from .cycle import TWO_PI, Cycle
-from .energy import EnergyProfile, extreme
+from .cycle import Cycle
+from ..roots import brent_root, extremes
+from .energy import EnergyProfile
 from .errors import DynamicsInputError
+from ..errors import ComputationError
 
 
 @dataclass(frozen=True)
@@ -63,19 +63,17 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
     u_hi = max(u_lo, 1.0) + float(J.max()) * wm * wm
     while mean_speed(u_hi, E, J) < 0:
         u_hi *= 2.0
-    u = brentq(mean_speed, u_lo, u_hi, args=(E, J), xtol=1e-14 * u_hi, rtol=1e-15)
+    u = brent_root(mean_speed, u_lo, u_hi, args=(E, J), xtol=1e-14 * u_hi, rtol=1e-15)
     # Refine: the extremes of ω lie between nodes; solve again on the refined extreme points.
     for _ in range(4):
-        def w_of(t, u=u):
-            E_t, J_t = profile.state(t)
-            return _omega(u, E_t, J_t + J_fly)
+        def w_of(st, u=u):
+            return _omega(u, st[0], st[1] + J_fly)
         vals = _omega(u, E, J)
-        t_hi, _ = extreme(w_of, nodes, vals, "max")
-        t_lo, _ = extreme(w_of, nodes, vals, "min")
+        (t_hi, _), (t_lo, _) = extremes(profile.state, nodes, [(w_of, vals, "max"), (w_of, vals, "min")])
         tt = np.array([t_hi, t_lo])
         Ex, Jx = profile.state(tt)
         Jx = Jx + J_fly
-        u_new = brentq(lambda v: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
+        u_new = brent_root(lambda v: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
         done = abs(u_new - u) <= 1e-13 * abs(u_new)
         u = u_new
         if done:
@@ -97,6 +95,8 @@ def integrate_ivp(cycle: Cycle, M_drive: float, J_fly: float, omega0: float, the
                   rtol: float = 1e-10) -> np.ndarray:
     """ω at ``theta_out`` (within [0, 2π]) from dω/dθ = (M_drive + M_red − ½·J′·ω²)/(J·ω), ω(0) = ω0,
     integrated piecewise between the cycle's break angles (DOP853)."""
+    from scipy.integrate import solve_ivp
+
     def rhs(t, y):
         r = cycle.reduced(np.array([t]))
         w = y[0]
@@ -111,7 +111,7 @@ def integrate_ivp(cycle: Cycle, M_drive: float, J_fly: float, omega0: float, the
         t_eval = np.union1d(theta_out[inside], [b])
         sol = solve_ivp(rhs, (a, b), [w], method="DOP853", rtol=rtol, atol=rtol * abs(omega0), t_eval=t_eval)
         if not sol.success:
-            raise ArithmeticError(f"solve_ivp failed on θ ∈ [{a}, {b}]: {sol.message}")
+            raise ComputationError("the equation of motion (solve_ivp)", f"failed on θ ∈ [{a}, {b}]: {sol.message}")
         out[inside] = np.interp(theta_out[inside], sol.t, sol.y[0])   # exact: the same points
         w = float(sol.y[0, -1])
     return out

@@ -10,12 +10,23 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from functools import lru_cache
+
 import numpy as np
 
 #: Nodes per smooth piece; 8 nodes on a 1° piece reach machine precision for the loads here.
 DEFAULT_ORDER = 8
 
 ArrayFn = Callable[[np.ndarray], np.ndarray]
+
+
+@lru_cache(maxsize=8)
+def gauss_legendre(order: int) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes and weights of the ``order``-point Gauss–Legendre rule on [−1, 1] (computed once)."""
+    x, w = np.polynomial.legendre.leggauss(order)
+    x.setflags(write=False)
+    w.setflags(write=False)
+    return x, w
 
 
 def split_at(a: np.ndarray, b: np.ndarray, breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -26,6 +37,8 @@ def split_at(a: np.ndarray, b: np.ndarray, breaks: np.ndarray) -> tuple[np.ndarr
     a = np.atleast_1d(np.asarray(a, dtype=float))
     b = np.atleast_1d(np.asarray(b, dtype=float))
     brk = np.sort(np.asarray(breaks, dtype=float))
+    if not ((brk[None, :] > a[:, None]) & (brk[None, :] < b[:, None])).any():
+        return a.copy(), b.copy(), np.arange(a.size)      # no interval holds a break: one piece each
     lefts, rights, owner = [], [], []
     for i, (lo, hi) in enumerate(zip(a, b)):
         inner = brk[(brk > lo) & (brk < hi)]
@@ -47,7 +60,7 @@ def integrate_intervals(f: ArrayFn, a: np.ndarray, b: np.ndarray, breaks: np.nda
     sign = np.where(b >= a, 1.0, -1.0)
     lo, hi = np.minimum(a, b), np.maximum(a, b)
     pl, pr, owner = split_at(lo, hi, breaks)
-    x, w = np.polynomial.legendre.leggauss(order)
+    x, w = gauss_legendre(order)
     half = 0.5 * (pr - pl)
     nodes = (0.5 * (pr + pl))[:, None] + half[:, None] * x[None, :]
     vals = np.asarray(f(nodes.ravel()), dtype=float).reshape(nodes.shape)

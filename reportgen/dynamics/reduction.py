@@ -19,12 +19,7 @@ import numpy as np
 from ..kinematics import KinematicsResult
 from ..linkage import Linkage
 from ..loads import LoadSet, power
-
-
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
+from ..geometry import readonly as _ro
 
 
 def reduced_moment(loads: LoadSet, kin: KinematicsResult, linkage: Linkage) -> np.ndarray:

@@ -14,16 +14,12 @@ from .graphical import GraphLayout, graphical_replica
 from .motion import steady_motion
 from .quadrature import DEFAULT_ORDER
 from .result import DynamicsResult, compare
-from .wittenbauer import merzalov, wittenbauer_exact
+from .wittenbauer import wittenbauer_and_merzalov
+from ..errors import ParameterError
+from ..geometry import readonly as _ro
 
 #: The fewest grid positions kept in results.json (RESULTS_FORMAT.md / issue #5).
 MIN_POSITIONS = 360
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def check_delta(delta: float) -> float:
@@ -36,18 +32,18 @@ def check_delta(delta: float) -> float:
 def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: str = "disk",
                 density: float = 7860.0, width_ratio: float = 1.0, crank_inertia: float = 0.0,
                 graphical_positions: int = 12, layout: GraphLayout = GraphLayout(),
-                order: int = DEFAULT_ORDER, phi_of=None) -> DynamicsResult:
-    """The flywheel calculation of any cycle (a project's or an analytic one)."""
+                order: int = DEFAULT_ORDER, phi_of=None, profile: EnergyProfile | None = None) -> DynamicsResult:
+    """The flywheel calculation of any cycle (a project's or an analytic one); ``profile``: ΔE of
+    this cycle on the same grid, when the caller has it already."""
     delta = check_delta(delta)
     if n < 8:
-        raise ValueError("n must be at least 8")
+        raise ParameterError("n", n, "at least 8 crank positions")
     theta = np.arange(n) * TWO_PI / n
-    prof = EnergyProfile(cycle, theta, order)
+    prof = profile if profile is not None else EnergyProfile(cycle, theta, order)
     idx = np.searchsorted(prof.nodes, theta)
     A = prof.A_nodes[idx]
     red = cycle.reduced(theta)
-    ex = wittenbauer_exact(cycle, prof, delta)
-    mz = merzalov(cycle, prof, delta)
+    ex, mz = wittenbauer_and_merzalov(cycle, prof, delta)
     gr = graphical_replica(cycle, delta, graphical_positions, layout)
     J_fly = max(ex.J_fly, 0.0)
     motion = steady_motion(cycle, prof, J_fly, theta, delta)
@@ -70,16 +66,29 @@ def solve_dynamics(project, n: int = MIN_POSITIONS, graphical_positions: int | N
     dyn = project.task.dynamics
     if dyn is None:
         raise DynamicsInputError("dynamics", "the task has no [dynamics] section", "a [dynamics] section with delta")
-    cycle = ProjectCycle(project, dyn.crank_inertia)
+    cycle, profile = energy_of(project, n, order)
     if graphical_positions is None:
         graphical_positions = max(project.task.analysis.positions, 12)
     fw = dyn.flywheel
     return solve_cycle(cycle, dyn.delta, n, shape=fw.shape, density=fw.density, width_ratio=fw.width_ratio,
                        crank_inertia=dyn.crank_inertia, graphical_positions=graphical_positions,
-                       layout=layout, order=order, phi_of=cycle.phi_of)
+                       layout=layout, order=order, phi_of=cycle.phi_of, profile=profile)
 
 
 _CACHE: "weakref.WeakKeyDictionary[object, DynamicsResult]" = weakref.WeakKeyDictionary()
+_ENERGY: "weakref.WeakKeyDictionary[object, dict]" = weakref.WeakKeyDictionary()
+
+
+def energy_of(project, n: int = MIN_POSITIONS, order: int = DEFAULT_ORDER) -> tuple[ProjectCycle, EnergyProfile]:
+    """The project's cycle and its ΔE profile on ``n`` equal steps, computed once per project and grid
+    (the solver and the note's comparison of flywheels share them)."""
+    known = _ENERGY.setdefault(project, {})
+    key = (n, order)
+    if key not in known:
+        dyn = project.task.dynamics
+        cycle = ProjectCycle(project, dyn.crank_inertia)
+        known[key] = (cycle, EnergyProfile(cycle, np.arange(n) * TWO_PI / n, order))
+    return known[key]
 
 
 def dynamics_of(project) -> DynamicsResult:

@@ -23,8 +23,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..roots import extremes
 from .cycle import Cycle
-from .energy import EnergyProfile, extreme
+from .energy import EnergyProfile
 
 
 @dataclass(frozen=True)
@@ -57,39 +58,36 @@ class Merzalov:
     J_fly: float
 
 
-def wittenbauer_exact(cycle: Cycle, profile: EnergyProfile, delta: float) -> WittenbauerExact:
-    """J_fly from the exact analytic equivalent of the Wittenbauer tangents."""
+def wittenbauer_and_merzalov(cycle: Cycle, profile: EnergyProfile, delta: float) -> tuple[WittenbauerExact, Merzalov]:
+    """Both flywheels; their four extremes (K, L; max and min of T_I) are searched together, one
+    evaluation of the cycle per round (:func:`reportgen.roots.extremes`)."""
     wm = cycle.omega_m
     w_hi, w_lo = wm * (1.0 + delta / 2.0), wm * (1.0 - delta / 2.0)
     nodes = profile.nodes
     E = profile.delta_E_nodes
     J = cycle.reduced(nodes).J
 
-    def g(w: float):
-        def f(t):
-            E_t, J_t = profile.state(t)
-            return E_t - J_t * w * w / 2.0
-        return f
+    def T(st):
+        E_t, J_t = st
+        return E_t - (J_t - cycle.J_const) * wm * wm / 2.0
 
-    tK, K = extreme(g(w_hi), nodes, E - J * w_hi ** 2 / 2.0, "max")
-    tL, L = extreme(g(w_lo), nodes, E - J * w_lo ** 2 / 2.0, "min")
-    (EK,), (JK,) = profile.state(tK)
-    (EL,), (JL,) = profile.state(tL)
+    vals = E - (J - cycle.J_const) * wm * wm / 2.0
+    (tK, K), (tL, L), (t_hi, T_hi), (t_lo, T_lo) = extremes(profile.state, nodes, [
+        (lambda st: st[0] - st[1] * w_hi * w_hi / 2.0, E - J * w_hi ** 2 / 2.0, "max"),
+        (lambda st: st[0] - st[1] * w_lo * w_lo / 2.0, E - J * w_lo ** 2 / 2.0, "min"),
+        (T, vals, "max"), (T, vals, "min")])
+    (EK, EL), (JK, JL) = profile.state(np.array([tK, tL]))
     pK, pL = (float(JK), float(EK)), (float(JL), float(EL))
-    return WittenbauerExact(delta, wm, w_hi, w_lo, K, L, tK, tL, pK, pL, (K - L) / (wm * wm * delta))
+    witt = WittenbauerExact(delta, wm, w_hi, w_lo, K, L, tK, tL, pK, pL, (K - L) / (wm * wm * delta))
+    J1 = (T_hi - T_lo) / (wm * wm * delta)
+    return witt, Merzalov(cycle.J_const, T_hi, T_lo, t_hi, t_lo, J1, J1 - cycle.J_const)
+
+
+def wittenbauer_exact(cycle: Cycle, profile: EnergyProfile, delta: float) -> WittenbauerExact:
+    """J_fly from the exact analytic equivalent of the Wittenbauer tangents."""
+    return wittenbauer_and_merzalov(cycle, profile, delta)[0]
 
 
 def merzalov(cycle: Cycle, profile: EnergyProfile, delta: float) -> Merzalov:
     """J_fly by Мерцалов's method (the kinetic energy of the variable links at ω_m)."""
-    wm = cycle.omega_m
-    nodes = profile.nodes
-
-    def T(t):
-        E_t, J_t = profile.state(t)
-        return E_t - (J_t - cycle.J_const) * wm * wm / 2.0
-
-    vals = profile.delta_E_nodes - (cycle.reduced(nodes).J - cycle.J_const) * wm * wm / 2.0
-    t_hi, T_hi = extreme(T, nodes, vals, "max")
-    t_lo, T_lo = extreme(T, nodes, vals, "min")
-    J1 = (T_hi - T_lo) / (wm * wm * delta)
-    return Merzalov(cycle.J_const, T_hi, T_lo, t_hi, t_lo, J1, J1 - cycle.J_const)
+    return wittenbauer_and_merzalov(cycle, profile, delta)[1]

@@ -24,6 +24,8 @@ from shapely.geometry import LineString
 
 from ..numbers import plain
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
+from ..geometry import readonly as _ro
+from ..errors import GeometryError, ParameterError
 
 Point = tuple[float, float]
 
@@ -79,12 +81,6 @@ class MeshingPicture:
     view: tuple[float, float, float, float]   # xmin, ymin, xmax, ymax that holds the drawn teeth
 
 
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
-
-
 def _rot(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:
     c, s = math.cos(ang), math.sin(ang)
     out = pts @ np.array([[c, s], [-s, c]])
@@ -97,7 +93,7 @@ def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: floa
     b = w @ u
     disc = b * b - (w @ w - radius * radius)
     if disc < 0:
-        raise ValueError("the line misses the circle")
+        raise GeometryError("the line", f"misses the circle r = {radius}")
     root = math.sqrt(disc)
     return -b - root, -b + root
 
@@ -138,7 +134,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
     (≥ 3, odd numbers centre the pair at P) teeth of each gear. ``simplify``: a tolerance in mm
     for the tooth polylines (default 2e-4·m)."""
     if n_teeth < 1:
-        raise ValueError("n_teeth must be ≥ 1")
+        raise ParameterError("n_teeth", n_teeth, "≥ 1")
     g = pair.geometry
     tooth1, tooth2 = pair_teeth(pair, positions)
     tol = simplify if simplify is not None else 2e-4 * g.m

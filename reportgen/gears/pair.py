@@ -7,7 +7,7 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
-from ..errors import TaskError
+from ..errors import NameLookupError, TaskError
 from .checks import EPS_MIN, SA_MIN_FACTOR, Check, pair_checks
 from .geometry import ALPHA_DEG, C, HA, GearGeometry, pair_arrays, pair_geometry
 from .shifts import ShiftChoice, choose_shifts
@@ -40,7 +40,7 @@ class GearPair:
         for c in self.checks:
             if c.name == name:
                 return c
-        raise KeyError(name)
+        raise NameLookupError("gear check", name, tuple(c.name for c in self.checks))
 
 
 def _is_auto(x) -> bool:

@@ -24,14 +24,10 @@ import shapely
 from shapely.geometry import Polygon
 
 from .involute import inv
+from ..geometry import readonly as _ro
+from ..errors import GeometryError
 
 DEFAULT_POSITIONS = 481
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 def half_thickness_angle(r, rb: float, s: float, d: float, alpha: float):
@@ -120,7 +116,7 @@ class GeneratedTooth:
                     th = math.atan2(q[1], q[0])
                     (left if th > math.pi / 2 else right).append(th)
         if not left or not right:
-            raise ValueError(f"the circle r = {radius} does not cross both flanks")
+            raise GeometryError(f"the circle r = {radius}", "does not cross both flanks of the tooth")
         return min(left), max(right)
 
     def thickness(self, radius: float) -> float:

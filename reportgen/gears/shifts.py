@@ -29,19 +29,14 @@ from typing import Mapping
 import numpy as np
 
 from ..errors import TaskError
-from .checks import CHECK_NAMES, EPS_MIN, SA_MIN_FACTOR, margins, passes, x_min
+from .checks import EPS_MIN, SA_MIN_FACTOR, margins, passes, x_min
 from .contours import zero_lines
 from .geometry import pair_arrays
 from .sliding import lambda1, lambda2
+from ..geometry import readonly as _ro
 
 RULE_EQUAL_SLIDING = "equal maximal specific sliding λ1(a) = λ2(b) at the largest feasible x1 + x2"
 RULE_LEAST_IMBALANCE = "no feasible point has equal sliding: smallest |λ1(a) − λ2(b)|, then largest x1 + x2"
-
-
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 @dataclass(frozen=True)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from ..errors import ParameterError
 
 #: Points of the table between a and P and between P and b (the seed has 2 + 2).
 DEFAULT_STEPS = 3
@@ -62,7 +63,7 @@ def sliding_table(g: float, u: float, n1a: float, n1p: float, n1b: float,
     """The table at the course's points: N1, a, (steps − 1) points between a and P, P, (steps − 1)
     between P and b, b, N2. If P is not inside ab, ab is divided into ``2·steps`` equal parts."""
     if steps < 1:
-        raise ValueError("steps must be ≥ 1")
+        raise ParameterError("steps", steps, "≥ 1")
     pts: list[tuple[str, float]] = [("N1", 0.0)]
     if n1a < n1p < n1b:
         pts += [("a" if i == 0 else "", n1a + (n1p - n1a) * i / steps) for i in range(steps)]

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..geometry import perp, rot
 from ..linkage import Linkage, SlidePair
 
 
@@ -52,16 +53,6 @@ def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
         cons.extend(revolute(linkage, jt.name, b0, b) for b in jt.bodies[1:])
     cons.extend(SlideC(s) for s in linkage.slides)
     return cons
-
-
-def rot(theta: np.ndarray, p: tuple[float, float]) -> np.ndarray:
-    """R(θ)·p for an array of angles: shape (..., 2)."""
-    c, s = np.cos(theta), np.sin(theta)
-    return np.stack((c * p[0] - s * p[1], s * p[0] + c * p[1]), axis=-1)
-
-
-def perp(v: np.ndarray) -> np.ndarray:
-    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
 
 
 def world(q: np.ndarray, k: int, p: tuple[float, float]) -> np.ndarray:

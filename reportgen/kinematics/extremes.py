@@ -13,15 +13,16 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
+from ..errors import ReportgenError
+from ..roots import brent_root
 from .constraints import rot, world
 from .solve import KinematicModel
 
 GRID = 720
 
 
-class NoExtremesError(ValueError):
+class NoExtremesError(ReportgenError, ValueError):
     """The output link turns fully: it has no extreme positions."""
 ROOT_XTOL = 1e-13
 
@@ -107,7 +108,7 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
             f = lambda ph: _velocity_at(model, out, ph)  # noqa: E731
             flo, fhi = f(lo), f(hi)
             if flo * fhi < 0:
-                roots.append(brentq(f, lo, hi, xtol=ROOT_XTOL))
+                roots.append(brent_root(f, lo, hi, xtol=ROOT_XTOL))
             else:   # a grid point sits on the dead centre itself (|v| at rounding level)
                 roots.append(lo if abs(flo) <= abs(fhi) else hi)
     if len(roots) < 2:

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError
+from ..geometry import cross as _cross, dot as _dot
 from ..linkage import Linkage
 from ..structure import Group, Pair
 from .constraints import Constraint, RevoluteC, SlideC, assemble, perp, residual, revolute, rot, world
@@ -28,14 +29,6 @@ from .constraints import Constraint, RevoluteC, SlideC, assemble, perp, residual
 #: Newton on class III+ groups: relative step tolerance and iteration cap.
 NEWTON_REL_TOL = 1e-13
 NEWTON_MAX_ITER = 50
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
 
 
 def group_constraints(linkage: Linkage, group: Group) -> list[Constraint]:

@@ -19,18 +19,13 @@ from ..linkage import Linkage, compile_linkage, sketch_q
 from ..numbers import clean_array
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
-from .constraints import assemble, gamma, jacobian_rows, known_terms, perp, rot, world
+from .constraints import assemble, gamma, known_terms, perp, rot, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
+from ..geometry import readonly as _ro
 
 #: Largest crank step when following a class III+ group by continuation, rad.
 CONTINUATION_STEP = math.radians(5.0)
-
-
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.ascontiguousarray(a)
-    a.setflags(write=False)
-    return a
 
 
 @dataclass(frozen=True)
@@ -47,6 +42,47 @@ class LinkMotion:
     angle: np.ndarray
     omega: np.ndarray
     epsilon: np.ndarray
+
+
+class DerivedMotions(Mapping):
+    """A read-only mapping of motions derived from the poses, velocities and accelerations (q, q̇,
+    q̈), each computed when first read and kept: a solve that reads one point pays for one."""
+
+    def __init__(self, makers: dict) -> None:
+        self._makers = dict(makers)
+        self._done: dict = {}
+
+    def __getitem__(self, key):
+        try:
+            return self._done[key]
+        except KeyError:
+            value = self._done[key] = self._makers[key]()
+            return value
+
+    def __iter__(self):
+        return iter(self._makers)
+
+    def __len__(self) -> int:
+        return len(self._makers)
+
+    def __repr__(self) -> str:
+        return f"DerivedMotions({list(self._makers)})"
+
+
+def _deferred(fn: Callable, *args) -> Callable[[], PointMotion]:
+    return lambda: fn(*args)
+
+
+def _cleaned(make: Callable[[], PointMotion], v_scale: float, a_scale: float) -> PointMotion:
+    """A point's motion with its round-off residue made exact zeros (see ``_without_residue``)."""
+    m = make()
+    return PointMotion(m.pos, _ro(clean_array(m.vel, v_scale)), _ro(clean_array(m.acc, a_scale)))
+
+
+def _fixed_point(xy, n: int) -> PointMotion:
+    z = np.zeros((n, 2))
+    p = np.broadcast_to(np.asarray(xy, dtype=float), (n, 2))
+    return PointMotion(_ro(p), _ro(z), _ro(z.copy()))
 
 
 @dataclass(frozen=True)
@@ -220,30 +256,40 @@ class KinematicModel:
                 ok &= solver.newton(q, phi, strict=strict) >= 0
         return q, ok
 
-    def velocities(self, q: np.ndarray, upto: int | None = None) -> np.ndarray:
+    def velocities(self, q: np.ndarray, upto: int | None = None, jacobians: dict | None = None) -> np.ndarray:
+        """q̇ at the poses ``q``; ``jacobians`` (a dict) keeps each group's J for the accelerations."""
         qd = np.zeros_like(q)
         self._driver_vel(q, qd)
-        return self._by_groups(q, qd, lambda cons, rows, cols: -known_terms(rows, qd, set(cols)), upto)
+        return self._by_groups(q, qd, lambda cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians)
 
-    def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None) -> np.ndarray:
+    def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None,
+                      jacobians: dict | None = None) -> np.ndarray:
+        """q̈ at the poses ``q`` with velocities ``qd`` (``jacobians``: those the velocities kept)."""
         qdd = np.zeros_like(q)
         self._driver_acc(q, qdd)
 
         def rhs(cons, rows, cols):
             gm = np.stack([r for c in cons for r in gamma(c, q, qd)], axis=-1)
             return gm - known_terms(rows, qdd, set(cols))
-        return self._by_groups(q, qdd, rhs, upto)
+        return self._by_groups(q, qdd, rhs, upto, jacobians)
 
     def _by_groups(self, q: np.ndarray, out: np.ndarray,
-                   rhs: Callable[[list, list, list[int]], np.ndarray], upto: int | None) -> np.ndarray:
+                   rhs: Callable[[list, list, list[int]], np.ndarray], upto: int | None,
+                   jacobians: dict | None = None) -> np.ndarray:
         """Solve the groups in order (the first ``upto`` of them): J·x = rhs(constraints, rows, columns)
-        for each group's unknowns, written into ``out`` (the derivative the later groups read)."""
+        for each group's unknowns, written into ``out`` (the derivative the later groups read). The
+        velocity and acceleration systems share J: a ``jacobians`` dict carries it from one to the other."""
         groups = self.structure.groups[1:]
         for n_g, (g, cons) in enumerate(zip(groups, self.group_rows)):
             if upto is not None and n_g >= upto:
                 break
             cols = list(g.links)
-            J, rows = assemble(cons, q, cols)
+            if jacobians is not None and n_g in jacobians:
+                J, rows = jacobians[n_g]
+            else:
+                J, rows = assemble(cons, q, cols)
+                if jacobians is not None:
+                    jacobians[n_g] = (J, rows)
             x = self._solve(J, rhs(cons, rows, cols), g, q)
             out[:, cols, :] = x.reshape(-1, len(cols), 3)
         return out
@@ -287,26 +333,23 @@ class KinematicModel:
             with np.errstate(invalid="ignore", divide="ignore"):
                 feasible = self.feasible_ranges()
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality, feasible) from None
-        qd = self.velocities(q)
-        qdd = self.accelerations(q, qd)
+        jacobians: dict = {}
+        qd = self.velocities(q, jacobians=jacobians)
+        qdd = self.accelerations(q, qd, jacobians=jacobians)
         return self._result(phi, q, qd, qdd)
 
     def _result(self, phi, q, qd, qdd) -> KinematicsResult:
         lk = self.linkage
-        points: dict[str, PointMotion] = {}
-        seen: set[str] = set()
+        points: dict[str, Callable[[], PointMotion]] = {}
         for k in sorted(lk.bodies):
             for name in lk.bodies[k].points:
-                if name in seen or (k == 0):
+                if name in points or (k == 0):
                     continue
-                seen.add(name)
-                points[name] = self._point_motion(q, qd, qdd, k, tuple(lk.bodies[k].local[name]))
+                points[name] = _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].local[name]))
         for name in lk.ground:
             if name not in points:
-                z = np.zeros((phi.size, 2))
-                p = np.broadcast_to(np.asarray(lk.sketch[name], dtype=float), (phi.size, 2))
-                points[name] = PointMotion(_ro(p), _ro(z), _ro(z.copy()))
-        coms = {k: self._point_motion(q, qd, qdd, k, tuple(lk.bodies[k].com_local)) for k in lk.moving}
+                points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
+        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local)) for k in lk.moving}
         links = {k: LinkMotion(_ro(q[:, k, 2].copy()), _ro(qd[:, k, 2].copy()), _ro(qdd[:, k, 2].copy()))
                  for k in lk.moving}
         trans: dict[str, np.ndarray] = {}
@@ -317,8 +360,8 @@ class KinematicModel:
             for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG):
                 flags.append((int(i), g.key, float(mu[i])))
         points, coms, links = self._without_residue(points, coms, links)
-        return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), MappingProxyType(points),
-                                MappingProxyType(coms), MappingProxyType(links), MappingProxyType(trans),
+        return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), DerivedMotions(points),
+                                DerivedMotions(coms), MappingProxyType(links), MappingProxyType(trans),
                                 tuple(flags))
 
     def _without_residue(self, points, coms, links):
@@ -330,13 +373,11 @@ class KinematicModel:
         w = abs(self.omega) or 1.0
         v_scale, a_scale = w * size, w * w * size
 
-        def pm(m: PointMotion) -> PointMotion:
-            return PointMotion(m.pos, _ro(clean_array(m.vel, v_scale)), _ro(clean_array(m.acc, a_scale)))
-
         def lm(m: LinkMotion) -> LinkMotion:
             return LinkMotion(m.angle, _ro(clean_array(m.omega, w)), _ro(clean_array(m.epsilon, w * w)))
 
-        return ({n: pm(m) for n, m in points.items()}, {k: pm(m) for k, m in coms.items()},
+        return ({n: _deferred(_cleaned, f, v_scale, a_scale) for n, f in points.items()},
+                {k: _deferred(_cleaned, f, v_scale, a_scale) for k, f in coms.items()},
                 {k: lm(m) for k, m in links.items()})
 
     @staticmethod

@@ -16,7 +16,6 @@ scaled by the group's size — 0° exactly where the group is singular, an index
 """
 from __future__ import annotations
 
-import math
 
 import numpy as np
 

@@ -27,31 +27,17 @@ import math
 from dataclasses import dataclass
 import numpy as np
 
-from ..errors import SingularPositionError
+from ..errors import InternalError, NameLookupError, SingularPositionError
 from ..kinematics import KinematicsResult
 from ..kinematics.constraints import rot, world
 from ..linkage import Linkage
 from ..loads import Force, LoadSet, Moment
 from ..structure import Group, Pair, Structure
+from ..geometry import cross as _cross, perp, readonly as _ro
 
 #: A prismatic pair whose point of action would lie farther than this many mechanism lengths from
 #: its sliding point (normal force ≈ 0) reports its couple as a moment instead.
 PRISMATIC_OFFSET_LIMIT = 100.0
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def perp(v: np.ndarray) -> np.ndarray:
-    """v turned by +90° (counter-clockwise)."""
-    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
 
 
 def pair_name(i: int, j: int, prefix: str = "R") -> str:
@@ -90,7 +76,7 @@ class PairReaction:
             return self.vector
         if k == self.lo:
             return -self.vector
-        raise KeyError(k)
+        raise NameLookupError(f"link of the pair {self.name}", k, (self.lo, self.hi))
 
     def other(self, k: int) -> int:
         return self.lo if k == self.hi else self.hi
@@ -115,7 +101,7 @@ class Reactions:
         for p in self.pairs:
             if p.name == name:
                 return p
-        raise KeyError(name)
+        raise NameLookupError("pair", name, tuple(p.name for p in self.pairs))
 
     def pairs_of(self, k: int) -> tuple[PairReaction, ...]:
         return tuple(p for p in self.pairs if k in (p.lo, p.hi))
@@ -214,7 +200,7 @@ def solve_group(linkage: Linkage, group: Group, q: np.ndarray, known: _Known, L:
     row = {k: 3 * i for i, k in enumerate(links)}
     n_unk = 2 * len(group.pairs)
     if n_unk != 3 * len(links):
-        raise ValueError(f"group {group.label} is not statically determinate ({n_unk} unknowns)")
+        raise InternalError(f"group {group.label}", f"not statically determinate ({n_unk} unknowns, {3 * len(links)} equations)")
     geo = [_pair_geometry(linkage, q, p) for p in group.pairs]
     O = np.mean([g[0] for g in geo], axis=0)
     A = np.zeros((N, 3 * len(links), n_unk))

@@ -23,12 +23,7 @@ from ..kinematics import KinematicsResult
 from ..kinematics.constraints import world
 from ..linkage import Linkage
 from ..loads import LoadSet
-
-
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
+from ..geometry import readonly as _ro
 
 
 def turn_cw(v: np.ndarray) -> np.ndarray:

@@ -52,6 +52,25 @@ class DriveCheck:
         return self.required.omega_planetary_in / abs(self.planetary_ratio)
 
 
+DEFAULT_INPUT_OMEGA = 100.0
+"""rad/s: the reducer's input speed when neither the drive nor a motor speed gives one (≈ 955 rpm)."""
+
+
+def input_speed(drive: DriveRatio | None, motor_rpm: float | None) -> tuple[float, str]:
+    """The speed of the reducer's input member, rad/s, and where it comes from.
+
+    One rule for ``reportgen planetary`` and ``reportgen build``: the drive's speed when the ratio is
+    "auto" (motor → open pair → reducer); else the motor's, ω = π·n/30, when a motor speed is given;
+    else :data:`DEFAULT_INPUT_OMEGA`. Returns ``(omega, source)``, ``source`` one of "drive",
+    "motor", "default".
+    """
+    if drive is not None:
+        return drive.omega_planetary_in, "drive"
+    if motor_rpm:
+        return math.pi * float(motor_rpm) / 30.0, "motor"
+    return DEFAULT_INPUT_OMEGA, "default"
+
+
 def _positive(path: str, value: object, what: str) -> float:
     if isinstance(value, bool) or not isinstance(value, Real) or not (math.isfinite(float(value)) and float(value) > 0):
         raise TaskError(path, f"{value!r}", what)

@@ -240,3 +240,25 @@ def test_no_traceback_from_the_real_program(tmp_path):
     assert _left_behind(tmp_path, {"task.toml"}) == []
     r = _spawn("solve", str(task), "--at", "nan")
     assert r.returncode == 2 and "Traceback" not in r.stderr
+
+
+@pytest.mark.parametrize("text, given", [
+    ("", None), ("# только комментарий\n\n# ещё один\n", None),
+    ('[document]\ntitle = "Курсовой проект"\n', "[document]"),
+    ('[document]\ntitle = "x"\n[analysis]\npositions = 12\n', "[document], [analysis]"),
+], ids=["empty", "comments-only", "document-only", "document-and-analysis"])
+def test_task_with_nothing_to_build(tmp_path, capsys, text, given):
+    """Issue 11: was "done … report.pdf" with a 37-byte results.json; now exit 2 naming the sections."""
+    task = tmp_path / "task.toml"
+    task.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    for argv in (["build", str(task), "-o", str(out), "--quiet"],
+                 ["solve", str(task), "--json", str(tmp_path / "r.json"), "--quiet"]):
+        code, err = _run(argv, capsys)
+        assert code == 2, err
+        assert "nothing to build" in err and "Traceback" not in err
+        for section in ("[mechanism]", "[gears]", "[planetary]"):
+            assert section in err
+        if given:
+            assert given in err
+        assert _left_behind(tmp_path, {"task.toml"}) == []

@@ -125,6 +125,8 @@ def test_old_output_is_replaced_only_when_new_is_complete(tmp_path):
     out = tmp_path / "out"
     out.mkdir()
     (out / "old.txt").write_text("old", encoding="utf-8")
+    from reportgen.commands.outdir import write_manifest
+    write_manifest(out)  # an earlier output of reportgen's (a foreign folder is refused: test_output_folders)
     r = run("build", str(PRESS), "-o", str(out), "--no-pdf", "--no-sheets", "--quiet")
     assert r.returncode == 0, r.stderr
     assert not (out / "old.txt").exists() and (out / "report.tex").is_file()

@@ -4,12 +4,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
 from drawings import Sheet
-from drawings.sheet import A1
 
 
 @dataclass(frozen=True)

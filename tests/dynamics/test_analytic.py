@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from reportgen.dynamics import FunctionCycle, solve_cycle
@@ -107,6 +107,9 @@ def test_integral_reversed_interval_is_negative():
 
 
 @settings(max_examples=25, deadline=None)
+# the extreme just beyond a grid node, closer than one sample of the vectorised search (found by
+# hypothesis: the search kept only the bracket left of the node, δ achieved 0.06250062)
+@example(a1=0.0, b2=0.015625, c=1.7273955755172534, j1=0.671875, j2=0.625, delta=0.0625)
 @given(a1=st.floats(-1.0, 1.0), b2=st.floats(-1.0, 1.0), c=st.floats(0.0, 2.0),
        j1=st.floats(0.0, 0.8), j2=st.floats(0.0, 0.8), delta=st.floats(0.01, 0.2))
 def test_any_smooth_cycle_returns_the_target_delta(a1, b2, c, j1, j2, delta):

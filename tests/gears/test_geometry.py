@@ -1,7 +1,6 @@
 """Pair geometry: golden values from two published pairs, identities, property tests."""
 import math
 
-import numpy as np
 import pytest
 from hypothesis import assume, given, settings, strategies as st
 

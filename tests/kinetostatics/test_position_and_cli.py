@@ -14,7 +14,6 @@ from reportgen.errors import OptionError, ReportgenInputError, TaskError
 from reportgen.kinetostatics import force_angle, kinetostatics_at
 from reportgen.kinetostatics.analysis import MAX_LOAD_GRID, resistance_magnitude
 from reportgen.project import Project
-from reportgen.taskfile import load_task
 
 from .cases import EXAMPLES, example, four_bar
 

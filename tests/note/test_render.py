@@ -7,6 +7,8 @@ from importlib import resources
 import jinja2
 import pytest
 
+from reportgen.errors import InternalError
+
 from reportgen.calc import Var, record
 from reportgen.task import Document
 
@@ -186,5 +188,5 @@ def test_a_record_that_misprints_is_refused_at_render(tmp_path):
     (tpl / "bad.tex.j2").write_text(r"\VAR{m.calc(r)}", encoding="utf-8")
     note = NoteBuilder(Document(), frame="none", template_dirs=[tpl])
     note.add_section(Section(key="k", title="K", template="bad.tex.j2", context={"r": bad}))
-    with pytest.raises(ValueError, match="do not reproduce"):
+    with pytest.raises(InternalError, match="do not reproduce"):
         note.render(tmp_path / "out")

@@ -1,6 +1,4 @@
 """Each condition against an independent computation (geometry, tooth phases, plain Fractions)."""
-import math
-from fractions import Fraction
 
 import pytest
 from hypothesis import given, settings, strategies as st

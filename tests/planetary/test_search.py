@@ -1,7 +1,6 @@
 """The search against brute force: the chosen set condition by condition, the same best set on
 small ranges, impossible targets refused with reasons and the nearest ratios."""
 import functools
-import math
 import subprocess
 import sys
 

@@ -1,7 +1,6 @@
 """Seed 000 (§4.2, a real student note): the reducer z = 17/64/40/121, K = 3, u = 12.388, the drive
 1500 rpm with the open pair 13/26 and ω1 = 6.4 1/s, and its velocity triangle (v_A drawn as 100 mm,
 v_B measured 38.457 mm, ω_H = 12.678 1/s, u = 12.39 by construction)."""
-import math
 
 import pytest
 

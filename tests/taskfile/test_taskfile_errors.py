@@ -81,7 +81,6 @@ CASES = [
     (("planetary", "module"), 0, "planetary.module", ["(0, 1000]"]),
     # words
     (L + (4, "kind"), "slidr", "mechanism.link[4].kind", ['did you mean "slider"', '"slotted"']),
-    (L + (4, "kind"), DELETE, "mechanism.link[4].kind", ["is missing", '"crank"']),
     (("document", "language"), "de", "document.language", ['"ru"', '"uk"', '"en"']),
     (("document", "year"), "2026", "document.year", ["an integer"]),
     (("document", "title"), 5, "document.title", ["a string"]),

@@ -1,0 +1,284 @@
+"""The speed tables of ``reportgen bench`` (issue 16): the build's critical path, cold / warm /
+incremental builds as whole processes, the solver in process and as a process, and the four-bar
+against pylinkage with and without the model build.
+
+Times of whole processes are medians of a few runs (the machine is shared: the spread is printed);
+in-process times are medians of interleaved runs, and a ratio is the median of the ratios taken
+pair by pair (A, B, A, B, …) so that a drift of the machine's speed cancels.
+"""
+from __future__ import annotations
+
+import math
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from .tables import Table, ms, rel, sec
+
+
+def _median_spread(xs: list[float]) -> tuple[float, float, float]:
+    return statistics.median(xs), min(xs), max(xs)
+
+
+def _fmt_s(xs: list[float]) -> str:
+    m, lo, hi = _median_spread(xs)
+    return f"{m:.2f} ({lo:.2f}–{hi:.2f})"
+
+
+def _run(args: list[str], env: dict[str, str], cwd: Path) -> float:
+    t0 = time.perf_counter()
+    r = subprocess.run([sys.executable, "-m", "reportgen", *args], env=env, cwd=cwd,
+                       capture_output=True, text=True, timeout=1800)
+    dt = time.perf_counter() - t0
+    if r.returncode != 0:
+        raise RuntimeError((r.stderr or r.stdout).strip().splitlines()[-1][:300])
+    return dt
+
+
+# -- the build: critical path, cold, warm, incremental --------------------------------------------------
+
+def critical_path_table(task_path: Path, quick: bool) -> Table:
+    """One cold build in process with the spans of its stages: what ran in parallel, what waited."""
+    from ..commands.build import build
+    from ..commands.pipeline import Timeline
+
+    pdf = not quick and shutil.which("latexmk") is not None
+    t = Table("critical-path", f"The stages of `reportgen build {task_path.parent.name}/{task_path.name}`: "
+              "what runs in parallel, what waits (one cold build in process)",
+              ["lane", "stage", "start, s", "end, s", "time, s"])
+    timeline = Timeline(quiet=True)
+    with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
+        try:
+            build(str(task_path), Path(tmp) / "out", quiet=True, pdf=pdf, sheets=not quick, cache=False,
+                  timeline=timeline)
+        except Exception as exc:  # a benchmark reports a failed build, it does not hide the other tables
+            t.notes.append(f"the build failed: {type(exc).__name__}: {str(exc).splitlines()[0][:300]}")
+            return t
+    end = 0.0
+    for lane, name, a, b in timeline.critical_path():
+        t.add(lane, name, sec(a), sec(b), sec(b - a))
+        end = max(end, b)
+    t.notes.append(f"the whole build: {end:.2f} s in this process (its imports done before); lanes: main = the "
+                   "Python process (solve, the note's sections and figures, results.json, then it waits), "
+                   "sheets = a forked process (DXF + PNG preview of each sheet), LaTeX = latexmk with xelatex")
+    t.notes.append("the critical path is main (solve → note) → LaTeX; the sheets overlap the note and LaTeX")
+    if not pdf:
+        t.notes.append("LaTeX not run (" + ("--quick" if quick else "latexmk not found") + ")")
+    return t
+
+
+def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
+    """Cold, warm (unchanged task) and incremental (one number changed) builds as whole processes."""
+    t = Table("builds", f"`reportgen build {task_path.parent.name}/{task_path.name}` as a process, "
+              "all outputs (PDF, sheets, previews, results.json)",
+              ["build", "wall, s: median (min–max)", "runs"])
+    if shutil.which("latexmk") is None or quick:
+        t.notes.append("not measured: " + ("--quick" if quick else "latexmk not found"))
+        return t
+    with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
+        base = Path(tmp)
+        task = base / "task.toml"
+        text = task_path.read_text(encoding="utf-8")
+        task.write_text(text, encoding="utf-8")
+        env = dict(os.environ, REPORTGEN_CACHE=str(base / "cache"))
+        cold, warm, inc = [], [], []
+        try:
+            for i in range(runs):
+                cold.append(_run(["build", str(task), "-o", str(base / f"cold{i}"), "--quiet", "--no-cache"], env, base))
+            _run(["build", str(task), "-o", str(base / "fill"), "--quiet"], env, base)
+            for i in range(runs):
+                warm.append(_run(["build", str(task), "-o", str(base / f"warm{i}"), "--quiet"], env, base))
+            changed = _one_number_changed(text)
+            if changed is not None:
+                for i in range(runs):
+                    task.write_text(changed[i % 2], encoding="utf-8")
+                    inc.append(_run(["build", str(task), "-o", str(base / f"inc{i}"), "--quiet"], env, base))
+        except Exception as exc:  # noqa: BLE001 - report, do not hide the other tables
+            t.notes.append(f"a build failed: {exc}")
+        if cold:
+            t.add("cold (no cache)", _fmt_s(cold), str(len(cold)))
+        if warm:
+            t.add("warm (unchanged task, from the cache)", _fmt_s(warm), str(len(warm)))
+        if inc:
+            t.add("incremental (one number changed)", _fmt_s(inc), str(len(inc)))
+    t.notes.append("each run a fresh process (imports included); the machine is shared, so the spread is shown")
+    t.notes.append("incremental: the task's δ alternates between two values; the kinematics, kinetostatics and "
+                   "gear previews come from the cache, LaTeX starts from the last build's aux files")
+    return t
+
+
+def _one_number_changed(text: str) -> tuple[str, str] | None:
+    import re
+    m = re.search(r"(?m)^delta\s*=\s*([0-9.]+)", text)
+    if m is None:
+        return None
+    v = float(m.group(1))
+    a = text[:m.start(1)] + repr(round(v * 0.8, 6)) + text[m.end(1):]
+    b = text[:m.start(1)] + repr(round(v * 0.9, 6)) + text[m.end(1):]
+    return a, b
+
+
+# -- the solver -----------------------------------------------------------------------------------------
+
+def solver_table(task_path: Path, quick: bool) -> Table:
+    """All stages over 360 positions in process (model included) and `reportgen solve` as a process."""
+    from ..project import Project
+    from ..taskfile import load_task
+
+    t = Table("solver", f"The solver on {task_path.parent.name}/{task_path.name}",
+              ["what", "time, ms: median (min–max)", "runs"])
+    task = load_task(task_path)
+
+    import dataclasses
+
+    def linkage_stages():
+        from ..dynamics.solve import solve_dynamics
+        from ..kinetostatics.analysis import balancing_cycle
+        an = dataclasses.replace(task.analysis, positions=360)
+        p = Project(dataclasses.replace(task, analysis=an))
+        balancing_cycle(p, p.phi)          # reactions group by group and Zhukovsky's lever at every position
+        if task.dynamics is not None:
+            solve_dynamics(p)
+        return p
+
+    def gear_stages():
+        p = Project(task)
+        if task.gears is not None:
+            p.gears
+        if task.planetary is not None:
+            p.planetary
+        return p
+
+    rows = []
+    if task.mechanism is not None:
+        rows.append(("in process: model, kinematics, kinetostatics (both methods), dynamics over 360 positions",
+                     linkage_stages))
+    if task.gears is not None or task.planetary is not None:
+        rows.append(("in process: gear pair and planetary synthesis", gear_stages))
+    for label, fn in rows:
+        fn()
+        xs = []
+        for _ in range(3 if quick else 7):
+            t0 = time.perf_counter()
+            fn()
+            xs.append(time.perf_counter() - t0)
+        m, lo, hi = _median_spread([x * 1e3 for x in xs])
+        t.add(label, f"{m:.0f} ({lo:.0f}–{hi:.0f})", str(len(xs)))
+    env = dict(os.environ, REPORTGEN_CACHE="off")
+    ps = []
+    with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
+        for i in range(2 if quick else 5):
+            try:
+                ps.append(_run(["solve", str(task_path.resolve()), "--json", str(Path(tmp) / "r.json"), "--quiet"], env,
+                               Path(tmp)))
+            except Exception as exc:  # noqa: BLE001
+                t.notes.append(f"`reportgen solve` failed: {exc}")
+                break
+    if ps:
+        m, lo, hi = _median_spread([x * 1e3 for x in ps])
+        t.add("`reportgen solve TASK --json OUT` as a process (imports included)", f"{m:.0f} ({lo:.0f}–{hi:.0f})",
+              str(len(ps)))
+    t.notes.append("in process: a new Project each run (the model built again), [analysis] positions set to "
+                   "360; the kinetostatics at all of them, the dynamics on its own 360-step grid")
+    return t
+
+
+# -- pylinkage ----------------------------------------------------------------------------------------
+
+FOUR_BAR = (0.1, 0.35, 0.3, 0.4)   # crank, coupler, rocker, frame (m): a Grashof crank–rocker
+
+
+def pylinkage_table(n: int = 360, pairs: int = 15) -> Table:
+    """The same four-bar in both, interleaved: reportgen's solve alone, with its model build (from
+    the Mechanism, and from the task's TOML text), and pylinkage's two paths (its linkage is
+    stateful, so it is built inside every run)."""
+    from ..kinematics import build_model
+    from ..taskfile import loads_task
+    from ..zoo import four_bar
+
+    t = Table("pylinkage", f"The same four-bar (crank–rocker {'/'.join(f'{v:g}' for v in FOUR_BAR)} m, "
+              f"ω1 = 10 rad/s) over {n} positions with v and a: pylinkage and reportgen",
+              ["solver", "ms: median (min–max)", "pylinkage / this (median of pairs)", "max |Δ pos|, m",
+               "max |Δ v|, m/s", "max |Δ a|, m/s²"])
+    try:
+        import pylinkage
+        from pylinkage.actuators import Crank
+        from pylinkage.components import Ground
+        from pylinkage.dyads import RRRDyad
+        from pylinkage.simulation import Linkage
+    except ImportError:
+        t.notes.append("pylinkage is not installed: `pip install 'reportgen[bench]'` (or `pip install pylinkage`) "
+                       "to compare")
+        return t
+    a, b, c, d = FOUR_BAR
+    omega = 10.0
+    phi = np.arange(1, n + 1) * 2 * math.pi / n      # pylinkage turns the crank before it solves
+    text = four_bar(a, b, c, d, phi_deg=0.0, omega=omega, name=None, analysis=None)
+    mech = loads_task(text).mechanism
+    model = build_model(mech)
+    r = model.solve(phi)
+    B0 = r.points["B"].pos[-1]
+
+    def make():
+        O, C = Ground(0.0, 0.0, name="O"), Ground(d, 0.0, name="C")
+        cr = Crank(O, a, angular_velocity=2 * math.pi / n, initial_angle=0.0, name="A")
+        rr = RRRDyad(cr.output, C, distance1=b, distance2=c, x=float(B0[0]), y=float(B0[1]), name="B")
+        lk = Linkage([O, C, cr, rr], name="four-bar")
+        lk.set_input_velocity(cr, omega=omega)
+        return lk
+
+    def py_loop():
+        out = list(make().step_with_derivatives(iterations=n))
+        return (np.array([o[0][3] for o in out]), np.array([o[1][3] for o in out]),
+                np.array([o[2][3] for o in out]))
+
+    def rg(result):
+        pm = result.points["B"]
+        return pm.pos, pm.vel, pm.acc
+
+    ours = {
+        "reportgen, model built once outside the timing": lambda: rg(model.solve(phi)),
+        "reportgen, model built inside (from the Mechanism)": lambda: rg(build_model(mech).solve(phi)),
+        "reportgen, task text parsed and model built inside": lambda: rg(build_model(loads_task(text).mechanism).solve(phi)),
+    }
+    times: dict[str, list[float]] = {k: [] for k in ours}
+    py_times: list[float] = []
+    ratios: dict[str, list[float]] = {k: [] for k in ours}
+    py_out = None
+    for _ in range(pairs):
+        t0 = time.perf_counter()
+        py_out = py_loop()
+        tp = time.perf_counter() - t0
+        py_times.append(tp)
+        for k, fn in ours.items():
+            t0 = time.perf_counter()
+            fn()
+            tk = time.perf_counter() - t0
+            times[k].append(tk)
+            ratios[k].append(tp / tk)
+    P, V, A = rg(r)
+    for k in ours:
+        m, lo, hi = _median_spread([x * 1e3 for x in times[k]])
+        t.add(k, f"{ms(m / 1e3)} ({ms(lo / 1e3)}–{ms(hi / 1e3)})", f"{statistics.median(ratios[k]):.1f}", "—", "—", "—")
+    p, v, acc = py_out
+    m, lo, hi = _median_spread([x * 1e3 for x in py_times])
+    t.add("pylinkage step_with_derivatives (linkage built inside)", f"{ms(m / 1e3)} ({ms(lo / 1e3)}–{ms(hi / 1e3)})",
+          "1", rel(float(np.abs(p - P).max())), rel(float(np.abs(v - V).max())), rel(float(np.abs(acc - A).max())))
+    t.notes.append(f"pylinkage {getattr(pylinkage, '__version__', '?')}; {pairs} interleaved rounds (pylinkage, then "
+                   "each reportgen variant); the ratio is the median of the per-round ratios; Δ = the largest "
+                   f"difference of point B between the two (|a_B| up to {float(np.hypot(*A.T).max()):.1f} m/s²)")
+    t.notes.append("reportgen solves positions (closed form), then velocities and accelerations (one linear system "
+                   "per group and position, the Jacobian shared); point motions are derived from q, q̇, q̈ when "
+                   "read (here: B)")
+    try:
+        import numba  # noqa: F401
+    except ImportError:
+        t.notes.append("numba is not installed, so pylinkage's fast path (step_fast_with_kinematics) is not compared")
+    return t

@@ -1,0 +1,219 @@
+"""The build cache: outputs kept by content hash, so that an unchanged task is rebuilt in a moment
+and a changed one redoes only what its change reaches.
+
+Where: ``$REPORTGEN_CACHE``, else ``$XDG_CACHE_HOME/reportgen``, else ``~/.cache/reportgen`` — never
+the output folder, so ``build`` writes nothing there that the build itself did not make.
+``REPORTGEN_CACHE=off`` (or ``build --no-cache``) turns it off.
+
+What, each under a key that is a SHA-256 of everything the entry depends on:
+
+- ``builds/<key>/``: the whole output of a build; key = the code (every source file of reportgen,
+  latex_templates and drawings, and the versions of the libraries that draw) + the task file's
+  bytes + the build options. A hit copies the folder: the same bytes a build would write, since
+  the build is a pure function of these (tests check builds with different hash seeds, folders
+  and times, and cached against uncached).
+- ``previews/<key>.png``: a sheet's PNG preview; key = the DXF's bytes + the code. A sheet is
+  always drawn again (cheap), its preview only when its DXF changed.
+- ``tex/<key>/``: LaTeX's auxiliary files of the last build of a task file (key = its absolute
+  path): latexmk starts from them and runs only the passes the change needs (often one).
+
+Each kind keeps its newest entries only (``KEEP``). A cache that cannot be written is skipped.
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+
+#: Newest entries kept of each kind.
+KEEP = {"builds": 12, "previews": 200, "tex": 12}
+#: Source files whose bytes make the code's fingerprint.
+_SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
+_LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
+
+
+def cache_root() -> Path | None:
+    """The cache's folder; None when ``REPORTGEN_CACHE=off``."""
+    env = os.environ.get("REPORTGEN_CACHE")
+    if env and env.strip().lower() in ("off", "0", "no", "false"):
+        return None
+    if env:
+        return Path(env)
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    return (Path(xdg) if xdg else Path.home() / ".cache") / "reportgen"
+
+
+@lru_cache(maxsize=1)
+def code_fingerprint() -> str:
+    """SHA-256 of the project's source files and the drawing libraries' versions."""
+    from importlib import metadata
+
+    h = hashlib.sha256()
+    root = Path(__file__).resolve().parents[1]
+    for package in ("reportgen", "latex_templates", "drawings"):
+        base = root / package
+        for path in sorted(base.rglob("*")):
+            if path.suffix in _SOURCE_SUFFIXES and path.is_file() and "__pycache__" not in path.parts:
+                h.update(path.relative_to(root).as_posix().encode())
+                h.update(b"\0")
+                h.update(path.read_bytes())
+                h.update(b"\0")
+    for lib in _LIBRARIES:
+        try:
+            version = metadata.version(lib)
+        except metadata.PackageNotFoundError:
+            version = "-"
+        h.update(f"{lib}={version};".encode())
+    tex = shutil.which("xelatex")
+    h.update((os.path.realpath(tex) if tex else "no-xelatex").encode())
+    return h.hexdigest()
+
+
+def _digest(*parts: bytes | str) -> str:
+    h = hashlib.sha256()
+    for p in parts:
+        h.update(p.encode() if isinstance(p, str) else p)
+        h.update(b"\0")
+    return h.hexdigest()
+
+
+class BuildCache:
+    """One build's view of the cache (see the module's docstring)."""
+
+    def __init__(self, root: Path, task_bytes: bytes, task_path: Path, options: str) -> None:
+        self.root = root
+        code = code_fingerprint()
+        self.code = code
+        self.build_key = _digest("build", code, task_bytes, options)
+        self.tex_key = _digest("tex", str(task_path))
+
+    # -- whole builds ------------------------------------------------------------------------
+    def restore_build(self, tmp: Path) -> bool:
+        """Copy a finished build with this key into ``tmp``; False when there is none."""
+        entry = self.root / "builds" / self.build_key
+        if not (entry / ".complete").is_file():
+            return False
+        try:
+            _copy_tree(entry, tmp)
+        except OSError:
+            return False
+        (tmp / ".complete").unlink(missing_ok=True)
+        _touch(entry)
+        return True
+
+    def store_build(self, tmp: Path) -> None:
+        self._store_dir("builds", self.build_key, tmp)
+
+    # -- LaTeX's auxiliary files ---------------------------------------------------------------
+    def restore_tex(self, build_dir: Path) -> bool:
+        entry = self.root / "tex" / self.tex_key
+        if not (entry / ".complete").is_file():
+            return False
+        try:
+            _copy_tree(entry, build_dir)
+        except OSError:
+            return False
+        (build_dir / ".complete").unlink(missing_ok=True)
+        return True
+
+    def store_tex(self, build_dir: Path) -> None:
+        if build_dir.is_dir():
+            self._store_dir("tex", self.tex_key, build_dir, replace=True)
+
+    # -- sheet previews ------------------------------------------------------------------------
+    def _preview_path(self, dxf: Path) -> Path:
+        return self.root / "previews" / (_digest("preview", self.code, dxf.read_bytes()) + ".png")
+
+    def restore_preview(self, dxf: Path, png: Path) -> bool:
+        src = self._preview_path(dxf)
+        try:
+            shutil.copyfile(src, png)
+        except OSError:
+            return False
+        _touch(src)
+        return True
+
+    def store_preview(self, dxf: Path, png: Path) -> None:
+        dst = self._preview_path(dxf)
+        try:
+            dst.parent.mkdir(parents=True, exist_ok=True)
+            fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
+            os.close(fd)
+            shutil.copyfile(png, part)
+            os.replace(part, dst)
+        except OSError:
+            return
+        _prune(dst.parent, KEEP["previews"])
+
+    # -- helpers -------------------------------------------------------------------------------
+    def _store_dir(self, kind: str, key: str, src: Path, replace: bool = False) -> None:
+        base = self.root / kind
+        entry = base / key
+        if entry.exists() and not replace:
+            return
+        try:
+            base.mkdir(parents=True, exist_ok=True)
+            part = Path(tempfile.mkdtemp(dir=base, prefix=".part-"))
+            _copy_tree(src, part)
+            (part / ".complete").write_bytes(b"")
+            if entry.exists():
+                shutil.rmtree(entry, ignore_errors=True)
+            part.rename(entry)
+        except OSError:
+            shutil.rmtree(locals().get("part", base / ".none"), ignore_errors=True)
+            return
+        _prune(base, KEEP[kind])
+
+
+def open_cache(task_path: str | os.PathLike[str], *, pdf: bool, sheets: bool,
+               latexmk: str = "latexmk") -> BuildCache | None:
+    """The cache for a build of ``task_path`` with these options; None when it cannot be used."""
+    root = cache_root()
+    if root is None:
+        return None
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        if not os.access(root, os.W_OK):
+            return None
+        path = Path(task_path).resolve()
+        data = path.read_bytes()
+    except OSError:
+        return None
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "")
+    return BuildCache(root, data, path, f"pdf={pdf};sheets={sheets};latexmk={latexmk};epoch={epoch}")
+
+
+def _copy_tree(src: Path, dst: Path) -> None:
+    dst.mkdir(parents=True, exist_ok=True)
+    for item in src.iterdir():
+        target = dst / item.name
+        if item.is_dir():
+            _copy_tree(item, target)
+        else:
+            shutil.copyfile(item, target)
+
+
+def _touch(path: Path) -> None:
+    try:
+        os.utime(path)
+    except OSError:
+        pass
+
+
+def _prune(base: Path, keep: int) -> None:
+    """Remove all but the ``keep`` most recently used entries of one kind."""
+    try:
+        entries = [p for p in base.iterdir() if not p.name.startswith(".")]
+    except OSError:
+        return
+    if len(entries) <= keep:
+        return
+    entries.sort(key=lambda p: p.stat().st_mtime, reverse=True)
+    for p in entries[keep:]:
+        if p.is_dir():
+            shutil.rmtree(p, ignore_errors=True)
+        else:
+            p.unlink(missing_ok=True)

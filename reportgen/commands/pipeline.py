@@ -1,0 +1,287 @@
+"""The stages of ``reportgen build`` and how they overlap (the build's critical path).
+
+    main process   task → solve → note (sections, figures, report.tex) ─ results.json ─ join ─ join
+    sheets         (forked after solve)      sheet 1 … sheet n: DXF + PNG preview ────┘      │
+    LaTeX          (started when report.tex is written)  latexmk + xelatex ──────────────────┘
+
+The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
+the sheets are drawn in a forked child process while the main process composes the note, and
+latexmk runs in the background while the main process writes results.json and waits. Every stage
+records a :class:`Span` (start and end on the monotonic clock shared by the processes), so
+``reportgen bench`` can print what ran in parallel and what waited. Nothing here decides what is
+written: the outputs are the same bytes whether the stages overlap or not.
+"""
+from __future__ import annotations
+
+import os
+import pickle
+import signal
+import sys
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterator
+
+from ..errors import BuildError
+
+MAIN, SHEETS, LATEX = "main", "sheets", "LaTeX"
+
+
+@dataclass(frozen=True)
+class Span:
+    """One stage: its name, the lane it ran in and its start/end (s, ``time.perf_counter``)."""
+    name: str
+    lane: str
+    start: float
+    end: float
+
+    @property
+    def seconds(self) -> float:
+        return self.end - self.start
+
+
+@dataclass
+class Timeline:
+    """The spans of one build; prints each main-lane stage as it ends unless ``quiet``."""
+    quiet: bool = False
+    spans: list[Span] = field(default_factory=list)
+    origin: float = field(default_factory=time.perf_counter)
+    current: str | None = None   # the main-lane stage running (named when it fails)
+
+    @contextmanager
+    def stage(self, name: str, lane: str = MAIN) -> Iterator[None]:
+        t0 = time.perf_counter()
+        if lane == MAIN:
+            self.current = name
+        if not self.quiet:
+            print(f"  {name} …", end="", flush=True)
+        try:
+            yield
+        except BaseException:
+            if not self.quiet:
+                print(" failed", flush=True)
+            raise
+        t1 = time.perf_counter()
+        self.spans.append(Span(name, lane, t0, t1))
+        if not self.quiet:
+            print(f" {t1 - t0:.2f} s", flush=True)
+
+    def add(self, span: Span) -> None:
+        self.spans.append(span)
+        if not self.quiet:
+            where = "" if span.lane == MAIN else f" (in parallel: {span.lane})"
+            print(f"  {span.name}{where} … {span.seconds:.2f} s", flush=True)
+
+    @property
+    def times(self) -> dict[str, float]:
+        """Seconds of each stage by name (what ``build`` returned before stages overlapped)."""
+        return {s.name: s.seconds for s in self.spans}
+
+    def critical_path(self) -> list[tuple[str, str, float, float]]:
+        """(lane, stage, start, end) relative to the build's start, in order of start."""
+        return [(s.lane, s.name, s.start - self.origin, s.end - self.origin)
+                for s in sorted(self.spans, key=lambda s: (s.start, s.lane))]
+
+
+def parallel_possible() -> bool:
+    """Fork a child for the sheets only where fork exists and there is a second processor
+    (``REPORTGEN_JOBS=1`` turns it off)."""
+    if os.environ.get("REPORTGEN_JOBS", "").strip() == "1":
+        return False
+    return hasattr(os, "fork") and (os.cpu_count() or 1) > 1
+
+
+def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool, latexmk: str,
+        cache: Any = None) -> Any:
+    """Solve, write the note, the sheets and results.json into ``tmp``; return the results."""
+    from ..results import build_results, dumps
+
+    with timeline.stage("solve"):
+        results = build_results(project)
+    task = project.task
+    todo = _sheet_list(project) if sheets else []
+    child = _SheetsChild.start(project, tmp, todo, cache) if todo and parallel_possible() else None
+    pending = None
+    try:
+        if task.mechanism is not None or task.gears is not None or task.planetary is not None:
+            tex = _note(project, tmp, timeline)
+            if pdf:
+                pending = _start_latex(tex, latexmk, cache)
+        if todo and child is None:
+            for span in draw_sheets(project, tmp, todo, cache, lane=MAIN):
+                timeline.add(span)
+        with timeline.stage("results.json"):
+            (tmp / "results.json").write_text(dumps(results), encoding="utf-8")
+        if child is not None:
+            t0 = time.perf_counter()
+            for span in child.join():
+                timeline.add(span)
+            timeline.spans.append(Span("wait for the sheets", MAIN, t0, time.perf_counter()))
+            child = None
+        if pending is not None:
+            t0 = time.perf_counter()
+            try:
+                pending.wait()
+            except BuildError as exc:
+                raise BuildError("LaTeX", exc.problem, exc.kept) from None
+            end = time.perf_counter()
+            timeline.add(Span("note: LaTeX", LATEX, pending.started, end))
+            timeline.spans.append(Span("wait for LaTeX", MAIN, t0, end))
+            if cache is not None:
+                cache.store_tex(tex.parent / "latex-build")
+            pending = None
+    finally:
+        if child is not None:
+            child.kill()
+        if pending is not None:
+            pending.cancel()
+    return results
+
+
+def _sheet_list(project: Any) -> list[tuple[str, Any]]:
+    from drawings.sheets import available_sheets
+    return list(available_sheets(project))
+
+
+def _note(project: Any, tmp: Path, timeline: Timeline) -> Path:
+    """Compose the sections, save the figures and write report.tex (once)."""
+    from latex_templates import NoteBuilder
+    from latex_templates.assignment import assignment_section, introduction_paragraphs
+    from latex_templates.compose import compose
+    from latex_templates.render import Strings
+
+    with timeline.stage("note: sections and figures"):
+        sections, left_out = compose(project, Strings(project.task.document.language or "ru"))
+        note = NoteBuilder(project.task.document, designation=project.task.document.note_code(),
+                           introduction=introduction_paragraphs(project, left_out),
+                           conclusions=[c for s in sections for c in s.conclusions],
+                           assignment=assignment_section(project))
+        for s in sections:
+            note.add_section(s.section)
+        return note.render(tmp)
+
+
+def _start_latex(tex: Path, latexmk: str, cache: Any) -> Any:
+    from latex_templates.build import start_pdf
+
+    if cache is not None:
+        cache.restore_tex(tex.parent / "latex-build")
+    try:
+        return start_pdf(tex, latexmk=latexmk)
+    except BuildError as exc:
+        raise BuildError("LaTeX", exc.problem, exc.kept) from None
+
+
+def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any = None, *,
+                lane: str = SHEETS) -> Iterator[Span]:
+    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
+    from drawings.preview import render_png
+
+    folder = tmp / "sheets"
+    folder.mkdir(exist_ok=True)
+    for i, (stem, mod) in enumerate(todo, start=1):
+        name = f"sheet {i}: {stem}"
+        t0 = time.perf_counter()
+        sheet = mod.draw(project, i, len(todo))
+        dxf = folder / f"{stem}.dxf"
+        png = folder / f"{stem}.png"
+        sheet.save(dxf)
+        if cache is None or not cache.restore_preview(dxf, png):
+            render_png(sheet.doc, png, dpi=60)
+            if cache is not None:
+                cache.store_preview(dxf, png)
+        yield Span(name, lane, t0, time.perf_counter())
+
+
+# -- the sheets' child process ---------------------------------------------------------------------
+
+class _SheetsChild:
+    """A forked process that draws the sheets into ``tmp/sheets`` and sends back its spans, or the
+    exception that stopped it (re-raised in the parent with its class and fields)."""
+
+    def __init__(self, pid: int, fd: int) -> None:
+        self.pid = pid
+        self.fd = fd
+
+    @classmethod
+    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any) -> "_SheetsChild":
+        (tmp / "sheets").mkdir(exist_ok=True)
+        r, w = os.pipe()
+        sys.stdout.flush()
+        sys.stderr.flush()
+        pid = os.fork()
+        if pid == 0:  # pragma: no cover - the child (coverage does not follow a fork)
+            os.close(r)
+            status = 0
+            try:
+                signal.signal(signal.SIGINT, signal.SIG_DFL)
+                try:
+                    payload: tuple[str, Any] = ("ok", list(draw_sheets(project, tmp, todo, cache)))
+                except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
+                    payload = ("error", _portable(exc))
+                data = pickle.dumps(payload)
+                with os.fdopen(w, "wb") as f:
+                    f.write(data)
+            except BaseException:  # noqa: BLE001
+                status = 1
+            finally:
+                os._exit(status)
+        os.close(w)
+        return cls(pid, r)
+
+    def join(self) -> list[Span]:
+        with os.fdopen(self.fd, "rb") as f:
+            data = f.read()
+        _, status = os.waitpid(self.pid, 0)
+        self.pid = 0
+        if not data:
+            raise BuildError("sheets", f"the process drawing the sheets ended without a result "
+                                       f"(wait status {status})")
+        kind, value = pickle.loads(data)
+        if kind == "ok":
+            return value
+        raise _rebuilt(value)
+
+    def kill(self) -> None:
+        if self.pid:
+            try:
+                os.kill(self.pid, signal.SIGTERM)
+                os.waitpid(self.pid, 0)
+            except (ProcessLookupError, ChildProcessError):
+                pass
+            try:
+                os.close(self.fd)
+            except OSError:
+                pass
+            self.pid = 0
+
+
+def _portable(exc: BaseException) -> tuple[str, str, str, dict[str, Any]]:
+    """An exception as (module, class, message, fields): reportgen's errors take their fields as
+    constructor arguments, so they are rebuilt from these rather than unpickled."""
+    fields = {}
+    for k, v in vars(exc).items():
+        try:
+            pickle.dumps(v)
+        except Exception:  # noqa: BLE001 - a field that cannot travel is left out
+            continue
+        fields[k] = v
+    cls = type(exc)
+    return cls.__module__, cls.__qualname__, str(exc), fields
+
+
+def _rebuilt(value: tuple[str, str, str, dict[str, Any]]) -> BaseException:
+    import importlib
+
+    module, qualname, message, fields = value
+    try:
+        cls: Any = importlib.import_module(module)
+        for part in qualname.split("."):
+            cls = getattr(cls, part)
+        exc = cls.__new__(cls)
+        BaseException.__init__(exc, message)
+        exc.__dict__.update(fields)
+        return exc
+    except Exception:  # noqa: BLE001
+        return BuildError("sheets", f"{qualname}: {message}")

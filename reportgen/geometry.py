@@ -1,0 +1,75 @@
+"""Plane geometry shared by every layer: the 2-D vector type, read-only arrays, rotation,
+perpendicular, cross product and the named relative tolerances.
+
+One home for each helper (issue 13 item 3): the solvers, scenes, note and sheets import these
+instead of keeping their own copies. Arrays hold vectors in their last axis (shape ``(..., 2)``).
+"""
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+
+__all__ = ["Vec2", "vec2", "readonly", "rot", "rot_vec2", "perp", "cross", "dot",
+           "RTOL_EXACT", "RTOL_ROUNDOFF", "RTOL_GEOMETRY", "RTOL_SOLVER"]
+
+#: A point or vector of the plane as plain floats (m in the task, mm on a drawing).
+Vec2 = tuple[float, float]
+
+# ---------------------------------------------------------------------------------- tolerances
+#: Relative tolerance for quantities that are equal by construction (collinear points of a link,
+#: an identity that holds to the last bits).
+RTOL_EXACT = 1e-9
+#: Relative size below which a computed number is round-off of an exact zero (printed as 0).
+RTOL_ROUNDOFF = 1e-12
+#: Relative tolerance of geometric tests on solved positions (coincident points, parallel lines).
+RTOL_GEOMETRY = 1e-9
+#: Relative residual at which an iterative position solver (Newton) stops.
+RTOL_SOLVER = 1e-12
+
+
+def vec2(v: Iterable[Any]) -> Vec2:
+    """``(x, y)`` as two floats, from any pair (a tuple, a list, a numpy array of shape (2,))."""
+    x, y = v
+    return (float(x), float(y))
+
+
+def readonly(a: Any) -> np.ndarray:
+    """A float copy of ``a`` that cannot be written to (results are immutable)."""
+    out = np.array(a, dtype=float)
+    out.setflags(write=False)
+    return out
+
+
+def rot(theta: Any, p: Vec2 | np.ndarray) -> np.ndarray:
+    """R(θ)·p for an angle or an array of angles θ (rad): shape ``θ.shape + (2,)``."""
+    c, s = np.cos(theta), np.sin(theta)
+    out = np.empty(np.shape(c) + (2,))      # filled in place: faster than np.stack, same bits
+    out[..., 0] = c * p[0] - s * p[1]
+    out[..., 1] = s * p[0] + c * p[1]
+    return out
+
+
+def rot_vec2(theta: float, p: Vec2) -> Vec2:
+    """R(θ)·p for one angle, as plain floats."""
+    return vec2(rot(theta, p))
+
+
+def perp(v: np.ndarray) -> np.ndarray:
+    """v turned by +90° (counter-clockwise): (x, y) → (−y, x), over the last axis."""
+    v = np.asarray(v, dtype=float)
+    out = np.empty(v.shape[:-1] + (2,))
+    out[..., 0] = -v[..., 1]
+    out[..., 1] = v[..., 0]
+    return out
+
+
+def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The z component of a × b over the last axis."""
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """a · b over the last axis."""
+    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]

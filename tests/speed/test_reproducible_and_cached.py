@@ -1,0 +1,90 @@
+"""Issue 16: the same task gives the same bytes whatever PYTHONHASHSEED, the working directory or
+the moment of the build, and the build cache never changes an output (cached = uncached, byte for
+byte, for an unchanged task and for a task with one changed number)."""
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+PRESS = ROOT / "examples" / "press" / "task.toml"
+
+pytestmark = pytest.mark.slow
+
+
+def build(task: Path, out: Path, *, seed: str, cwd: Path, cache: Path | str, extra: tuple[str, ...] = ()):
+    env = dict(os.environ, PYTHONHASHSEED=seed, REPORTGEN_CACHE=str(cache))
+    r = subprocess.run([sys.executable, "-m", "reportgen", "build", str(task), "-o", str(out), *extra],
+                       cwd=cwd, env=env, capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr + r.stdout
+    return r
+
+
+def files(out: Path) -> dict[str, bytes]:
+    """Every output a user gets (LaTeX's working folder aside: its log names the folder)."""
+    return {p.relative_to(out).as_posix(): p.read_bytes() for p in sorted(out.rglob("*"))
+            if p.is_file() and "latex-build" not in p.parts}
+
+
+def assert_same(a: dict[str, bytes], b: dict[str, bytes]) -> None:
+    assert sorted(a) == sorted(b)
+    differ = [name for name in a if a[name] != b[name]]
+    assert not differ, f"different bytes: {differ}"
+
+
+@pytest.fixture(scope="module")
+def builds(tmp_path_factory):
+    if shutil.which("latexmk") is None:
+        pytest.fail("latexmk is not installed: run `make test` (it installs TeX Live)")
+    base = tmp_path_factory.mktemp("repro")
+    cache = base / "cache"
+    work = base / "work"
+    work.mkdir()
+    task = work / "task.toml"
+    shutil.copyfile(PRESS, task)
+    out = {}
+    # an uncached build from the source tree, hash seed 1
+    build(PRESS, base / "plain", seed="1", cwd=ROOT, cache="off")
+    out["plain"] = files(base / "plain")
+    # a cold build that fills the cache, seed 4 (which orders sets of names unlike seed 1), from another folder
+    build(task, base / "cold", seed="4", cwd=work, cache=cache)
+    out["cold"] = files(base / "cold")
+    # unchanged task: from the cache
+    r = build(task, base / "warm", seed="3", cwd=base, cache=cache)
+    out["warm"] = files(base / "warm")
+    out["warm_stdout"] = r.stdout
+    # one number changed: δ 0.05 → 0.04; cached (LaTeX's aux files and the unchanged previews reused) …
+    task.write_text(task.read_text(encoding="utf-8").replace("delta = 0.05", "delta = 0.04"), encoding="utf-8")
+    build(task, base / "changed-cached", seed="4", cwd=work, cache=cache)
+    out["changed-cached"] = files(base / "changed-cached")
+    # … and uncached
+    build(task, base / "changed-plain", seed="5", cwd=ROOT, cache="off")
+    out["changed-plain"] = files(base / "changed-plain")
+    out["cache"] = cache
+    return out
+
+
+def test_same_bytes_whatever_the_hash_seed_and_the_folder(builds):
+    assert_same(builds["plain"], builds["cold"])
+    assert any(name.endswith(".dxf") for name in builds["plain"])   # the sheets are compared too
+
+
+def test_an_unchanged_task_comes_from_the_cache_with_the_same_bytes(builds):
+    assert "from the cache" in builds["warm_stdout"]
+    assert_same(builds["plain"], builds["warm"])
+
+
+def test_a_changed_number_rebuilt_with_the_cache_equals_an_uncached_build(builds):
+    assert builds["changed-plain"]["results.json"] != builds["plain"]["results.json"]
+    assert_same(builds["changed-plain"], builds["changed-cached"])
+    # the kinematics sheet does not depend on δ: its preview came from the cache, the same bytes
+    assert builds["changed-cached"]["sheets/sheet1-kinematics.png"] == builds["plain"]["sheets/sheet1-kinematics.png"]
+
+
+def test_the_cache_holds_only_its_own_folders(builds):
+    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "previews", "tex"]
