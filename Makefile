@@ -37,9 +37,17 @@ demo: system venv
 	$(VENV)/bin/reportgen build examples/press/task.toml -o $(DEMO_OUT)
 	@echo "open $(DEMO_OUT)/report.pdf and $(DEMO_OUT)/sheets/*.dxf (previews: *.png)"
 
-# The whole test suite (what CI runs).
+# The whole test suite (what CI runs): static checks, numerics, the note (LaTeX) and the sheets
+# (LibreCAD).
 test: system venv
 	$(PY) -m pytest -n 2 -p no:cacheprovider tests
+
+# The fast loop for developers: ruff + mypy, then every test that needs no TeX and no LibreCAD
+# (tests marked slow are left to `make test`).
+check: venv
+	$(VENV)/bin/ruff check .
+	$(VENV)/bin/mypy
+	$(PY) -m pytest -n 2 -p no:cacheprovider -m "not slow" --deselect tests/test_static.py tests
 
 # Files written from reportgen/taskspec.py and examples/: docs/task-format.md, the JSON Schema
 # examples/task.schema.json and the package's copy of the examples (reportgen/examples/).
@@ -67,4 +75,4 @@ bench: venv
 	$(VENV)/bin/reportgen bench
 
 clean:
-	rm -rf $(VENV) $(DEMO_OUT) .pytest_cache .hypothesis
+	rm -rf $(VENV) $(DEMO_OUT) .pytest_cache .hypothesis .mypy_cache .ruff_cache

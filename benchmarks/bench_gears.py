@@ -34,7 +34,7 @@ def main() -> None:
     print(f"{'positions':>10}{'time, s':>10}{'|Δs| pitch, µm':>16}{'max |Δ| flank, µm':>20}")
     p = solve_gear_pair(13, 26, 9.0, 0.63, 0.67)
     for n in (61, 121, 241, 481, 961):
-        t, (t1, t2) = timed(lambda: pair_teeth(p, n), 1)
+        t, (t1, t2) = timed(lambda n=n: pair_teeth(p, n), 1)
         ds = max(abs(t1.thickness(t1.r) - p.s1), abs(t2.thickness(t2.r) - p.s2))
         dev = 0.0
         for tt, rho_l, ra in ((t1, p.rho_l1, p.da1 / 2), (t2, p.rho_l2, p.da2 / 2)):
@@ -45,7 +45,7 @@ def main() -> None:
     print(f"{'z1/z2':>8}{'n':>6}{'time, s':>10}{'x1':>8}{'x2':>8}{'x1 exact':>10}{'x2 exact':>10}")
     for z1, z2 in ((13, 26), (9, 18), (20, 60)):
         for n in (81, 161, 321):
-            t, ch = timed(lambda: choose_shifts(z1, z2, 9.0, n=n), 1)
+            t, ch = timed(lambda z1=z1, z2=z2, n=n: choose_shifts(z1, z2, 9.0, n=n), 1)
             print(f"{z1:>4}/{z2:<3}{n:>6}{t:>10.2f}{ch.x1:>8.2f}{ch.x2:>8.2f}{ch.x1_exact:>10.4f}{ch.x2_exact:>10.4f}")
 
 

@@ -25,14 +25,14 @@ def main() -> None:
     print(f"{'example':<14}{'N':>6}{'build, ms':>12}{'positions, ms':>15}{'+ v, a, ms':>13}{'total, ms':>12}")
     for name in ("press", "crank-slider", "shaper", "conveyor", "class3"):
         mech = load_task(EXAMPLES / name / "task.toml").mechanism
-        t_build = best_time(lambda: build_model(mech), repeat=3)
+        t_build = best_time(lambda mech=mech: build_model(mech), repeat=3)
         m = build_model(mech)
         for N in (12, 360, 3600):
             if name == "class3" and N > 360:
                 continue
             phi = np.linspace(0, 2 * math.pi, N, endpoint=False)
-            t_pos = best_time(lambda: m.positions(phi), repeat=3 if name == "class3" else 7)
-            t_all = best_time(lambda: m.solve(phi), repeat=3 if name == "class3" else 7)
+            t_pos = best_time(lambda m=m, phi=phi: m.positions(phi), repeat=3 if name == "class3" else 7)
+            t_all = best_time(lambda m=m, phi=phi: m.solve(phi), repeat=3 if name == "class3" else 7)
             print(f"{name:<14}{N:>6}{t_build * 1e3:>12.2f}{t_pos * 1e3:>15.2f}{(t_all - t_pos) * 1e3:>13.2f}{t_all * 1e3:>12.2f}")
 
 

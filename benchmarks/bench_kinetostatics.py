@@ -32,11 +32,11 @@ def main() -> None:
         p = Project(load_task(EXAMPLES / name / "task.toml"))
         for N in (12, 360, 3600):
             phi = np.linspace(0, 2 * math.pi, N, endpoint=False)
-            t_kin = best_time(lambda: p.loads_at(p.kinematics_at(phi)), repeat=3)
+            t_kin = best_time(lambda p=p, phi=phi: p.loads_at(p.kinematics_at(phi)), repeat=3)
             kin = p.kinematics_at(phi)
             loads = p.loads_at(kin)
-            t_r = best_time(lambda: solve_reactions(p.linkage, p.structure, kin, loads))
-            t_z = best_time(lambda: zhukovsky_lever(p.linkage, kin, loads))
+            t_r = best_time(lambda p=p, kin=kin, loads=loads: solve_reactions(p.linkage, p.structure, kin, loads))
+            t_z = best_time(lambda p=p, kin=kin, loads=loads: zhukovsky_lever(p.linkage, kin, loads))
             r = solve_reactions(p.linkage, p.structure, kin, loads)
             z = zhukovsky_lever(p.linkage, kin, loads)
             dm = np.abs(r.balancing_moment - z.balancing_moment).max() / np.abs(r.balancing_moment).max()
@@ -51,7 +51,7 @@ def main() -> None:
           f"{'max |dev| of reactions > 20 mm, %':>36}{'t, ms':>8}")
     for name in NAMES:
         p = Project(load_task(EXAMPLES / name / "task.toml"))
-        t = best_time(lambda: kinetostatics_at(p), repeat=3)
+        t = best_time(lambda p=p: kinetostatics_at(p), repeat=3)
         ks = kinetostatics_at(p)
         g = ks.graphical
         devs = [abs(v.deviation_percent) for poly in [gg.polygon for gg in g.groups] + [g.crank.polygon]

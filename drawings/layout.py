@@ -16,6 +16,7 @@ from shapely.geometry import box
 from shapely.geometry.base import BaseGeometry
 
 from reportgen.errors import BuildError, GeometryError, ParameterError
+from reportgen.tolerances import MM_EPS
 
 Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right", "center"]
 CORNERS: tuple[str, ...] = ("top-left", "top-right", "bottom-left", "bottom-right", "center")
@@ -112,9 +113,9 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
         best: tuple[float, Rect] | None = None
         for cx, cy in _candidates(region, done, req.width, req.height, gap):
             rect = Rect.from_size(cx, cy, req.width, req.height)
-            if not region.buffer(1e-6).contains(rect.polygon()):
+            if not region.buffer(MM_EPS).contains(rect.polygon()):
                 continue
-            if any(rect.overlaps(p.expanded(gap - 1e-6)) for p in done):
+            if any(rect.overlaps(p.expanded(gap - MM_EPS)) for p in done):
                 continue
             rx, ry = rect.center if req.preferred == "center" else _corner_target(
                 rect.polygon(), req.preferred)
@@ -145,7 +146,7 @@ class Overlap:
 
 
 def find_overlaps(items: Sequence[tuple[str, BaseGeometry]], *,
-                  tolerance: float = 1e-6) -> list[Overlap]:
+                  tolerance: float = MM_EPS) -> list[Overlap]:
     """All pairs of ``(name, geometry)`` whose interiors overlap by more than ``tolerance`` mm²."""
     if len(items) < 2:
         return []
@@ -176,7 +177,7 @@ def try_pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 
     notches = walls(region)
     done: list[Rect] = list(placed)
     out: list[Rect] = []
-    eps = 1e-6
+    eps = MM_EPS
     for req in requests:
         if req.preferred not in CORNERS:
             raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
@@ -219,14 +220,14 @@ def clearance(region: BaseGeometry, rect: Rect, others: Sequence[Rect],
     left, below, right, above = rect.x0 - x0, rect.y0 - y0, x1 - rect.x1, y1 - rect.y1
     for b in stops:
         if b.y0 < rect.y1 and rect.y0 < b.y1:            # in the same row
-            if b.x1 <= rect.x0 + 1e-6:
+            if b.x1 <= rect.x0 + MM_EPS:
                 left = min(left, rect.x0 - b.x1)
-            elif b.x0 >= rect.x1 - 1e-6:
+            elif b.x0 >= rect.x1 - MM_EPS:
                 right = min(right, b.x0 - rect.x1)
         if b.x0 < rect.x1 and rect.x0 < b.x1:            # in the same column
-            if b.y1 <= rect.y0 + 1e-6:
+            if b.y1 <= rect.y0 + MM_EPS:
                 below = min(below, rect.y0 - b.y1)
-            elif b.y0 >= rect.y1 - 1e-6:
+            elif b.y0 >= rect.y1 - MM_EPS:
                 above = min(above, b.y0 - rect.y1)
     return max(left, 0.0), max(below, 0.0), max(right, 0.0), max(above, 0.0)
 

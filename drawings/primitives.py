@@ -26,7 +26,9 @@ from reportgen.numbers import plain, significant
 
 from . import style
 
-Vec = tuple[float, float]
+from reportgen.geometry import Vec2 as Vec
+#: Coordinates as the scenes pass them: a pair (or list) of floats, or a numpy array.
+Coords = Sequence[float] | np.ndarray
 
 # ---------------------------------------------------------------------------------------------
 # numbers
@@ -73,14 +75,14 @@ class Transform:
         if not (self.scale > 0 and math.isfinite(self.scale)):
             raise ParameterError("scale", self.scale, "a positive finite number")
 
-    def __call__(self, p: Sequence[float]) -> Vec:
+    def __call__(self, p: Coords) -> Vec:
         return (self.at[0] + self.scale * (float(p[0]) - self.origin[0]),
                 self.at[1] + self.scale * (float(p[1]) - self.origin[1]))
 
-    def points(self, pts: Iterable[Sequence[float]]) -> list[Vec]:
+    def points(self, pts: Iterable[Coords]) -> list[Vec]:
         return [self(p) for p in pts]
 
-    def inverse(self, q: Sequence[float]) -> Vec:
+    def inverse(self, q: Coords) -> Vec:
         return (self.origin[0] + (float(q[0]) - self.at[0]) / self.scale,
                 self.origin[1] + (float(q[1]) - self.at[1]) / self.scale)
 
@@ -186,16 +188,16 @@ class Canvas:
         if layer != "construction":
             self.annotations.add_obstacle(geom)
 
-    def line(self, p: Sequence[float], q: Sequence[float], layer: str = "contour") -> None:
+    def line(self, p: Coords, q: Coords, layer: str = "contour") -> None:
         """A segment between two model points."""
         self._sheet_polyline([self.transform(p), self.transform(q)], layer)
 
-    def polyline(self, points: Iterable[Sequence[float]], layer: str = "contour",
+    def polyline(self, points: Iterable[Coords], layer: str = "contour",
                  closed: bool = False) -> None:
         """A polyline through model points."""
         self._sheet_polyline(self.transform.points(points), layer, closed)
 
-    def segment(self, p: Sequence[float], q: Sequence[float], layer: str = "contour",
+    def segment(self, p: Coords, q: Coords, layer: str = "contour",
                 trim_mm: tuple[float, float] = (0.0, 0.0)) -> None:
         """A segment shortened by ``trim_mm`` at its ends (to stop at hinge circles)."""
         a, b = self.transform(p), self.transform(q)
@@ -207,17 +209,17 @@ class Canvas:
         b2 = (b[0] - ux * trim_mm[1], b[1] - uy * trim_mm[1])
         self._sheet_polyline([a2, b2], layer)
 
-    def circle(self, center: Sequence[float], radius: float, layer: str = "contour") -> None:
+    def circle(self, center: Coords, radius: float, layer: str = "contour") -> None:
         """A circle of model ``radius``."""
         self.circle_mm(center, radius * self.transform.scale, layer)
 
-    def circle_mm(self, center: Sequence[float], radius_mm: float, layer: str = "contour") -> None:
+    def circle_mm(self, center: Coords, radius_mm: float, layer: str = "contour") -> None:
         """A circle of ``radius_mm`` sheet millimetres at a model point."""
         c = self.transform(center)
         self.layout.add_circle(c, radius_mm, dxfattribs=self._attrs(layer))
         self.annotations.add_obstacle(Point(c).buffer(radius_mm).exterior)
 
-    def arc(self, center: Sequence[float], radius: float, start_deg: float, end_deg: float,
+    def arc(self, center: Coords, radius: float, start_deg: float, end_deg: float,
             layer: str = "contour") -> None:
         """A counter-clockwise arc of model ``radius`` from ``start_deg`` to ``end_deg``."""
         c = self.transform(center)
@@ -262,12 +264,12 @@ class Canvas:
             self.annotations.add_box(f"{self.name}: «{text}»", poly)
         return poly
 
-    def text(self, pos: Sequence[float], text: str, height: float = 3.5,
+    def text(self, pos: Coords, text: str, height: float = 3.5,
              align: str = "bottom-left", rotation: float = 0.0, layer: str = "text") -> Polygon:
         """A one-line TEXT at a model point (height in sheet mm)."""
         return self.text_mm(self.transform(pos), text, height, align, rotation, layer)
 
-    def label(self, point: Sequence[float], text: str, height: float = 5.0, gap_mm: float = 1.5,
+    def label(self, point: Coords, text: str, height: float = 5.0, gap_mm: float = 1.5,
               prefer_deg: float = 45.0, layer: str = "text") -> Polygon:
         """A point label (letter) next to a model point, placed where it overlaps nothing.
 
@@ -312,7 +314,7 @@ class Canvas:
         self.layout.add_solid([tip, left, right], dxfattribs=self._attrs(layer))
         self.annotations.add_obstacle(Polygon([tip, left, right]))
 
-    def arrow(self, start: Sequence[float], end: Sequence[float], label: str | None = None,
+    def arrow(self, start: Coords, end: Coords, label: str | None = None,
               layer: str = "vectors", head_mm: float = 5.0, label_height: float = 5.0) -> None:
         """A vector start → end (model points) with a filled arrowhead and an optional tip label.
 
@@ -335,7 +337,7 @@ class Canvas:
             self.label(end, label, label_height, prefer_deg=math.degrees(math.atan2(uy, ux)))
 
     # -- dimensions ----------------------------------------------------------------------------
-    def dimension(self, p1: Sequence[float], p2: Sequence[float], offset_mm: float = 10.0,
+    def dimension(self, p1: Coords, p2: Coords, offset_mm: float = 10.0,
                   unit_factor: float = 1.0, decimals: int = 1, text: str | None = None) -> float:
         """An aligned dimension between model points, its line ``offset_mm`` to the left of p1→p2.
 
@@ -385,11 +387,11 @@ class Canvas:
                 break
             self._sheet_polyline([(x, y), (x + sx * length, y + sy * length)], layer)
 
-    def hinge(self, point: Sequence[float], radius_mm: float = 2.0, layer: str = "contour") -> None:
+    def hinge(self, point: Coords, radius_mm: float = 2.0, layer: str = "contour") -> None:
         """A revolute pair: a small circle."""
         self.circle_mm(point, radius_mm, layer)
 
-    def fixed_pivot(self, point: Sequence[float], direction_deg: float = -90.0,
+    def fixed_pivot(self, point: Coords, direction_deg: float = -90.0,
                     radius_mm: float = 2.0, height_mm: float = 8.0, base_mm: float = 14.0,
                     layer: str = "contour") -> None:
         """A revolute pair on the frame: hinge circle, two legs to a hatched base.
@@ -417,14 +419,14 @@ class Canvas:
         side = 1.0 if (-dy * ux + dx * uy) > 0 else -1.0
         self.hatch_strokes_mm(p, q, side=side, layer="thin")
 
-    def ground(self, p: Sequence[float], q: Sequence[float], side: float = -1.0,
+    def ground(self, p: Coords, q: Coords, side: float = -1.0,
                layer: str = "contour") -> None:
         """A frame line (guide) between model points, hatched on its right (−1) or left (+1)."""
         a, b = self.transform(p), self.transform(q)
         self._sheet_polyline([a, b], layer)
         self.hatch_strokes_mm(a, b, side=side)
 
-    def slider(self, point: Sequence[float], angle_deg: float = 0.0, length_mm: float = 14.0,
+    def slider(self, point: Coords, angle_deg: float = 0.0, length_mm: float = 14.0,
                height_mm: float = 7.0, guide_mm: float | None = 60.0, hinge_mm: float = 2.0,
                layer: str = "contour") -> None:
         """A slider (block) on a guide: rectangle along ``angle_deg`` centred on the point, a hinge
@@ -446,13 +448,13 @@ class Canvas:
             self.hatch_strokes_mm(g0, g1, side=-1.0)
 
     # -- scales and diagrams -------------------------------------------------------------------
-    def scale_caption(self, pos: Sequence[float], symbol: str, value: float, unit: str,
+    def scale_caption(self, pos: Coords, symbol: str, value: float, unit: str,
                       height: float = 5.0, digits: int = 4) -> Polygon:
         """«μv = 0,02 (м/с)/мм» at a model point; ``unit`` is the text after the number."""
         s = f"{symbol} = {format_significant(value, digits)} {unit}"
         return self.text(pos, s, height)
 
-    def scale_bar(self, pos: Sequence[float], length_mm: float, value: float, unit: str,
+    def scale_bar(self, pos: Coords, length_mm: float, value: float, unit: str,
                   divisions: int = 5, height: float = 3.5) -> None:
         """A scale bar of ``length_mm`` standing for ``value`` ``unit``: ticks and end values."""
         x, y = self.transform(pos)
@@ -464,7 +466,7 @@ class Canvas:
         self.text_mm((x + length_mm, y - 1.5), f"{format_significant(value)} {unit}", height,
                      "top-center")
 
-    def axes(self, origin: Sequence[float], x_length_mm: float, y_up_mm: float,
+    def axes(self, origin: Coords, x_length_mm: float, y_up_mm: float,
              y_down_mm: float = 0.0, x_label: str = "", y_label: str = "",
              x_ticks: Sequence[tuple[float, str]] = (), y_ticks: Sequence[tuple[float, str]] = (),
              height: float = 3.5, tick_mm: float = 1.5) -> None:
@@ -491,7 +493,7 @@ class Canvas:
         if y_label:
             self.text_mm((ox + 2.5, ye[1]), y_label, height + 1.5, "top-left")
 
-    def curve(self, xs: Sequence[float], ys: Sequence[float], layer: str = "contour") -> None:
+    def curve(self, xs: Coords, ys: Coords, layer: str = "contour") -> None:
         """A graph curve through model points (e.g. a diagram in its view's units)."""
         pts = np.column_stack([np.asarray(xs, float), np.asarray(ys, float)])
         self.polyline([tuple(p) for p in pts], layer)

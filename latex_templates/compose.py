@@ -5,8 +5,10 @@ introduction says so. A part module that does not exist yet is simply skipped.
 """
 from __future__ import annotations
 
-import importlib
 from dataclasses import dataclass
+from types import ModuleType
+
+from reportgen.modules import optional_module
 
 from .note import Section
 from .parts import PartContent
@@ -27,13 +29,8 @@ class ComposedSection:
     conclusions: tuple[str, ...]
 
 
-def part_module(name: str):
-    try:
-        return importlib.import_module(f"latex_templates.parts.{name}")
-    except ModuleNotFoundError as exc:
-        if exc.name == f"latex_templates.parts.{name}":
-            return None
-        raise
+def part_module(name: str) -> ModuleType | None:
+    return optional_module(f"latex_templates.parts.{name}")
 
 
 def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list[ComposedSection], list]:

@@ -63,7 +63,7 @@ class Tex(Markup):
     __slots__ = ()
 
     @classmethod
-    def escape(cls, s: Any) -> "Tex":  # type: ignore[override]
+    def escape(cls, s: Any) -> "Tex":
         return escape_latex(s)
 
 

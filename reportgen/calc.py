@@ -404,6 +404,7 @@ def _names_in_order(tree: ast.expr) -> list[str]:
 
 def _evaluate(node: ast.AST, values: Mapping[str, float]) -> float:
     if isinstance(node, ast.Constant):
+        assert isinstance(node.value, (int, float)), "the parser admits numeric constants only"
         return float(node.value)
     if isinstance(node, ast.Name):
         return _CONSTANTS[node.id] if node.id in _CONSTANTS and node.id not in values else values[node.id]
@@ -423,6 +424,7 @@ def _evaluate(node: ast.AST, values: Mapping[str, float]) -> float:
             return a / b
         return float(a ** b)
     if isinstance(node, ast.Call):
+        assert isinstance(node.func, ast.Name), "the parser admits calls of named functions only"
         return float(_FUNCTIONS[node.func.id](*(_evaluate(a, values) for a in node.args)))
     raise CalcExpressionError(f"cannot evaluate {ast.dump(node)}")
 
@@ -450,7 +452,7 @@ class _SymbolicLeaves:
         self.vars = vars_
         self.symbolic = True
 
-    def name(self, name: str, in_degrees: bool) -> _Tex:
+    def name(self, name: str, _in_degrees: bool) -> _Tex:
         if name in _CONSTANTS and name not in self.vars:
             return _Tex("\\pi", _P_ATOM)
         return _Tex(self.vars[name].latex, _P_ATOM)
@@ -491,6 +493,7 @@ def _to_latex(node: ast.AST, leaves: "_SymbolicLeaves | _NumberLeaves", in_degre
 
 def _tex(node: ast.AST, leaves: "_SymbolicLeaves | _NumberLeaves", in_degrees: bool = False) -> _Tex:
     if isinstance(node, ast.Constant):
+        assert isinstance(node.value, (int, float)), "the parser admits numeric constants only"
         text = _constant_text(float(node.value)) + ("^\\circ" if in_degrees else "")
         return _Tex(text, _P_ATOM)
     if isinstance(node, ast.Name):
@@ -538,6 +541,7 @@ def _binop(node: ast.BinOp, leaves: "_SymbolicLeaves | _NumberLeaves", deg: bool
 
 
 def _call(node: ast.Call, leaves: "_SymbolicLeaves | _NumberLeaves", deg: bool) -> _Tex:
+    assert isinstance(node.func, ast.Name), "the parser admits calls of named functions only"
     fname = node.func.id
     if fname == "radians":
         # An angle given in degrees: the symbol alone, or its number with a degree sign.

@@ -19,6 +19,7 @@ from .kinematics.extremes import Output, Strokes, output_coordinate
 from .kinematics.solve import KinematicModel
 from .plans import MEASURE_MM, round_scale
 from .geometry import readonly as _ro
+from .tolerances import TINY
 
 #: Length of the crank-angle axis for one turn, mm (seed 000 uses 192–240 mm).
 AXIS_MM = 240.0
@@ -67,11 +68,11 @@ class Diagrams:
     @property
     def v_deviation(self) -> float:
         """Largest deviation of the velocity replica, relative to the largest exact |v|."""
-        return float(np.abs(self.v_graph - self.v_mid_exact).max() / max(np.abs(self.v).max(), 1e-300))
+        return float(np.abs(self.v_graph - self.v_mid_exact).max() / max(np.abs(self.v).max(), TINY))
 
     @property
     def a_deviation(self) -> float:
-        return float(np.abs(self.a_graph - self.a_mid_exact).max() / max(np.abs(self.a).max(), 1e-300))
+        return float(np.abs(self.a_graph - self.a_mid_exact).max() / max(np.abs(self.a).max(), TINY))
 
 
 def _pick_pole(peak_value: float, mu_prev: float, mu_t: float) -> float:

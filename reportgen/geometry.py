@@ -1,5 +1,5 @@
 """Plane geometry shared by every layer: the 2-D vector type, read-only arrays, rotation,
-perpendicular, cross product and the named relative tolerances.
+perpendicular and cross product (the named tolerances: ``reportgen.tolerances``).
 
 One home for each helper (issue 13 item 3): the solvers, scenes, note and sheets import these
 instead of keeping their own copies. Arrays hold vectors in their last axis (shape ``(..., 2)``).
@@ -11,23 +11,10 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Vec2", "vec2", "readonly", "rot", "rot_vec2", "perp", "cross", "dot",
-           "RTOL_EXACT", "RTOL_ROUNDOFF", "RTOL_GEOMETRY", "RTOL_SOLVER"]
+__all__ = ["Vec2", "vec2", "readonly", "rot", "rot_vec2", "perp", "cross", "dot"]
 
 #: A point or vector of the plane as plain floats (m in the task, mm on a drawing).
 Vec2 = tuple[float, float]
-
-# ---------------------------------------------------------------------------------- tolerances
-#: Relative tolerance for quantities that are equal by construction (collinear points of a link,
-#: an identity that holds to the last bits).
-RTOL_EXACT = 1e-9
-#: Relative size below which a computed number is round-off of an exact zero (printed as 0).
-RTOL_ROUNDOFF = 1e-12
-#: Relative tolerance of geometric tests on solved positions (coincident points, parallel lines).
-RTOL_GEOMETRY = 1e-9
-#: Relative residual at which an iterative position solver (Newton) stops.
-RTOL_SOLVER = 1e-12
-
 
 def vec2(v: Iterable[Any]) -> Vec2:
     """``(x, y)`` as two floats, from any pair (a tuple, a list, a numpy array of shape (2,))."""
@@ -35,9 +22,10 @@ def vec2(v: Iterable[Any]) -> Vec2:
     return (float(x), float(y))
 
 
-def readonly(a: Any) -> np.ndarray:
-    """A float copy of ``a`` that cannot be written to (results are immutable)."""
-    out = np.array(a, dtype=float)
+def readonly(a: Any, dtype: Any = float) -> np.ndarray:
+    """A copy of ``a`` (floats unless ``dtype`` says otherwise) that cannot be written to (results
+    are immutable)."""
+    out = np.array(a, dtype=dtype)
     out.setflags(write=False)
     return out
 

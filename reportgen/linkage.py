@@ -22,11 +22,12 @@ import numpy as np
 
 from .errors import TaskError
 from .task import Mechanism
+from .tolerances import RTOL_EQUAL
 
-Vec = tuple[float, float]
+from .geometry import Vec2 as Vec, rot_vec2
 
 #: Relative tolerance for a degenerate (straight) triangle: a bar with a point between its ends.
-COLLINEAR_REL_TOL = 1e-9
+COLLINEAR_REL_TOL = RTOL_EQUAL
 
 
 @dataclass(frozen=True)
@@ -172,11 +173,6 @@ def _com_local(ln, local: Mapping[str, Vec]) -> Vec:
     return (sum(xs) / len(xs), sum(ys) / len(ys))
 
 
-def _rot(theta: float, v: Vec) -> Vec:
-    c, s = math.cos(theta), math.sin(theta)
-    return (c * v[0] - s * v[1], s * v[0] + c * v[1])
-
-
 def compile_linkage(mech: Mechanism) -> Linkage:
     """Build bodies, joints and slides from a validated :class:`Mechanism`."""
     sk = {k: (float(v[0]), float(v[1])) for k, v in mech.points.items()}
@@ -213,11 +209,11 @@ def compile_linkage(mech: Mechanism) -> Linkage:
                              _com_local(ln, loc), float(ln.mass), float(ln.inertia))
 
     carriers: dict[str, list[int]] = {}
-    for p in ground:
-        carriers.setdefault(p, []).append(0)
+    for name in ground:
+        carriers.setdefault(name, []).append(0)
     for ln in mech.links:
-        for p in ln.points:
-            carriers.setdefault(p, []).append(ln.id)
+        for name in ln.points:
+            carriers.setdefault(name, []).append(ln.id)
     joints = tuple(Joint(p, tuple(sorted(set(b)))) for p, b in sorted(carriers.items()) if len(set(b)) >= 2)
 
     slides = []
@@ -264,6 +260,6 @@ def sketch_q(linkage: Linkage) -> np.ndarray:
             continue
         x, y, th = b.sketch_pose
         p0 = b.local[b.points[0]]
-        off = _rot(th, p0)
+        off = rot_vec2(th, p0)
         q[k] = (x - off[0], y - off[1], th)
     return q

@@ -157,7 +157,7 @@ def gravity_loads(linkage: Linkage, kin: KinematicsResult) -> LoadSet:
     return LoadSet(tuple(forces), ())
 
 
-def constant_loads(mech: Mechanism, linkage: Linkage, kin: KinematicsResult) -> LoadSet:
+def constant_loads(mech: Mechanism, kin: KinematicsResult) -> LoadSet:
     """The task's constant forces (at a point or the centre of mass) and couples."""
     forces, moments = [], []
     count: dict[str, int] = {}
@@ -196,10 +196,10 @@ def inertia_loads(linkage: Linkage, kin: KinematicsResult) -> LoadSet:
 def external_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsResult, strokes: Strokes | None) -> LoadSet:
     """All loads but inertia: resistance, gravity, constant task loads."""
     return resistance_loads(mech, linkage, model, kin, strokes) + gravity_loads(linkage, kin) + \
-        constant_loads(mech, linkage, kin)
+        constant_loads(mech, kin)
 
 
-def power(loads: LoadSet, kin: KinematicsResult, linkage: Linkage) -> np.ndarray:
+def power(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
     """Σ(F·v_point + M·ω_link) at every position, W — the velocity of each force's own point."""
     q, qd = np.asarray(kin.q), np.asarray(kin.qd)
     P = np.zeros(kin.phi.size)

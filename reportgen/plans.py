@@ -26,6 +26,7 @@ from .geometry import perp as _perp
 from .kinematics import KinematicsResult
 from .linkage import Linkage
 from .structure import Group, Structure
+from .tolerances import RTOL_ROUNDOFF
 from .errors import NameLookupError
 
 #: Scale factors are 1, 2, 2.5, 4 or 5 × 10^k (so the crank's vector is 50–100 mm, unless another
@@ -49,7 +50,7 @@ def round_scale(value: float, max_mm: float = CRANK_VECTOR_MAX_MM) -> float:
     for exp in (k, k + 1):
         for step in ROUND_STEPS:
             mu = step * 10.0 ** exp
-            if mu >= target * (1 - 1e-12):
+            if mu >= target * (1 - RTOL_ROUNDOFF):
                 return mu
     return 10.0 ** (k + 1)
 
@@ -159,9 +160,9 @@ def build_plans(linkage: Linkage, structure: Structure, kin: KinematicsResult, i
     for k in kin.coms:
         vpts[f"s{k}"] = tuple(np.asarray(kin.coms[k].vel[i]) / mu_v)
         apts[f"s{k}"] = tuple(np.asarray(kin.coms[k].acc[i]) / mu_a)
-    for g in linkage.ground:
-        vpts[letter(g)] = (0.0, 0.0)
-        apts[letter(g)] = (0.0, 0.0)
+    for name in linkage.ground:
+        vpts[letter(name)] = (0.0, 0.0)
+        apts[letter(name)] = (0.0, 0.0)
     vc: list[PlanComponent] = []
     ac: list[PlanComponent] = []
     veq: list[tuple[str, str]] = []
@@ -177,9 +178,9 @@ def build_plans(linkage: Linkage, structure: Structure, kin: KinematicsResult, i
     for g in structure.groups[1:]:
         key = g.key
         if g.group_class == 2 and g.kind == "RRR":
-            _rrr(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts)
+            _rrr(b, g, mu_a, vc, ac, veq, aeq, apts)
         elif g.group_class == 2 and g.kind == "RRP":
-            _rrp(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts)
+            _rrp(b, g, mu_a, vc, ac, veq, aeq, apts)
         elif g.group_class == 2 and g.kind == "RPR":
             _rpr(b, g, mu_v, mu_a, vc, ac, veq, aeq, vpts, apts)
         else:
@@ -211,7 +212,7 @@ def _relative(b: _Builder, k: int, Q: str, P: str, mu_a: float, group: str, apts
     ac.append(PlanComponent(f"a^{{\\tau}}_{{{Q}{P}}}", "tangential", helper, letter(Q), tuple(at), rf"\perp {Q}{P}", group))
 
 
-def _rrr(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts):
+def _rrr(b, g, mu_a, vc, ac, veq, aeq, apts):
     a, c = g.links
     Q = _inner(g).point
     P, S = _ext(g, a).point, _ext(g, c).point
@@ -225,7 +226,7 @@ def _rrr(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts):
                        rf"\bar a_{{{Q}}} = \bar a_{{{S}}} + \bar a^{{n}}_{{{Q}{S}}} + \bar a^{{\tau}}_{{{Q}{S}}}"))
 
 
-def _rrp(b, g, mu_v, mu_a, vc, ac, veq, aeq, apts):
+def _rrp(b, g, mu_a, vc, ac, veq, aeq, apts):
     a, c = g.links
     r, pl = (a, c) if _ext(g, a).kind == "R" else (c, a)
     Q = _inner(g).point

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -19,16 +20,21 @@ from .linkage import Linkage, compile_linkage
 from .structure import Structure, analyse_structure
 from .task import Task
 
+if TYPE_CHECKING:  # the planetary package is imported when a task has [planetary]
+    from .planetary.drive import DriveCheck, DriveRatio
+    from .planetary.search import PlanetaryDesign
+    from .planetary.velocity import VelocityTriangle
+
 
 @dataclass(frozen=True)
 class PlanetaryStage:
     """The reducer chosen for the task: the drive's required ratio (if "auto"), the design, its
     velocity triangle (if a module is given) and the achieved crank speed."""
     target: float
-    drive: object | None        # reportgen.planetary.drive.DriveRatio
-    design: object              # reportgen.planetary.search.PlanetaryDesign
-    triangle: object | None     # reportgen.planetary.velocity.VelocityTriangle
-    check: object | None        # reportgen.planetary.drive.DriveCheck
+    drive: DriveRatio | None
+    design: PlanetaryDesign
+    triangle: VelocityTriangle | None
+    check: DriveCheck | None
 
 
 class Project:

@@ -1,4 +1,4 @@
-"""results.json (``../shared/RESULTS_FORMAT.md``): the numbers the note prints and the sheets draw.
+"""results.json (``docs/results.md``): the numbers the note prints and the sheets draw.
 
 Vectors are [x, y] in SI units, angles in degrees, angular speeds in rad/s (positive =
 counter-clockwise); position-wise lists follow ``kinematics.phi_deg``. Keys beyond the contract are
@@ -38,7 +38,7 @@ def _clean(x: Any) -> Any:
     return x
 
 
-def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None, linkage=None) -> dict:
+def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None) -> dict:
     block: dict[str, Any] = {
         "phi_deg": np.mod(kin.phi_deg, 360.0),
         "points": {name: {"pos": m.pos, "vel": m.vel, "acc": m.acc} for name, m in kin.points.items()},
@@ -88,6 +88,7 @@ def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
     if "planetary" in sections and project.task.planetary is not None:
         from .planetary.results import planetary_block
         st = project.planetary
+        assert st is not None  # the task has [planetary]
         out["planetary"] = planetary_block(st.design, st.triangle, st.check)
     return _clean(out)
 

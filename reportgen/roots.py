@@ -19,6 +19,8 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from .errors import ComputationError
+
 #: Points sampled across each bracket per round of :func:`extremes`.
 SAMPLES = 17
 #: Absolute tolerance on the abscissa of an extreme (the value near an extreme errs by its square).
@@ -28,12 +30,12 @@ EXTREME_XTOL = 1e-9
 FLAT = 8 * np.finfo(float).eps
 
 
-class RootNotBracketedError(ValueError):
+class RootNotBracketedError(ComputationError, ValueError):
     """f(a) and f(b) have the same sign: ``a``, ``b``, ``fa``, ``fb``."""
 
     def __init__(self, a: float, b: float, fa: float, fb: float) -> None:
         self.a, self.b, self.fa, self.fb = a, b, fa, fb
-        super().__init__(f"f({a!r}) = {fa!r} and f({b!r}) = {fb!r} have the same sign")
+        super().__init__("Brent's method", f"f({a!r}) = {fa!r} and f({b!r}) = {fb!r} have the same sign")
 
 
 def brent_root(f: Callable[..., float], a: float, b: float, args: tuple = (), *, xtol: float = 2e-12,
@@ -81,7 +83,7 @@ def brent_root(f: Callable[..., float], a: float, b: float, args: tuple = (), *,
         a, fa = b, fb
         b += d if abs(d) > tol else (tol if m > 0 else -tol)
         fb = float(f(b, *args))
-    raise ArithmeticError(f"Brent's method did not converge in {maxiter} steps on [{a}, {b}]")
+    raise ComputationError("Brent's method", f"no convergence in {maxiter} steps on [{a}, {b}]")
 
 
 Search = tuple[Callable[[tuple], np.ndarray], np.ndarray, str]
@@ -139,7 +141,7 @@ def extremes(evaluate: Callable[[np.ndarray], tuple], nodes: np.ndarray,
                 if keep:
                     brackets[k] = [(min(br[i][0] for i in keep), max(br[i][1] for i in keep))]
                     limits[k] = [(min(limits[k][i][0] for i in keep), max(limits[k][i][1] for i in keep))]
-    for t_best, v_best in best:
+    for _t, v_best in best:
         if not math.isfinite(v_best):
-            raise ArithmeticError("a non-finite value in the search for an extreme")
+            raise ComputationError("the search for an extreme", "a non-finite value")
     return best

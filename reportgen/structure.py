@@ -21,6 +21,7 @@ import numpy as np
 
 from .errors import StructureError
 from .linkage import Linkage, sketch_q
+from .tolerances import RTOL_RANK
 
 #: Largest Assur group searched (links). Class IV and two-contour groups have at most 6 links here.
 MAX_GROUP_LINKS = 8
@@ -205,7 +206,7 @@ def numerical_mobility(linkage: Linkage) -> tuple[int, int]:
     J = J.copy()
     J[:, 2::3] /= L
     s = np.linalg.svd(J, compute_uv=False)
-    tol = s.max() * max(J.shape) * 1e-10 if s.size else 0.0
+    tol = s.max() * max(J.shape) * RTOL_RANK if s.size else 0.0
     rank = int((s > tol).sum())
     return 3 * len(linkage.moving) - rank, J.shape[0] - rank
 

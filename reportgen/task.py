@@ -1,4 +1,4 @@
-"""The task (задание) as frozen dataclasses: the contract of ``../shared/TASK_FORMAT.md``.
+"""The task (задание) as frozen dataclasses: the format of ``docs/task-format.md`` (generated from ``reportgen/taskspec.py``).
 
 ``reportgen.taskfile.load_task(path)`` reads a TOML file into a :class:`Task`, validating every key
 (errors carry the TOML path). Units are SI here (m, kg, s, N, rad), except that gear sizes stay in
@@ -11,8 +11,7 @@ from types import MappingProxyType
 from typing import Literal, Mapping
 
 from .errors import NameLookupError
-
-Vec2 = tuple[float, float]
+from .geometry import Vec2
 
 LINK_KINDS = ("crank", "coupler", "rocker", "slider", "block", "slotted")
 LANGUAGES = ("ru", "uk", "en")
@@ -96,6 +95,10 @@ class MassRules:
     triangle_factor: float = 2.5
 
 
+#: A resistance constant along the stroke: (fraction of the stroke, fraction of the maximum).
+DEFAULT_LAW: tuple[tuple[float, float], ...] = ((0.0, 1.0), (1.0, 1.0))
+
+
 @dataclass(frozen=True)
 class Load:
     """A load on a link.
@@ -110,7 +113,7 @@ class Load:
     link: int
     force: float | None = None
     moment: float | None = None
-    law: tuple[tuple[float, float], ...] = ((0.0, 1.0), (1.0, 1.0))
+    law: tuple[tuple[float, float], ...] = DEFAULT_LAW
     stroke: Literal["working", "idle", "both"] = "working"
     point: str | None = None
     com: bool = False

@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from .errors import InternalError
 from .taskfile_values import Spec
 from .taskspec import OPTIONAL, SECTION, SECTIONS, Key, Section
 
@@ -98,7 +99,7 @@ def _toml(value: Any) -> str:
         return "[" + ", ".join(_toml(v) for v in value) + "]"
     if isinstance(value, dict):
         return "{ " + ", ".join(f"{k} = {_toml(v)}" for k, v in value.items()) + " }"
-    raise TypeError(f"no TOML form for {value!r}")
+    raise InternalError("an example or default of reportgen/taskspec.py", f"no TOML form for {value!r}")
 
 
 def _cell(text: str) -> str:

@@ -19,16 +19,17 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from .errors import TaskError, TaskSyntaxError
-from .task import (Analysis, Document, Drive, Dynamics, Flywheel, Gears,
+from .task import (DEFAULT_LAW, Analysis, Document, Drive, Dynamics, Flywheel, Gears,
                    Link, Load, MassRules, Mechanism, Planetary, Slide, Task, Vec2, frozen_mapping)
 from .taskfile_values import (Array, Int, OneOf, Spec, Table, Word, array_of_tables, check_keys, fmt,
                               index, join, show, suggest)
 from .taskspec import (INERTIA, LAW, LENGTH, LINK_ID, LOAD_KINDS, MAX_LENGTH, POINT_NAME, POINT_XY, SECTION)
+from .tolerances import RTOL_EQUAL
 
 __all__ = ["load_task", "loads_task", "parse_task", "MAX_LENGTH", "COLLINEAR_RTOL"]
 
 #: Relative tolerance within which three points of a link count as collinear (a straight bar).
-COLLINEAR_RTOL = 1e-9
+COLLINEAR_RTOL = RTOL_EQUAL
 
 # The keys of every table and the specs of their values: reportgen.taskspec (one source for the
 # loader, docs/task-format.md and the JSON Schema).
@@ -157,7 +158,7 @@ def _mechanism(value: Any, path: str) -> Mechanism:
                  for i, v in enumerate(array_of_tables(t.get("link", _ANY), link_path, "mechanism.link"))]
     if not raw_links:
         raise TaskError(link_path, "has no links", "at least one [[mechanism.link]]")
-    by_id = _check_ids(raw_links, link_path)
+    by_id = _check_ids(raw_links)
 
     drive = _drive(t.get("drive", _ANY_TABLE), t.at("drive"), by_id, ground)
     slide_pairs = _slide_pairs(t.raw("slide", []))
@@ -224,7 +225,7 @@ class _AnyValue(Spec):
     def __init__(self, expected: str) -> None:
         self.expected = expected
 
-    def read(self, value: Any, path: str) -> Any:
+    def read(self, value: Any, _path: str) -> Any:
         return value
 
 
@@ -340,7 +341,7 @@ def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _Raw
     return _RawLink(pos, path, lid, kind, tuple(pts), given, mass, inertia, com)
 
 
-def _check_ids(raw_links: list[_RawLink], path: str) -> dict[int, _RawLink]:
+def _check_ids(raw_links: list[_RawLink]) -> dict[int, _RawLink]:
     by_id: dict[int, _RawLink] = {}
     for ln in raw_links:
         if ln.id in by_id:
@@ -461,6 +462,7 @@ def _resolve_links(raw_links: list[_RawLink], by_id: dict[int, _RawLink], drive_
                 raise TaskError(join(ln.path, what), f"the mass rules give a {what} that is not finite",
                                 f"a smaller [mechanism.mass_rules], or {what} given explicitly")
         lengths = tuple((p, q, l) for p, q, l, _ in ln.given.values())
+        assert ln.kind is not None  # given, or inferred in _mechanism before the mass rules
         out.append(Link(id=ln.id, kind=ln.kind, points=ln.points, lengths=lengths, mass=m, inertia=j,
                         com=ln.com, mass_given=ln.mass is not None, inertia_given=ln.inertia is not None))
     return out
@@ -554,7 +556,7 @@ def _load(value: Any, path: str, links: Mapping[int, Link]) -> Load:
                             "exactly one of force = … N (a slider) or moment = … N·m (a rotating link)")
         force = _get(t, "mechanism.load", "force")
         moment = _get(t, "mechanism.load", "moment")
-        law = _law(t.raw("law"), t.at("law")) if "law" in t else Load.__dataclass_fields__["law"].default
+        law = _law(t.raw("law"), t.at("law")) if "law" in t else DEFAULT_LAW
         stroke = _get(t, "mechanism.load", "stroke")
         return Load(kind="resistance", link=ln.id, force=force, moment=moment, law=law, stroke=stroke)
     if kind == "force":

@@ -160,9 +160,9 @@ def _range_text(gt: float | None, ge: float | None, lt: float | None, le: float 
     if lo and hi:
         text = f" in {lo}, {hi}"
     elif lo:
-        text = f" > {fmt(gt)}" if gt is not None else f" ≥ {fmt(ge)}"
+        text = f" > {fmt(gt)}" if gt is not None else f" ≥ {fmt(ge or 0.0)}"
     elif hi:
-        text = f" < {fmt(lt)}" if lt is not None else f" ≤ {fmt(le)}"
+        text = f" < {fmt(lt)}" if lt is not None else f" ≤ {fmt(le or 0.0)}"
     else:
         text = ""
     if nonzero:

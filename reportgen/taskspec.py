@@ -9,9 +9,10 @@ the loader and written in the key's ``doc``.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any, Literal
 
+from .errors import NameLookupError
 from .task import (LANGUAGES, LINK_KINDS, Analysis, Document, Dynamics, Flywheel, Gears, Load, MassRules,
                    Mechanism, Planetary)
 from .taskfile_values import REQUIRED, Array, Bool, Int, NameMap, Number, OneOf, Spec, Str, Word, vec2
@@ -83,7 +84,7 @@ class Section:
         for k in self.keys:
             if k.name == name:
                 return k
-        raise KeyError(name)
+        raise NameLookupError(f"key of [{self.path}]", name, self.names)
 
     def default(self, name: str) -> Any:
         """The loader's default for ``name`` (``REQUIRED`` if it must be given)."""
@@ -119,7 +120,7 @@ PLANETARY_SCHEMES = ("single-row", "two-row-ext-int", "two-row-ext-ext", "two-ro
 
 def _dflt(cls: type, name: str) -> Any:
     """The default of field ``name`` of the task dataclass ``cls`` (the loader's default)."""
-    return cls.__dataclass_fields__[name].default
+    return {f.name: f.default for f in fields(cls)}[name]
 
 
 # ---------------------------------------------------------------------------------------- sections

@@ -1,6 +1,6 @@
 """Canonical mechanisms as task-file text, for tests, benchmarks and docs.
 
-Every function here is pure: it returns the text of a task file (``/work/shared/TASK_FORMAT.md``,
+Every function here is pure: it returns the text of a task file (``docs/task-format.md``,
 read by :func:`reportgen.taskfile.loads_task`) and reads or writes nothing.
 
 * :func:`linkage` writes any linkage from its points, links, slides, drive and loads;
@@ -17,7 +17,7 @@ import math
 from types import MappingProxyType
 from typing import Any, Iterable, Mapping, Sequence
 
-Point = tuple[float, float]
+from .geometry import Vec2 as Point
 Keys = Mapping[str, Any]
 
 START_AT_ZERO: Keys = MappingProxyType({"start": 0.0})

@@ -71,7 +71,7 @@ def test_every_exception_class_has_the_one_root():
 def test_cli_maps_every_error_to_an_exit_status(monkeypatch, capsys, exc, code):
     import reportgen.commands.gear as gear
 
-    def boom(args):
+    def boom(_args):
         raise exc
     monkeypatch.setattr(gear, "run", boom)
     rc = main(["gear", "--z1", "13", "--z2", "26", "--module", "9"])
@@ -89,11 +89,11 @@ GEARS = "[gears]\nz1 = 13\nz2 = 26\nmodule = 9.0\nx1 = 0.63\nx2 = 0.67\n"
                                  KeyError("x")], ids=["reportgen-error", "bug"])
 def test_a_failed_stage_keeps_out_failed(tmp_path, monkeypatch, capsys, exc):
     """Was: only BuildError kept OUT.failed/; any other error removed the work and printed a traceback."""
-    import reportgen.commands.build as build
+    import reportgen.commands.pipeline as pipeline
 
-    def boom(*a, **k):
+    def boom(*_a, **_k):
         raise exc
-    monkeypatch.setattr(build, "_sheets", boom)
+    monkeypatch.setattr(pipeline, "draw_sheets", boom)
     task = tmp_path / "task.toml"
     task.write_text(GEARS, encoding="utf-8")
     out = tmp_path / "out"

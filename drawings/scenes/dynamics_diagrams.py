@@ -230,7 +230,7 @@ def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     _title(v, "Изменение кинетической энергии ΔE(φ)",
            f"μE = {format_significant(g.mu_E, 4)} Дж/мм{k}")
     _phi_axes(v, g, sp, "ΔE", labels, numbers=True)
-    pts = _nodes_polyline(v, g.x, g.e_mm)
+    _nodes_polyline(v, g.x, g.e_mm)
     return v
 
 
@@ -245,7 +245,7 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str]) -> tuple[V
     v.axes((0.0, 0.0), x_len + RIGHT_MM - 6.0, sp.up + 4.0, sp.down, x_label="J", y_label="ΔE")
     pts = list(zip(map(float, g.j_mm), map(float, g.e_mm)))
     v.polyline(pts, "contour")
-    for p, name in zip(pts[:-1], labels[:-1]):
+    for p, _name in zip(pts[:-1], labels[:-1]):
         v.circle_mm(p, 0.6, "contour")
     # the arcs of ψ stop short of the curve where it comes close to the ΔE axis (shaper)
     r_arc = min(ARC_MM, max(ARC_MIN_MM, 0.6 * float(np.min(g.j_mm))))
@@ -294,7 +294,7 @@ def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     return v
 
 
-def omega_span(res, g) -> tuple[float, Span]:
+def omega_span(res) -> tuple[float, Span]:
     """μω (rad/s per mm, round) and the span of ω − ω_m on the sheet (band included)."""
     from reportgen.dynamics.graphical import nice_ceil
 
@@ -304,13 +304,13 @@ def omega_span(res, g) -> tuple[float, Span]:
     return mu, Span.of(w / mu, np.array([lo, hi]) / mu)
 
 
-def omega_height(res, g) -> float:
-    return omega_span(res, g)[1].height
+def omega_height(res) -> float:
+    return omega_span(res)[1].height
 
 
-def draw_omega(sheet: Sheet, rect: Rect, res, g, labels: list[str]) -> View:
+def draw_omega(sheet: Sheet, rect: Rect, res, g) -> View:
     """ω(φ) of the steady motion with the flywheel: the φ axis at ω_m, the band ω_m(1 ± δ/2)."""
-    mu, sp = omega_span(res, g)
+    mu, sp = omega_span(res)
     left = g.H + LEFT_MM + 8.0
     v = _view(sheet, "omega", rect, (rect.x0 + left, rect.y1 - TOP_MM - sp.up))
     _title(v, "Угловая скорость кривошипа ω(φ) с маховиком",

@@ -101,7 +101,7 @@ def _hatch(view: View, x0: float, y0: float, x1: float, y1: float, step: float) 
         c += step * 1.4142135623730951
 
 
-def draw_results(sheet: Sheet, res, rect: Rect, rows: list[tuple[str, str]]) -> View:
+def draw_results(sheet: Sheet, rect: Rect, rows: list[tuple[str, str]]) -> View:
     """A two-column table (name, value) of the calculation's results, rows 8 mm high."""
     view = sheet.place_view("results", rect, Transform(1.0, (0.0, 0.0), (rect.x0, rect.y0)))
     w1 = rect.width * 0.62

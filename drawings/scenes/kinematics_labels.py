@@ -14,7 +14,7 @@ from shapely.geometry import Polygon, box
 from drawings import style
 from drawings.primitives import Canvas
 
-Vec = tuple[float, float]
+from reportgen.geometry import Vec2 as Vec
 
 #: LaTeX commands that appear in the names of plan components.
 _GREEK = {r"\tau": "τ", r"\omega": "ω", r"\varepsilon": "ε", r"\varphi": "φ", r"\pi": "π",

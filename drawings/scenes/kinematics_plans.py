@@ -14,6 +14,7 @@ from drawings import style
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
+from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
 from reportgen.plans import Plan
@@ -66,7 +67,7 @@ def _groups(plan: Plan, keys: list[str]) -> list[tuple[tuple[float, float], list
                 names.append(k)
                 break
         else:
-            out.append((tuple(p), [k]))
+            out.append((vec2(p), [k]))
     return out
 
 
@@ -105,11 +106,11 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
             continue
         ends_done.add(key)
         view.arrow((0.0, 0.0), p, head_mm=head)
-        drawn.append(Drawn(f"{UNITS[plan.kind][2]}_{{{k.upper()}}}", (0.0, 0.0), tuple(p)))
+        drawn.append(Drawn(f"{UNITS[plan.kind][2]}_{{{k.upper()}}}", (0.0, 0.0), vec2(p)))
     for c in plan.components:
         a, b = plan.points[c.start], plan.points[c.end]
         view.arrow(a, b, head_mm=head)
-        drawn.append(Drawn(c.name, tuple(a), tuple(b)))
+        drawn.append(Drawn(c.name, vec2(a), vec2(b)))
     # letters at the points
     inside = label_region(view, small)
     for pos, keys in _groups(plan, order):

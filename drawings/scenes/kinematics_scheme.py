@@ -13,6 +13,7 @@ from shapely.geometry import Polygon
 from drawings.primitives import format_number
 from drawings.sheet import View
 from drawings.scenes import kinematics_labels as rl
+from reportgen.geometry import vec2
 from reportgen.kinematics import KinematicsResult
 from reportgen.kinematics.constraints import rot
 from reportgen.project import Project
@@ -35,7 +36,7 @@ class SchemeData:
     """Everything the scheme view draws, in metres."""
     kin: KinematicsResult            # the analysed positions
     dense: KinematicsResult          # DENSE positions over one turn, for the trajectories
-    extremes: KinematicsResult       # [start, end] of the working stroke (may be empty)
+    extremes: KinematicsResult | None  # [start, end] of the working stroke (None: no strokes)
     bold: tuple[int, ...]            # position 0 and the analysed position
     analysed: int
     start_is_zero: bool              # position 0 is the start of the working stroke
@@ -65,13 +66,13 @@ def _pts(kin: KinematicsResult, i: int) -> dict[str, np.ndarray]:
     return {n: np.asarray(m.pos[i]) for n, m in kin.points.items()}
 
 
-def _guide_dir(project: Project, kin: KinematicsResult, i: int, slide) -> np.ndarray:
+def _guide_dir(kin: KinematicsResult, i: int, slide) -> np.ndarray:
     if slide.guide == 0:
         return np.asarray(slide.line_dir, float)
     return rot(np.array([kin.q[i][slide.guide, 2]]), tuple(slide.line_dir))[0]
 
 
-def bounds(project: Project, data: SchemeData) -> tuple[float, float, float, float]:
+def bounds(data: SchemeData) -> tuple[float, float, float, float]:
     """Model bounds of everything the view draws (m)."""
     arrs = [np.asarray(m.pos) for m in data.kin.points.values()]
     arrs += [np.asarray(m.pos) for m in data.dense.coms.values()]
@@ -140,7 +141,7 @@ def _draw_position(view: View, project: Project, kin: KinematicsResult, i: int, 
     for s in lk.slides:
         if len(lk.bodies[s.link].points) != 1:
             continue
-        d = _guide_dir(project, kin, i, s)
+        d = _guide_dir(kin, i, s)
         ang = math.degrees(math.atan2(d[1], d[0]))
         if bold:
             view.slider(pts[s.point], ang, *BLOCK_MM, guide_mm=None, hinge_mm=HINGE_MM)
@@ -216,7 +217,7 @@ def _draw_trajectories(view: View, project: Project, data: SchemeData) -> None:
     o = _pts(data.kin, 0)[lk.drive_axis]
     r = float(np.hypot(*(_pts(data.kin, 0)[lk.drive_tip] - o)))
     view.circle(o, r, "thin")
-    for k, m in sorted(data.dense.coms.items()):
+    for _k, m in sorted(data.dense.coms.items()):
         path = np.asarray(m.pos)
         span = float(np.ptp(path, axis=0).max())
         if span * view.transform.scale < 2.0:
@@ -247,8 +248,8 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
     a_start = math.atan2(*(np.asarray(data.extremes.points[lk.drive_tip].pos[0]) - o)[::-1])
     a_end = math.atan2(*(np.asarray(data.extremes.points[lk.drive_tip].pos[1]) - o)[::-1])
     for a in (a_start, a_end):
-        tip = o + (r_mm + 22.0) / k * np.array([math.cos(a), math.sin(a)])
-        view.line(o, tuple(tip), "thin")
+        ray_end = o + (r_mm + 22.0) / k * np.array([math.cos(a), math.sin(a)])
+        view.line(o, tuple(ray_end), "thin")
     work = math.radians(st.working_deg)
     arcs = ((a_start, sgn * work, r_mm + 12.0, f"φр.х. = {format_number(st.working_deg, 1)}°"),
             (a_end, sgn * (2 * math.pi - work), r_mm + 18.0, f"φх.х. = {format_number(st.idle_deg, 1)}°"))
@@ -270,6 +271,8 @@ def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
     if st is None or data.extremes is None:
         return
     out = st.output
+    if out.point is None:
+        return
     if out.kind != "slider":
         piv = np.asarray(data.extremes.points[out.point].pos[0])
         rich = rl.Rich(f"ψ = {format_number(math.degrees(st.stroke), 1)}°")
@@ -365,8 +368,8 @@ def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i
     slide = next((sl for sl in lk.slides if sl.link == k), None)
     p = np.asarray(pts[names[0]])
     if slide is None:
-        return [tuple(c) for c in rl.around(tuple(p), rl.Rich("0"), 2 * r, 90.0, gaps=(4.0, 7.0))]
-    d = _guide_dir(project, data.kin, i, slide)
+        return [vec2(c) for c in rl.around(vec2(p), rl.Rich("0"), 2 * r, 90.0, gaps=(4.0, 7.0))]
+    d = _guide_dir(data.kin, i, slide)
     d = d / (np.hypot(*d) or 1.0)
     nrm = np.array([-d[1], d[0]])
     half_l, half_h = BLOCK_MM[0] / 2, BLOCK_MM[1] / 2

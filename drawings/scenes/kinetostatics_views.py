@@ -111,8 +111,8 @@ def free_body_panel(name: str, title: str, segments: list[tuple[np.ndarray, np.n
             view.hinge(p, HINGE_MM)
         for p, ang in sliders:
             view.slider(p, ang, 12.0, 6.0, guide_mm=None, hinge_mm=HINGE_MM)
-        for a in arrows:
-            view.arrow(a.point, arrow_end(a, mu_f, mu_l), plain(a.name), head_mm=4.0, label_height=LABEL_MM)
+        for arw in arrows:
+            view.arrow(arw.point, arrow_end(arw, mu_f, mu_l), plain(arw.name), head_mm=4.0, label_height=LABEL_MM)
         for letter, p in letters.items():
             view.label(p, letter, 5.0, prefer_deg=135.0)
         _title_and_scales(view, title, f"μl = {format_significant(mu_l, 4)} м/мм",
@@ -190,7 +190,7 @@ def place_label(view: View, anchors: list[np.ndarray], text: str, height: float)
 
 def _diagonal(verts: list[np.ndarray], d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     best, err = (verts[0], verts[0] + d), math.inf
-    for i, a in enumerate(verts):
+    for a in verts:
         for b in verts:
             e = float(np.hypot(*((b - a) - d)))
             if e < err:
@@ -233,9 +233,9 @@ def lever_panel(name: str, points: dict[str, np.ndarray], segments: list[tuple[s
         view.label((0.0, 0.0), "p", 5.0, prefer_deg=-135.0)
         for k, p in points.items():
             view.label(p, k, 5.0, prefer_deg=45.0)
-        for (img, v, label, arm), end in zip(loads, ends):
+        for (img, _v, _label, _arm), end in zip(loads, ends):
             view.arrow(img, end, None, head_mm=3.5)
-        for (img, v, label, arm), end in zip(loads, ends):
+        for (img, _v, label, _arm), end in zip(loads, ends):
             place_label(view, [end, img + 0.6 * (end - img), img + 0.3 * (end - img)], label, POLY_LABEL_MM)
         _title_and_scales(view, LEVER_TITLE, f"μv = {format_significant(mu_v, 4)} (м/с)/мм",
                           f"μF = {format_significant(mu_f, 4)} Н/мм")

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 from reportgen.planetary.schemes import expand
 
-Point = tuple[float, float]
+from reportgen.geometry import Vec2 as Point
 
 ROW_GAP = 36.0        # distance between the two rows of a two-row planet block, sheet mm
 FACE = 5.0            # half-width of a wheel's rim tick, sheet mm
@@ -277,8 +277,8 @@ def draw_scene(view, scene: Scene, label_height: float = 5.0) -> None:
     names = {"vA": "vA", "vB": "vB"}
     for p, q, lab in scene.arrows:
         view.arrow(p, q, names.get(lab, lab))
-    for lab in scene.labels:
-        view.text(lab.point, lab.text, label_height, "center")
+    for scene_label in scene.labels:
+        view.text(scene_label.point, scene_label.text, label_height, "center")
 
 
 def draw_reducer(sheet, stage, region) -> None:

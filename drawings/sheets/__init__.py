@@ -11,24 +11,21 @@ A module that does not exist yet is skipped.
 """
 from __future__ import annotations
 
-import importlib
+from types import ModuleType
+
+from reportgen.modules import optional_module
 
 #: The sheet modules in the order of the sheets; files are named ``sheet<N>-<name>`` with N the
 #: sheet's number among those the task has.
 SHEETS: tuple[str, ...] = ("kinematics", "kinetostatics", "dynamics", "gears")
 
 
-def sheet_module(name: str):
-    try:
-        return importlib.import_module(f"drawings.sheets.{name}")
-    except ModuleNotFoundError as exc:
-        if exc.name == f"drawings.sheets.{name}":
-            return None
-        raise
+def sheet_module(name: str) -> ModuleType | None:
+    return optional_module(f"drawings.sheets.{name}")
 
 
-def available_sheets(project) -> list[tuple[str, object]]:
-    out = []
+def available_sheets(project) -> list[tuple[str, ModuleType]]:
+    out: list[tuple[str, ModuleType]] = []
     for name in SHEETS:
         mod = sheet_module(name)
         if mod is not None and mod.available(project):

@@ -43,13 +43,14 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM
-    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM, dd.omega_height(res, g))
+    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM, dd.omega_height(res))
     dd.draw_moment(sheet, lay, g, labels)
     dd.draw_work(sheet, lay, g, labels)
     dd.draw_energy(sheet, lay, g, labels)
     _, kl = dd.draw_wittenbauer(sheet, lay, g, labels)
     dd.draw_inertia(sheet, lay, g, labels)
-    dd.draw_omega(sheet, lay.omega, res, g, labels)
+    assert lay.omega is not None  # layout() always places the ω graph
+    dd.draw_omega(sheet, lay.omega, res, g)
     # the right column, over the title block: the table of results at the top, the flywheel's sketch
     # under it at the largest ГОСТ scale that fits the rest of the column
     x0, x1 = lay.right + 12.0, fr.x1 - CLEAR_MM
@@ -59,7 +60,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     table_w = min(x1 - x0, TABLE_MAX_MM)
     bottom = sheet.title_rect.y1 + CLEAR_MM
     cx = (x0 + x1) / 2
-    df.draw_results(sheet, res, Rect(cx - table_w / 2, top - table_h, cx + table_w / 2, top), rows)
+    df.draw_results(sheet, Rect(cx - table_w / 2, top - table_h, cx + table_w / 2, top), rows)
     top -= table_h + 12.0
     if res.J_flywheel > 0:
         k, stacked = df.sketch_fit(res.flywheel, x1 - x0, top - bottom)

@@ -67,7 +67,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     """The sheet at the largest ГОСТ scale of the scheme with which every view fits."""
     i = analysed_position(project)
     data = ks.scheme_data(project, i)
-    b = ks.bounds(project, data)
+    b = ks.bounds(data)
     failure: BuildError | None = None
     for k, scale_text in scheme_scales(b):
         try:
@@ -100,6 +100,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     d = diagrams_of(project)
     if d is not None:
         st = project.strokes
+        assert st is not None  # the diagrams are drawn between the extreme positions
         start = math.degrees((d.sign * (st.phi_start - d.phi0)) % (2 * math.pi))
         kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
@@ -155,9 +156,9 @@ def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
     corners = ("top-left", "bottom-left", "bottom-right")
     plans = [b for b in blocks if b.name != "plans_all"]
     rest = [b for b in blocks if b.name == "plans_all"]
-    out = []
+    out: list[list[tuple[Block, str]]] = []
     for c_plans in corners:
-        for c_rest in corners if rest else (None,):
+        for c_rest in corners if rest else corners[:1]:  # no rest: one pass, c_rest unused
             first = [(b, c_plans) for b in plans]
             second = [(b, c_rest) for b in rest]
             out.append(first + second)

@@ -3,6 +3,7 @@ style that matches the note (Liberation Serif, the text font; decimal comma on t
 from __future__ import annotations
 
 import re
+from typing import Any
 
 import matplotlib
 
@@ -12,7 +13,7 @@ from matplotlib.ticker import FuncFormatter  # noqa: E402
 
 from reportgen.numbers import significant  # noqa: E402
 
-STYLE = {
+STYLE: dict[Any, Any] = {
     # a list: matplotlib falls back to the next family for a glyph the first lacks (₁ in "О₁")
     "font.family": ["Liberation Serif", "DejaVu Serif"],
     "font.serif": ["Liberation Serif", "Times New Roman", "DejaVu Serif"],

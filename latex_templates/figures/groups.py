@@ -3,6 +3,8 @@ elements (hinges or slider guides) with the letters of the points."""
 from __future__ import annotations
 
 import numpy as np
+
+from reportgen.geometry import vec2
 from matplotlib.patches import Circle, Polygon
 
 from .mechanism import world_points
@@ -32,7 +34,7 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
     for pr in group.pairs:
         if pr.kind == "R":
             p = pts[pr.point]
-            ax.add_patch(Circle(p, r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
+            ax.add_patch(Circle(vec2(p), r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
             ax.text(p[0] + 1.8 * r, p[1] + 1.8 * r, pr.point, fontsize=10, style="italic")
         else:
             s = linkage.slides[pr.slide]

@@ -11,6 +11,8 @@ import math
 import re
 
 import numpy as np
+
+from reportgen.geometry import vec2
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
 from . import comma_axes, math_name, new_figure
@@ -128,14 +130,14 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
         p = np.asarray(pr["point"], float)
         if pr["kind"] == "P":
             g = np.asarray(pr["guide"], float)
-            n = np.array([-g[1], g[0]])
+            nv = np.array([-g[1], g[0]])
             w, h = 0.14 * L, 0.07 * L
-            box = np.array([p - g * w / 2 - n * h / 2, p + g * w / 2 - n * h / 2, p + g * w / 2 + n * h / 2,
-                            p - g * w / 2 + n * h / 2])
+            box = np.array([p - g * w / 2 - nv * h / 2, p + g * w / 2 - nv * h / 2, p + g * w / 2 + nv * h / 2,
+                            p - g * w / 2 + nv * h / 2])
             ax.add_patch(Polygon(box, closed=True, facecolor="white", edgecolor="black", lw=1.3, zorder=4))
-            a, e = p - g * 0.22 * L - n * h / 2, p + g * 0.22 * L - n * h / 2
-            ax.plot([a[0], e[0]], [a[1], e[1]], color="0.4", lw=0.8, ls="--", zorder=1)
-        ax.add_patch(Circle(p, r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
+            g0, g1 = p - g * 0.22 * L - nv * h / 2, p + g * 0.22 * L - nv * h / 2
+            ax.plot([g0[0], g1[0]], [g0[1], g1[1]], color="0.4", lw=0.8, ls="--", zorder=1)
+        ax.add_patch(Circle(vec2(p), r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
     placed: list[np.ndarray] = []
     for n in names:
         p = pts[n]

@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
+from reportgen.geometry import vec2
 from matplotlib.patches import Circle, Polygon, Rectangle
 from matplotlib.transforms import Affine2D
 
@@ -20,11 +22,11 @@ def world_points(linkage: Linkage, q: np.ndarray) -> dict[str, np.ndarray]:
             if k == 0:
                 out.setdefault(name, np.asarray(p, float))
             elif name not in out or k != 0:
-                out[name] = q[k, :2] + rot(np.array([q[k, 2]]), tuple(p))[0]
+                out[name] = q[k, :2] + rot(np.array([q[k, 2]]), p)[0]
     return out
 
 
-def size_of(linkage: Linkage, pts: dict[str, np.ndarray]) -> float:
+def size_of(pts: dict[str, np.ndarray]) -> float:
     arr = np.array(list(pts.values()))
     return float(max(np.ptp(arr[:, 0]), np.ptp(arr[:, 1]), 1e-9))
 
@@ -34,7 +36,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
                    size: float | None = None) -> None:
     """Draw the mechanism at one position on ``ax`` (equal aspect)."""
     pts = world_points(linkage, q)
-    L = size if size is not None else size_of(linkage, pts)
+    L = size if size is not None else size_of(pts)
     r_hinge = 0.012 * L
     # links
     for k, b in sorted(linkage.bodies.items()):
@@ -58,7 +60,6 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
     for s in linkage.slides:
         k = s.link
         b = linkage.bodies[k]
-        ang = q[k, 2] + 0.0
         guide_dir = rot(np.array([q[s.guide, 2]]), s.line_dir)[0] if s.guide else np.asarray(s.line_dir)
         gang = math.degrees(math.atan2(guide_dir[1], guide_dir[0]))
         p = pts[s.point]
@@ -85,7 +86,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
         p = pts[j.name]
         if 0 in j.bodies:
             _fixed_pivot(ax, p, 0.05 * L, color, alpha)
-        ax.add_patch(Circle(p, r_hinge, facecolor="white", edgecolor=color, lw=1.0, alpha=alpha, zorder=5))
+        ax.add_patch(Circle(vec2(p), r_hinge, facecolor="white", edgecolor=color, lw=1.0, alpha=alpha, zorder=5))
     if labels and alpha == 1:
         centre = np.array(list(pts.values())).mean(axis=0)
         for name, p in pts.items():
@@ -125,7 +126,7 @@ def scheme_figure(linkage: Linkage, q: np.ndarray, w_cm: float = 15.0):
     fig = new_figure(w_cm, h_cm)
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
     draw_mechanism(ax, linkage, q)
-    L = size_of(linkage, pts)
+    L = size_of(pts)
     ax.set_xlim(arr[:, 0].min() - 0.12 * L, arr[:, 0].max() + 0.12 * L)
     ax.set_ylim(arr[:, 1].min() - 0.12 * L, arr[:, 1].max() + 0.12 * L)
     ax.axis("off")

@@ -20,7 +20,6 @@ def plan_figure(plan, w_cm: float = 12.0):
     w_cm = min(w_cm, max(6.0, (h_cm - 1.5) * span[0] / max(span[1], 1e-9) + 1.5))
     fig = new_figure(w_cm, h_cm)
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
-    head = 0.03 * size
     for c in plan.components:
         a, e = pts[c.start], pts[c.end]
         d = e - a
@@ -65,7 +64,7 @@ def positions_figure(linkage, q_all: np.ndarray, bold: tuple[int, ...], traces: 
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])
     allpts = np.concatenate([np.array(list(world_points(linkage, q).values())) for q in q_all])
     L = float(max(np.ptp(allpts[:, 0]), np.ptp(allpts[:, 1])))
-    for name, tr in traces.items():
+    for tr in traces.values():
         ax.plot(tr[:, 0], tr[:, 1], color="0.55", lw=0.6, ls="-.")
     for i, q in enumerate(q_all):
         if i in bold:

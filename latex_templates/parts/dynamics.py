@@ -12,6 +12,7 @@ other two flywheels give), through calculation records or filters.
 from __future__ import annotations
 
 import math
+from typing import Any, cast
 from dataclasses import dataclass
 
 import numpy as np
@@ -149,7 +150,7 @@ def angle_table(project) -> tuple[list, list]:
 
 def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, CalcRecord]:
     """ΣP of the loads and M_red = ΣP / ω1 for the analysed position."""
-    named = {f"P{j}": t.record for j, t in enumerate(terms)}
+    named: dict[str, Any] = {f"P{j}": t.record for j, t in enumerate(terms)}
     expr = " + ".join(named) if named else "0 * omega1"
     total = record(r"P_\Sigma", expr, "Вт", *(() if named else (omega1,)),
                    meaning="суммарная мощность сил сопротивления и сил тяжести", **named)
@@ -191,7 +192,7 @@ def inertia_records(project, i: int, omega1: Var) -> tuple[list[CalcRecord], Cal
     dyn = project.task.dynamics
     J0 = Var("J0", r"J_0", dyn.crank_inertia, "кг·м²",
              "момент инерции ротора двигателя и колёс передачи, приведённый к кривошипу")
-    named_sh = {f"S{j}": s for j, s in enumerate(shares)}
+    named_sh: dict[str, Any] = {f"S{j}": s for j, s in enumerate(shares)}
     expr = " + ".join(["J0", *named_sh])
     total = record(r"J_\text{пр}", expr, "кг·м²", J0, meaning="приведённый момент инерции механизма", **named_sh)
     return shares, total
@@ -259,7 +260,7 @@ def scale_records(res) -> dict[str, CalcRecord | Var]:
     return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
 
 
-def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord]:
+def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     g = res.graphical
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
     psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
@@ -272,7 +273,7 @@ def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcReco
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
 
 
-def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord]:
+def exact_records(res, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     ex = res.exact
     w_max = record(r"\omega_{\max}", "omega1 * (1 + delta / 2)", "рад/с", omega, delta,
                    meaning="наибольшая допускаемая угловая скорость кривошипа")
@@ -366,7 +367,7 @@ def method_rows(project, res) -> tuple[list[MethodRow], dict[str, np.ndarray]]:
     return rows, omegas
 
 
-def motion_records(res, omega: Var) -> dict[str, CalcRecord | Var]:
+def motion_records(res) -> dict[str, CalcRecord | Var]:
     mo = res.motion
     w_hi = Var("w_hi", r"\omega_{\max}'", mo.omega_max, "рад/с", "наибольшая угловая скорость установившегося движения")
     w_lo = Var("w_lo", r"\omega_{\min}'", mo.omega_min, "рад/с", "наименьшая угловая скорость установившегося движения")
@@ -400,10 +401,10 @@ def content(project) -> PartContent:
     tg = tangent_records(res, sc, omega, delta)
     ex = exact_records(res, omega, delta)
     mz = merzalov_records(res, omega, delta)
-    fw = flywheel_records(res, ex["J_ex"]) if res.exact.J_fly > 0 else None
+    fw = flywheel_records(res, cast(CalcRecord, ex["J_ex"])) if res.exact.J_fly > 0 else None
     drv = drive_records(res)
     rows, omegas = method_rows(project, res)
-    mot = motion_records(res, omega)
+    mot = motion_records(res)
     figures = {
         "dyn_work": fig.work_figure(res, labels),
         "dyn_wittenbauer": fig.wittenbauer_figure(res),

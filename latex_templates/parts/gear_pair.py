@@ -205,7 +205,7 @@ def content(project) -> PartContent:
         "g": g, "pair": pair, "r": r, "checks": {c.name: c for c in checks}, "failed": failed,
         "auto": auto, "pic": pic, "scale": scale, "ab_read": ab_read, "ab_drawn": ab_drawn,
         "eps_drawn": eps_drawn, "eps_diff": eps_diff, "k_var": k_var,
-        "sliding_rows": rows, "sl": sl, "zones": _zones(pic, g.pb), "alt": alt,
+        "sliding_rows": rows, "sl": sl, "zones": _zones(pic), "alt": alt,
     }
     return PartContent("sections/gear_pair.tex.j2", ctx, figures, tuple(conclusions))
 
@@ -223,7 +223,7 @@ def _lam(v: float):
     return v
 
 
-def _zones(pic, pb: float) -> dict:
+def _zones(pic) -> dict:
     """Lengths of the zones of double and single contact along ab, mm."""
     double = sum(math.dist(z.start, z.end) for z in pic.zones if z.pairs >= 2)
     single = sum(math.dist(z.start, z.end) for z in pic.zones if z.pairs == 1)

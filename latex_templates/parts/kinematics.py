@@ -34,7 +34,7 @@ def _len(body, p: str, q: str) -> float:
     return math.dist(body.local[p], body.local[q])
 
 
-def _plan_rows(plan, with_exact=True):
+def _plan_rows(plan):
     rows = []
     for c in plan.components:
         rows.append({"name": c.name, "dir": c.direction, "mm": plan.measured_mm(c), "read": plan.read_value(c),

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from ..render import Tex
@@ -367,10 +369,10 @@ def _resistance(project, ks) -> list[dict]:
         if ld.kind != "resistance" or strokes is None:
             continue
         q = np.asarray(ks.reactions.kin.q)
-        x, kind = link_coordinate(lk, ld.link, q)
+        xs, kind = link_coordinate(lk, ld.link, q)
         ends, _ = project.model.positions(np.array([strokes.phi_start, strokes.phi_end]))
         xe, _ = link_coordinate(lk, ld.link, ends)
-        x = float(x[0])
+        x = float(xs[0])
         if kind == "rocker":
             x = float(xe[0]) + (x - float(xe[0]) + math.pi) % (2 * math.pi) - math.pi
         win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if lk.omega >= 0 else -1.0)
@@ -407,7 +409,9 @@ def _free_body(ks, grp, gg) -> tuple[list, list, list]:
     """Pairs, arrows and couples of a group's diagram (see :func:`free_body_figure`)."""
     r = ks.reactions
     repl = {x.link: x for x in ks.graphical.inertia}
-    pairs, arrows, couples = [], [], []
+    pairs: list[dict] = []
+    arrows: list[dict] = []
+    couples: list[dict] = []
     for p in r.pairs:
         if p.group != gg.key:
             continue
@@ -464,7 +468,8 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
-    arrows, couples = [], []
+    arrows: list[dict] = []
+    couples: list[dict] = []
     _loads_on(ks, (d,), {}, arrows, couples)
     for p in r.pairs_of(d):
         if p.name != fp.name:

@@ -7,6 +7,7 @@ through calculation records or filters.
 """
 from __future__ import annotations
 
+from typing import cast
 
 from ..render import Tex
 
@@ -60,10 +61,10 @@ def planetary_records(stage) -> dict[str, object]:
                           za=za, wm=r["omega_m"], zb=zb, w1=w1)
     names = {k: v for k, v in zv.items() if k in willis_expr(d)}
     r["u1h"] = _rec("u_{1H}^{(3)}", willis_expr(d), "", 4, "передаточное отношение от колеса 1 к водилу", **names)
-    u_main = r["u1h"]
+    u_main = cast(CalcRecord, r["u1h"])
     if d.driver == "carrier":
         r["uh1"] = _rec("u_{H1}^{(3)}", "1 / u1h", "", 4, "передаточное отношение от водила к колесу 1", u1h=r["u1h"])
-        u_main = r["uh1"]
+        u_main = cast(CalcRecord, r["uh1"])
     target = Var("ut", r"u_\text{тр}", stage.target, "", "требуемое передаточное отношение")
     u_shown = Var("u", u_main.symbol, round(abs(u_main.value), 4), "")
     r["deviation"] = _rec(r"\delta_u", "(u - ut) / ut * 100", "%", 2, "отклонение передаточного отношения",
@@ -145,7 +146,7 @@ def content(project) -> PartContent:
         stage = replace(stage, triangle=sheet_triangle(stage))
     d = stage.design
     r = planetary_records(stage)
-    u_main = r.get("uh1", r["u1h"])
+    u_main = cast(CalcRecord, r.get("uh1", r["u1h"]))
     tr = triangle_records(stage, u_main) if stage.triangle is not None else None
     check = stage.check
     crank = None

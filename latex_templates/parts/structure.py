@@ -20,7 +20,6 @@ def available(project) -> bool:
 
 def _motion(project, k: int) -> str:
     lk = project.linkage
-    b = lk.bodies[k]
     pivoted = any(0 in j.bodies and k in j.bodies for j in lk.joints)
     on_frame_guide = any(s.link == k and s.guide == 0 for s in lk.slides)
     if pivoted:

@@ -30,7 +30,7 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
     from ..taskfile import load_task
     from . import runs, speed
 
-    say = progress or (lambda name: None)
+    say = progress or (lambda _name: None)
     t0 = time.perf_counter()
     rep = BenchReport(str(task_path), quick)
     project = Project(load_task(task_path))

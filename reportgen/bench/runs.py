@@ -42,7 +42,7 @@ def diagrams_table(project, ns) -> tuple[Table, Series]:
     series: Series = {"diagrams v (drawn)": [], "diagrams a (drawn)": [], "diagrams v (chords)": [],
                       "diagrams a (chords)": []}
     for n in ns:
-        dt, d = best_time(lambda: build_diagrams(model, st, phi0, n=n), 3)
+        dt, d = best_time(lambda n=n: build_diagrams(model, st, phi0, n=n), 3)
         # the bare chords: exact s at the division points, no measuring
         h = 2 * math.pi / n
         nodes = np.asarray(d.nodes)
@@ -114,9 +114,9 @@ def dynamics_tables(project, ns) -> tuple[list[Table], Series]:
                       "J, exact method": [], "J, graphical replica": []}
     for n in ns:
         th = np.arange(n) * 2 * math.pi / n
-        t_tab, (W_tab, J_tab) = best_time(lambda: _table_flywheel(cycle, th, delta), 3)
-        t_gl, (W_gl, J_gl) = best_time(lambda: exact(n), 1)
-        t_gr, gr = best_time(lambda: graphical_replica(cycle, delta, n), 1)
+        t_tab, (W_tab, J_tab) = best_time(lambda th=th: _table_flywheel(cycle, th, delta), 3)
+        t_gl, (W_gl, J_gl) = best_time(lambda n=n: exact(n), 1)
+        t_gr, gr = best_time(lambda n=n: graphical_replica(cycle, delta, n), 1)
         ew_tab, ew_gl = abs(W_tab / W_ref - 1), abs(W_gl / W_ref - 1)
         ej_tab, ej_gl, ej_gr = abs(J_tab / J_ref - 1), abs(J_gl / J_ref - 1), abs(gr.J_fly / J_ref - 1)
         tw.add(n, ms(t_tab), rel(ew_tab), ms(t_gl), rel(ew_gl))
@@ -195,7 +195,7 @@ def planetary_table(project, bounds) -> Table:
               f"± {tol * 100:g} %, K auto)",
               ["largest z searched", "time, ms", "valid sets", "most compact set", "ratio error"])
     for b in bounds:
-        dt, found = best_time(lambda: search(scheme, target, tol, p.satellites, count=10 ** 9, max_teeth=b), 1)
+        dt, found = best_time(lambda b=b: search(scheme, target, tol, p.satellites, count=10 ** 9, max_teeth=b), 1)
         if found:
             c = found[0]
             t.add(b, ms(dt), len(found), "/".join(map(str, c.z)) + f", K = {c.satellites}", pct(abs(c.deviation), 3))

@@ -16,10 +16,12 @@ import subprocess
 import sys
 import tempfile
 import time
+from typing import cast
 from pathlib import Path
 
 import numpy as np
 
+from ..errors import ComputationError
 from .tables import Table, ms, rel, sec
 
 
@@ -38,7 +40,7 @@ def _run(args: list[str], env: dict[str, str], cwd: Path) -> float:
                        capture_output=True, text=True, timeout=1800)
     dt = time.perf_counter() - t0
     if r.returncode != 0:
-        raise RuntimeError((r.stderr or r.stdout).strip().splitlines()[-1][:300])
+        raise ComputationError("reportgen " + " ".join(args[:1]), (r.stderr or r.stdout).strip().splitlines()[-1][:300])
     return dt
 
 
@@ -151,9 +153,9 @@ def solver_table(task_path: Path, quick: bool) -> Table:
     def gear_stages():
         p = Project(task)
         if task.gears is not None:
-            p.gears
+            _ = p.gears         # the stage is computed on first access
         if task.planetary is not None:
-            p.planetary
+            _ = p.planetary
         return p
 
     rows = []
@@ -174,7 +176,7 @@ def solver_table(task_path: Path, quick: bool) -> Table:
     env = dict(os.environ, REPORTGEN_CACHE="off")
     ps = []
     with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
-        for i in range(2 if quick else 5):
+        for _ in range(2 if quick else 5):
             try:
                 ps.append(_run(["solve", str(task_path.resolve()), "--json", str(Path(tmp) / "r.json"), "--quiet"], env,
                                Path(tmp)))
@@ -200,6 +202,7 @@ def pylinkage_table(n: int = 360, pairs: int = 15) -> Table:
     the Mechanism, and from the task's TOML text), and pylinkage's two paths (its linkage is
     stateful, so it is built inside every run)."""
     from ..kinematics import build_model
+    from ..task import Mechanism
     from ..taskfile import loads_task
     from ..zoo import four_bar
 
@@ -222,6 +225,7 @@ def pylinkage_table(n: int = 360, pairs: int = 15) -> Table:
     phi = np.arange(1, n + 1) * 2 * math.pi / n      # pylinkage turns the crank before it solves
     text = four_bar(a, b, c, d, phi_deg=0.0, omega=omega, name=None, analysis=None)
     mech = loads_task(text).mechanism
+    assert mech is not None  # four_bar writes a [mechanism]
     model = build_model(mech)
     r = model.solve(phi)
     B0 = r.points["B"].pos[-1]
@@ -246,7 +250,7 @@ def pylinkage_table(n: int = 360, pairs: int = 15) -> Table:
     ours = {
         "reportgen, model built once outside the timing": lambda: rg(model.solve(phi)),
         "reportgen, model built inside (from the Mechanism)": lambda: rg(build_model(mech).solve(phi)),
-        "reportgen, task text parsed and model built inside": lambda: rg(build_model(loads_task(text).mechanism).solve(phi)),
+        "reportgen, task text parsed and model built inside": lambda: rg(build_model(cast(Mechanism, loads_task(text).mechanism)).solve(phi)),
     }
     times: dict[str, list[float]] = {k: [] for k in ours}
     py_times: list[float] = []
@@ -267,6 +271,7 @@ def pylinkage_table(n: int = 360, pairs: int = 15) -> Table:
     for k in ours:
         m, lo, hi = _median_spread([x * 1e3 for x in times[k]])
         t.add(k, f"{ms(m / 1e3)} ({ms(lo / 1e3)}–{ms(hi / 1e3)})", f"{statistics.median(ratios[k]):.1f}", "—", "—", "—")
+    assert py_out is not None  # the loop above ran at least once
     p, v, acc = py_out
     m, lo, hi = _median_spread([x * 1e3 for x in py_times])
     t.add("pylinkage step_with_derivatives (linkage built inside)", f"{ms(m / 1e3)} ({ms(lo / 1e3)}–{ms(hi / 1e3)})",

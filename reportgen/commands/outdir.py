@@ -22,6 +22,7 @@ import os
 import shutil
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from ..errors import OutputFolderError
 
@@ -95,7 +96,8 @@ def judge_folder(folder: Path) -> Verdict:
         return Verdict(f"its {MANIFEST_NAME} cannot be read")
     if not isinstance(data, dict) or data.get("format") != MANIFEST_FORMAT:
         return Verdict(f"its {MANIFEST_NAME} is not of the format {MANIFEST_FORMAT}")
-    files = data.get("files") if isinstance(data.get("files"), dict) else {}
+    files_: Any = data.get("files")
+    files: dict[str, Any] = files_ if isinstance(files_, dict) else {}
     dirs = set(data.get("folders") or [])
     foreign: list[str] = []
     for rel, p in sorted(entries.items()):
@@ -151,7 +153,7 @@ def check_output_folder(out: Path, task_path: Path, option: str = "--out") -> Pa
         if not verdict.ok:
             shown = ", ".join(verdict.foreign)
             raise OutputFolderError(
-                option, given, verdict.reason + (f": {shown}" if shown else ""),
+                option, given, str(verdict.reason) + (f": {shown}" if shown else ""),
                 "a new or empty folder, or an earlier reportgen output "
                 f"(recognised by its {MANIFEST_NAME}): choose another -o or move your files away")
     return resolved
@@ -170,7 +172,7 @@ def replace_folder(tmp: Path, out: Path) -> None:
         if not verdict.ok:
             kept = _free_name(out, ".new")
             tmp.rename(kept)
-            raise OutputFolderError("--out", out, verdict.reason + " (they appeared during the build)",
+            raise OutputFolderError("--out", out, str(verdict.reason) + " (they appeared during the build)",
                                     f"your files are untouched; the new build is in {kept}")
         old = out.with_name(f".{out.name}.old-{os.getpid()}")
         out.rename(old)

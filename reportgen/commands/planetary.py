@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+from typing import Literal
 
 from ..errors import OptionError, PlanetarySynthesisError, TaskError
 from ..planetary.drive import DEFAULT_INPUT_OMEGA, drive_check, drive_ratio, input_speed
@@ -57,6 +58,11 @@ def _number(option: str, text: str | None, kind: type = float) -> float | int:
     return value
 
 
+def _int(option: str, text: str | None) -> int:
+    """An integer option (``_number`` with ``int``)."""
+    return int(_number(option, text, int))
+
+
 def _design(args: argparse.Namespace):
     drive = None
     if args.ratio == "auto":
@@ -66,20 +72,20 @@ def _design(args: argparse.Namespace):
             raise OptionError("--ratio", "auto needs " + ", ".join(missing),
                               'a number, or "auto" with --motor-rpm N --open Z1 Z2 --omega-crank W')
         drive = drive_ratio(_number("--motor-rpm", args.motor_rpm),
-                            _number("--open", args.open[0], int), _number("--open", args.open[1], int),
+                            _int("--open", args.open[0]), _int("--open", args.open[1]),
                             _number("--omega-crank", args.omega_crank))
         target = drive.required
     else:
         target = _number("--ratio", args.ratio)
-    k = "auto" if args.satellites == "auto" else _number("--satellites", args.satellites, int)
+    k: int | Literal["auto"] = "auto" if args.satellites == "auto" else _int("--satellites", args.satellites)
     tol = _number("--tolerance", args.tolerance)
     module = None if args.module is None else _number("--module", args.module)
     if args.z is not None:
-        z = tuple(_number("--z", t, int) for t in args.z)
+        z = tuple(_int("--z", t) for t in args.z)
         design = evaluate(args.scheme, z, k, target=target, tolerance=tol, driver=args.driver, module=module)
     else:
         design = synthesize(args.scheme, target, tol, k, module, driver=args.driver,
-                            alternatives=_number("--alternatives", args.alternatives, int))
+                            alternatives=_int("--alternatives", args.alternatives))
     check = drive_check(drive, design.ratio) if drive is not None else None
     triangle = None
     if module is not None:
@@ -108,7 +114,7 @@ def summary(design: PlanetaryDesign, drive=None, triangle=None) -> str:
     ratio = f"u1H = 1 {sgn} z2·z3/(z1·{p}) = 1 {sgn} {z2}·{z3}/({z1}·{z2p}) = {float(rc.u1h):.4f}"
     if design.driver == "carrier":
         ratio += f"; uH1 = 1/u1H = {float(rc.ratio):.4f}"
-    if rc.target is not None:
+    if rc.target is not None and rc.deviation is not None:
         ratio += (f"; target {rc.target:.4f}, deviation {rc.deviation * 100:+.2f} % "
                   f"(allowed ±{rc.tolerance * 100:g} %)  {_ok(rc.holds)}")
     lines.append("  ratio      " + ratio)

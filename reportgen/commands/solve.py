@@ -56,9 +56,9 @@ def summary(project: Project, force_at_deg: float | None = None) -> str:
         kin = project.kinematics
         lines.append(f"  {len(kin.phi)} positions analysed; minimum transmission angle " +
                      ", ".join(f"{k}: {v.min():.1f}°" for k, v in kin.transmission_deg.items()))
-        for i, g, mu in kin.near_singular:
+        for i, gkey, mu in kin.near_singular:
             lines.append(f"  warning: position {i} (φ1 = {math.degrees(kin.phi[i]) % 360:.2f}°) is near a singular "
-                         f"position of group {g}: μ = {mu:.2f}°")
+                         f"position of group {gkey}: μ = {mu:.2f}°")
         from ..kinetostatics.results import kinetostatics_of
         ks = kinetostatics_of(project, force_at_deg)
         lines.append(f"  kinetostatics at φ1 = {ks.phi_deg:.3f}°: balancing moment {ks.balancing_moment:.6g} N·m "

@@ -14,6 +14,7 @@ from typing import Protocol
 
 import numpy as np
 
+from ..geometry import readonly
 from ..loads import StrokeWindow, external_loads, link_coordinate
 from ..roots import brent_root
 from .errors import DynamicsInputError
@@ -40,8 +41,7 @@ class Cycle(Protocol):
 
 
 def _breaks(inner: list[float]) -> np.ndarray:
-    b = np.array(sorted({0.0, TWO_PI, *[t for t in inner if 0.0 < t < TWO_PI]}))
-    b.setflags(write=False)
+    b = readonly(sorted({0.0, TWO_PI, *[t for t in inner if 0.0 < t < TWO_PI]}))
     return b
 
 
@@ -105,7 +105,7 @@ class ProjectCycle:
     @property
     def switching_phi(self) -> tuple[float, ...]:
         """Crank angles φ1 (rad) where the resistance switches on and off."""
-        return tuple(float(self.phi_of(t)) for t in self.switching)
+        return tuple(float(self.phi_of(np.asarray(t))) for t in self.switching)
 
     def theta_of(self, phi: float) -> float:
         """θ of crank angle φ1, in [0, 2π)."""
@@ -172,6 +172,6 @@ class ProjectCycle:
         t = np.asarray(theta, dtype=float)
         kin = self.kinematics(t.ravel())
         loads = external_loads(self.mechanism, self.linkage, self.project.model, kin, self.project.strokes)
-        M = reduced_moment(loads, kin, self.linkage)
+        M = reduced_moment(loads, kin)
         J, dJ = reduced_inertia(kin, self.linkage, self.crank_inertia)
         return Reduced(M.reshape(t.shape), J.reshape(t.shape), dJ.reshape(t.shape))

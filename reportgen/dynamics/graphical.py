@@ -21,11 +21,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from .cycle import TWO_PI, Cycle
 from ..geometry import readonly as _ro
+from ..tolerances import RTOL_ROUNDOFF
 
 #: Reading accuracy of a length measured on the sheet, mm.
 READING_MM = 0.5
@@ -42,7 +44,7 @@ def nice_ceil(x: float) -> float:
     e = math.floor(math.log10(x))
     for m in NICE:
         v = m * 10.0 ** e
-        if v >= x * (1 - 1e-12):
+        if v >= x * (1 - RTOL_ROUNDOFF):
             return v
     return 10.0 ** (e + 1)
 
@@ -136,7 +138,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     a_H = np.concatenate(([0.0], np.cumsum(steps)))  # a·H, mm²
     if "H" not in s:
         need = float(np.abs(a_H).max()) / layout.a_height
-        s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - 1e-12))
+        s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - RTOL_ROUNDOFF))
     H = s["H"]
     a = a_H / H
     mu_A = work_scale(mu_M, mu_phi, H)
@@ -173,4 +175,5 @@ def graphical_replica(cycle: Cycle, delta: float, positions: int = 12,
     # Chords and polygon err as h²: Richardson's estimate of the error at h is 4/3·|J(h) − J(h/2)|.
     accuracy = 4.0 / 3.0 * abs(c["J_fly"] - c2["J_fly"]) + READING_MM * c["mu_E"] / (wm * wm * delta)
     arrays = ("theta", "x", "M_mm", "mid_x", "mid_mm", "a_mm", "drive_mm", "e_mm", "j_mm")
-    return GraphicalReplica(**{k: (_ro(v) if k in arrays else v) for k, v in c.items()}, accuracy=accuracy)
+    fields_: dict[str, Any] = {k: (_ro(v) if k in arrays else v) for k, v in c.items()}
+    return GraphicalReplica(**fields_, accuracy=accuracy)

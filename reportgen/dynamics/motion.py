@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..geometry import readonly
 from .cycle import Cycle
 from ..roots import brent_root, extremes
 from .energy import EnergyProfile
@@ -73,7 +74,7 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
         tt = np.array([t_hi, t_lo])
         Ex, Jx = profile.state(tt)
         Jx = Jx + J_fly
-        u_new = brent_root(lambda v: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
+        u_new = brent_root(lambda v, Ex=Ex, Jx=Jx: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
         done = abs(u_new - u) <= 1e-13 * abs(u_new)
         u = u_new
         if done:
@@ -81,10 +82,8 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
     w_hi, w_lo = (float(x) for x in _omega(u, Ex, Jx))
     grid = np.asarray(grid, dtype=float)
     Eg, Jg = profile.state(grid)
-    w_grid = _omega(u, Eg, Jg + J_fly)
-    w_grid.setflags(write=False)
-    g = grid.copy()
-    g.setflags(write=False)
+    w_grid = readonly(_omega(u, Eg, Jg + J_fly))
+    g = readonly(grid)
     J0 = float(cycle.reduced(np.array([0.0])).J[0]) + J_fly
     mean = 0.5 * (w_hi + w_lo)
     return SteadyMotion(g, w_grid, math.sqrt(u / J0), w_hi, w_lo, t_hi, t_lo, mean, (w_hi - w_lo) / mean,

@@ -14,6 +14,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from ..geometry import readonly
+
 #: Nodes per smooth piece; 8 nodes on a 1° piece reach machine precision for the loads here.
 DEFAULT_ORDER = 8
 
@@ -24,9 +26,7 @@ ArrayFn = Callable[[np.ndarray], np.ndarray]
 def gauss_legendre(order: int) -> tuple[np.ndarray, np.ndarray]:
     """Nodes and weights of the ``order``-point Gauss–Legendre rule on [−1, 1] (computed once)."""
     x, w = np.polynomial.legendre.leggauss(order)
-    x.setflags(write=False)
-    w.setflags(write=False)
-    return x, w
+    return readonly(x), readonly(w)
 
 
 def split_at(a: np.ndarray, b: np.ndarray, breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

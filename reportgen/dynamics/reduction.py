@@ -22,9 +22,9 @@ from ..loads import LoadSet, power
 from ..geometry import readonly as _ro
 
 
-def reduced_moment(loads: LoadSet, kin: KinematicsResult, linkage: Linkage) -> np.ndarray:
+def reduced_moment(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
     """M_red = P / |ω1|, N·m at every position of ``kin`` (all loads in ``loads``)."""
-    return _ro(power(loads, kin, linkage) / abs(kin.omega1))
+    return _ro(power(loads, kin) / abs(kin.omega1))
 
 
 def inertia_terms(kin: KinematicsResult, linkage: Linkage) -> Mapping[int, np.ndarray]:

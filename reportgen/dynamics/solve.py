@@ -22,6 +22,10 @@ from ..geometry import readonly as _ro
 MIN_POSITIONS = 360
 
 
+#: The sizes of the graphs when the caller gives none (frozen: safe as a default).
+DEFAULT_LAYOUT = GraphLayout()
+
+
 def check_delta(delta: float) -> float:
     if not (isinstance(delta, (int, float)) and math.isfinite(delta) and 0 < delta < 1):
         raise DynamicsInputError("dynamics.delta", f"{delta!r} is not a coefficient of non-uniformity",
@@ -31,7 +35,7 @@ def check_delta(delta: float) -> float:
 
 def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: str = "disk",
                 density: float = 7860.0, width_ratio: float = 1.0, crank_inertia: float = 0.0,
-                graphical_positions: int = 12, layout: GraphLayout = GraphLayout(),
+                graphical_positions: int = 12, layout: GraphLayout = DEFAULT_LAYOUT,
                 order: int = DEFAULT_ORDER, phi_of=None, profile: EnergyProfile | None = None) -> DynamicsResult:
     """The flywheel calculation of any cycle (a project's or an analytic one); ``profile``: ΔE of
     this cycle on the same grid, when the caller has it already."""
@@ -60,7 +64,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
 
 
 def solve_dynamics(project, n: int = MIN_POSITIONS, graphical_positions: int | None = None,
-                   layout: GraphLayout = GraphLayout(), order: int = DEFAULT_ORDER) -> DynamicsResult:
+                   layout: GraphLayout = DEFAULT_LAYOUT, order: int = DEFAULT_ORDER) -> DynamicsResult:
     """Reduced moment and inertia, work, ΔE, the flywheel (exact, Мерцалов, graphical), its size and
     the steady motion with it, over ``n`` equal steps from position 0 of the project's task."""
     dyn = project.task.dynamics

@@ -19,6 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..tolerances import RTOL_EQUAL
+
 SA_MIN_FACTOR = 0.25
 EPS_MIN = 1.2
 
@@ -56,7 +58,8 @@ def x_min(z, alpha: float, ha: float):
 
 
 def margins(arr: dict[str, np.ndarray], z1: int, z2: int, m: float, alpha: float, ha: float,
-            sa_min_factor: float = SA_MIN_FACTOR, eps_min: float = EPS_MIN) -> dict[str, np.ndarray]:
+            sa_min_factor: float = SA_MIN_FACTOR, eps_min: float = EPS_MIN
+            ) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Each check as (value, limit) arrays, keyed by :data:`CHECK_NAMES`."""
     ones = np.ones_like(arr["x1"])
     return {
@@ -85,7 +88,7 @@ def passes(value, limit):
     """value ≥ limit up to a relative 1e-9 of the larger magnitude (NaN fails)."""
     value = np.asarray(value, dtype=float)
     limit = np.asarray(limit, dtype=float)
-    tol = 1e-9 * np.maximum(1.0, np.maximum(np.abs(value), np.abs(limit)))
+    tol = RTOL_EQUAL * np.maximum(1.0, np.maximum(np.abs(value), np.abs(limit)))
     return value >= limit - tol
 
 

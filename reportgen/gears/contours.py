@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry import readonly
+
 
 def zero_lines(xs: np.ndarray, ys: np.ndarray, f: np.ndarray) -> tuple[np.ndarray, ...]:
     """Polylines (each an (n, 2) read-only array of (x, y)) where f = 0; f[i, j] = f(xs[i], ys[j])."""
@@ -70,7 +72,6 @@ def zero_lines(xs: np.ndarray, ys: np.ndarray, f: np.ndarray) -> tuple[np.ndarra
                     chain.append(other)
                 else:
                     chain.insert(0, other)
-        arr = np.array([point(e) for e in chain], dtype=float)
-        arr.setflags(write=False)
+        arr = readonly([point(e) for e in chain])
         lines.append(arr)
     return tuple(lines)

@@ -24,6 +24,7 @@ contour evaluates the very same expressions over a grid of (x1, x2).
 from __future__ import annotations
 
 import math
+from typing import Any
 from dataclasses import dataclass, fields
 
 import numpy as np
@@ -225,7 +226,7 @@ def pair_geometry(z1: int, z2: int, module: float, x1: float, x2: float, alpha_d
     """The geometry of one pair (module docstring). Raises :class:`TaskError` for bad input."""
     _validate(z1, z2, module, x1, x2, alpha_deg, ha, c)
     alpha = math.radians(alpha_deg)
-    r = {k: float(v) for k, v in pair_arrays(z1, z2, module, x1, x2, alpha, ha, c).items()}
+    r: dict[str, Any] = {k: float(v) for k, v in pair_arrays(z1, z2, module, x1, x2, alpha, ha, c).items()}
     if not math.isfinite(r["alpha_w"]):
         raise TaskError("gears.x1", f"the shift sum x1 + x2 = {x1 + x2:g} is so negative that "
                         f"inv αw = {r['inv_alpha_w']:.6g} ≤ 0",
@@ -235,7 +236,7 @@ def pair_geometry(z1: int, z2: int, module: float, x1: float, x2: float, alpha_d
             raise TaskError(f"gears.x{k}", f"the tip circle da{k} = {r['da' + k]:.4f} mm lies inside "
                             f"the base or root circle", "a larger shift")
     tan_a = math.tan(alpha)
-    extra: dict[str, float | int] = {}
+    extra: dict[str, Any] = {}
     for k, z, x in (("1", z1, x1), ("2", z2, x2)):
         d, da, df, s = r["d" + k], r["da" + k], r["df" + k], r["s" + k]
         dw = r["dw" + k]

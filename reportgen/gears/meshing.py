@@ -24,10 +24,10 @@ from shapely.geometry import LineString
 
 from ..numbers import plain
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
-from ..geometry import readonly as _ro
+from ..geometry import readonly as _ro, vec2
 from ..errors import GeometryError, ParameterError
 
-Point = tuple[float, float]
+from ..geometry import Vec2 as Point
 
 #: ГОСТ 2.302-68 scales (enlargement > 1, reduction < 1).
 GOST_SCALES = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 1 / 2, 1 / 2.5, 1 / 4, 1 / 5, 1 / 10)
@@ -81,10 +81,10 @@ class MeshingPicture:
     view: tuple[float, float, float, float]   # xmin, ymin, xmax, ymax that holds the drawn teeth
 
 
-def _rot(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:
+def _placed(pts: np.ndarray, ang: float, shift: Point = (0.0, 0.0)) -> np.ndarray:
+    """A polyline (n, 2) turned by ``ang`` about the origin, then moved by ``shift``."""
     c, s = math.cos(ang), math.sin(ang)
-    out = pts @ np.array([[c, s], [-s, c]])
-    return _ro(out + np.asarray(shift))
+    return _ro(np.asarray(pts) @ np.array([[c, s], [-s, c]]) + np.asarray(shift))
 
 
 def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: float) -> tuple[float, float]:
@@ -101,13 +101,13 @@ def _line_circle(p0: np.ndarray, u: np.ndarray, centre: np.ndarray, radius: floa
 def contact_zones(ab: float, pb: float) -> list[tuple[float, float, int]]:
     """(start, end, pairs) along ab measured from a: pairs = number of integers k with
     0 ≤ s + k pb ≤ ab, constant between the breakpoints k pb and ab − k pb."""
-    cuts = {0.0, ab}
+    cut_set = {0.0, ab}
     k = 1
     while k * pb < ab:
-        cuts.update((k * pb, ab - k * pb))
+        cut_set.update((k * pb, ab - k * pb))
         k += 1
-    cuts = sorted(cuts)
-    zones = []
+    cuts = sorted(cut_set)
+    zones: list[tuple[float, float, int]] = []
     for s0, s1 in zip(cuts[:-1], cuts[1:]):
         mid = (s0 + s1) / 2
         n = math.floor((ab - mid) / pb) + math.floor(mid / pb) + 1
@@ -146,7 +146,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
 
     def teeth(tooth, base_angle, step, centre):
         line = np.asarray(LineString(tooth.outline).simplify(tol).coords) if tol > 0 else tooth.outline
-        return tuple(_rot(line, base_angle + k * step, centre) for k in ks)
+        return tuple(_placed(line, base_angle + k * step, centre) for k in ks)
 
     # gear 1 turns clockwise (teeth to the left of P follow); gear 2 counter-clockwise
     teeth1 = teeth(tooth1, psi_w1, 2 * math.pi / g.z1, (0.0, 0.0))
@@ -165,7 +165,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
     pts = {"O1": o1, "O2": o2, "P": p, "N1": n1, "N2": n2, "a": a, "b": b}
     points = MappingProxyType({k: (float(v[0]), float(v[1])) for k, v in pts.items()})
     t = np.array([cw, sw])  # along N1N2 (unit), for zones
-    zones = tuple(Zone(tuple(map(float, a + s0 * u)), tuple(map(float, a + s1 * u)), n)
+    zones = tuple(Zone(vec2(a + s0 * u), vec2(a + s1 * u), n)
                   for s0, s1, n in contact_zones(max(ab, 0.0), g.pb))
     del t
     half_tan = 1.2 * max(g.g, 2 * g.pb)
@@ -185,7 +185,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
     dims = (
         Dimension("aw", points["O1"], points["O2"], float(g.aw), f"aw = {plain(g.aw, 3)}"),
         Dimension("ab", points["a"], points["b"], ab, f"ab = {plain(ab, 3)}"),
-        Dimension("pb", tuple(map(float, p)), tuple(map(float, p + g.pb * u)), float(g.pb),
+        Dimension("pb", vec2(p), vec2(p + g.pb * u), float(g.pb),
                   f"pb = {plain(g.pb, 3)}"),
         Dimension("N1N2", points["N1"], points["N2"], float(g.g), f"N1N2 = {plain(g.g, 3)}"),
     )

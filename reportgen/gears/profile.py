@@ -26,6 +26,7 @@ from shapely.geometry import Polygon
 from .involute import inv
 from ..geometry import readonly as _ro
 from ..errors import GeometryError
+from ..tolerances import RTOL_ROUNDOFF
 
 DEFAULT_POSITIONS = 481
 
@@ -98,7 +99,8 @@ class GeneratedTooth:
         circle of ``radius`` (the edges of the solid arc that contains the tooth axis)."""
         pts = self.outline
         rr = np.hypot(pts[:, 0], pts[:, 1])
-        left, right = [], []
+        left: list[float] = []
+        right: list[float] = []
         for i in range(len(pts) - 1):
             r0, r1 = rr[i], rr[i + 1]
             if (r0 - radius) * (r1 - radius) > 0 or r0 == r1:
@@ -111,7 +113,7 @@ class GeneratedTooth:
             c_ = p0 @ p0 - radius * radius
             disc = max(b_ * b_ - 4 * a_ * c_, 0.0)
             for tt in ((-b_ + math.sqrt(disc)) / (2 * a_), (-b_ - math.sqrt(disc)) / (2 * a_)):
-                if -1e-12 <= tt <= 1 + 1e-12:
+                if -RTOL_ROUNDOFF <= tt <= 1 + RTOL_ROUNDOFF:
                     q = p0 + tt * dvec
                     th = math.atan2(q[1], q[0])
                     (left if th > math.pi / 2 else right).append(th)

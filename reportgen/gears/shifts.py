@@ -128,7 +128,7 @@ def blocking_contour(z1: int, z2: int, module: float = 1.0, alpha_deg: float = 2
 def _contour(ev: _Evaluator, n: int, x1_range, x2_range) -> BlockingContour:
     r1 = x1_range or _grid_range(ev, ev.z1, 1)
     r2 = x2_range or _grid_range(ev, ev.z2, 2)
-    xs1, xs2 = np.linspace(*r1, n), np.linspace(*r2, n)
+    xs1, xs2 = np.linspace(r1[0], r1[1], n), np.linspace(r2[0], r2[1], n)
     X1, X2 = np.meshgrid(xs1, xs2, indexing="ij")
     arr = ev.arrays(X1, X2)
     feasible = np.isfinite(arr["alpha_w"])
@@ -139,8 +139,7 @@ def _contour(ev: _Evaluator, n: int, x1_range, x2_range) -> BlockingContour:
         curves[name] = zero_lines(xs1, xs2, margin)
     curves["eps_1"] = zero_lines(xs1, xs2, arr["eps_alpha"] - 1.0)
     curves["equal_sliding"] = zero_lines(xs1, xs2, ev.sliding_gap(arr))
-    feasible = np.array(feasible)
-    feasible.setflags(write=False)
+    feasible = _ro(feasible, dtype=bool)
     return BlockingContour(z1=ev.z1, z2=ev.z2, x1=_ro(xs1), x2=_ro(xs2), feasible=feasible,
                            curves=MappingProxyType(curves), sa_min_factor=ev.sa_min_factor,
                            eps_min=ev.eps_min)

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 from ..errors import ParameterError
 
+from ..geometry import readonly
+
 #: Points of the table between a and P and between P and b (the seed has 2 + 2).
 DEFAULT_STEPS = 3
 
@@ -52,9 +54,7 @@ class SlidingTable:
         """(ρ, λ1, λ2) over N1N2 for the graph, ρ from clip·g to (1 − clip)·g (λ is infinite at
         the ends). Read-only arrays."""
         rho = np.linspace(clip * self.g, (1.0 - clip) * self.g, n)
-        out = (rho, lambda1(rho, self.g, self.u), lambda2(rho, self.g, self.u))
-        for arr in out:
-            arr.setflags(write=False)
+        out = (readonly(rho), readonly(lambda1(rho, self.g, self.u)), readonly(lambda2(rho, self.g, self.u)))
         return out
 
 

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry import perp, rot
+from ..geometry import dot as _dot, perp, rot
 from ..linkage import Linkage, SlidePair
 
 
@@ -42,7 +42,7 @@ Constraint = RevoluteC | SlideC
 
 
 def revolute(linkage: Linkage, point: str, i: int, j: int) -> RevoluteC:
-    return RevoluteC(point, i, j, tuple(linkage.bodies[i].local[point]), tuple(linkage.bodies[j].local[point]))
+    return RevoluteC(point, i, j, linkage.bodies[i].local[point], linkage.bodies[j].local[point])
 
 
 def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
@@ -60,12 +60,8 @@ def world(q: np.ndarray, k: int, p: tuple[float, float]) -> np.ndarray:
     return q[:, k, :2] + rot(q[:, k, 2], p)
 
 
-def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
-
-
 def residual(cons: list[Constraint], q: np.ndarray) -> np.ndarray:
-    out = []
+    out: list[np.ndarray] = []
     for c in cons:
         if isinstance(c, RevoluteC):
             d = world(q, c.i, c.pi) - world(q, c.j, c.pj)

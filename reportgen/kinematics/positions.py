@@ -24,6 +24,7 @@ from ..errors import AssemblyError
 from ..geometry import cross as _cross, dot as _dot
 from ..linkage import Linkage
 from ..structure import Group, Pair
+from ..tolerances import RTOL_EQUAL
 from .constraints import Constraint, RevoluteC, SlideC, assemble, perp, residual, revolute, rot, world
 
 #: Newton on class III+ groups: relative step tolerance and iteration cap.
@@ -59,7 +60,7 @@ class Infeasible:
 class DyadSolver:
     """Closed-form position solver of a dyad; ``sigma`` is the assembly branch (+1 or −1)."""
 
-    def __init__(self, linkage: Linkage, group: Group, known: set[int]):
+    def __init__(self, linkage: Linkage, group: Group, _known: set[int]):
         self.linkage = linkage
         self.group = group
         self.kind = group.kind
@@ -73,7 +74,7 @@ class DyadSolver:
 
     # -- helpers -------------------------------------------------------------------------------
     def _local(self, k: int, point: str) -> tuple[float, float]:
-        return tuple(self.linkage.bodies[k].local[point])
+        return self.linkage.bodies[k].local[point]
 
     def _known_body(self, pair: Pair, k: int) -> int:
         return pair.bodies[0] if pair.bodies[1] == k else pair.bodies[1]
@@ -221,9 +222,9 @@ class DyadSolver:
         rhs = -F[:, pos_rows]
         det = np.linalg.det(A)
         scale = np.prod(np.linalg.norm(A, axis=2), axis=1)
-        margin = np.abs(det) / np.where(scale > 0, scale, 1.0) - 1e-9
+        margin = np.abs(det) / np.where(scale > 0, scale, 1.0) - RTOL_EQUAL
         if strict:
-            self._fail(phi, margin, lambda i: "the two lines of the group are parallel: no intersection")
+            self._fail(phi, margin, lambda _i: "the two lines of the group are parallel: no intersection")
         ok = margin >= 0
         x = np.zeros((q.shape[0], 4))
         if ok.any():
@@ -249,7 +250,7 @@ class NewtonSolver:
     started from a prediction (the previous position advanced with the exact velocity and
     acceleration) or, at the sketch, from the sketch itself."""
 
-    def __init__(self, linkage: Linkage, group: Group, known: set[int]):
+    def __init__(self, linkage: Linkage, group: Group, _known: set[int]):
         self.linkage = linkage
         self.group = group
         self.cons = group_constraints(linkage, group)

@@ -106,6 +106,8 @@ class KinematicsResult:
 class KinematicModel:
     """The mechanism ready to be solved at any crank angles (branches fixed from the sketch)."""
 
+    _coarse: tuple[np.ndarray, np.ndarray, np.ndarray]  # set by _coarse_march
+
     def __init__(self, linkage: Linkage, structure: Structure):
         self.linkage = linkage
         self.structure = structure
@@ -132,17 +134,17 @@ class KinematicModel:
         th = phi - self.alpha
         q[:, d, 2] = th
         O = np.asarray(self.linkage.sketch[self.linkage.drive_axis])
-        q[:, d, :2] = O - rot(th, tuple(b.local[self.linkage.drive_axis]))
+        q[:, d, :2] = O - rot(th, b.local[self.linkage.drive_axis])
 
     def _driver_vel(self, q: np.ndarray, qd: np.ndarray) -> None:
         d = self.linkage.drive_link
-        p = tuple(self.linkage.bodies[d].local[self.linkage.drive_axis])
+        p = self.linkage.bodies[d].local[self.linkage.drive_axis]
         qd[:, d, 2] = self.omega
         qd[:, d, :2] = -self.omega * perp(rot(q[:, d, 2], p))
 
     def _driver_acc(self, q: np.ndarray, qdd: np.ndarray) -> None:
         d = self.linkage.drive_link
-        p = tuple(self.linkage.bodies[d].local[self.linkage.drive_axis])
+        p = self.linkage.bodies[d].local[self.linkage.drive_axis]
         qdd[:, d, 2] = 0.0
         qdd[:, d, :2] = self.omega ** 2 * rot(q[:, d, 2], p)
 
@@ -154,7 +156,7 @@ class KinematicModel:
         self._driver(q, phi0)
         for solver, g in zip(self.solvers, self.structure.groups[1:]):
             if isinstance(solver, DyadSolver):
-                best = None
+                best: tuple[float, float, np.ndarray] | None = None
                 for sigma in (1.0, -1.0):
                     solver.sigma = sigma
                     qq = q.copy()
@@ -162,10 +164,11 @@ class KinematicModel:
                     err = 0.0
                     for k in g.links:
                         for name in self.linkage.bodies[k].points:
-                            w = world(qq, k, tuple(self.linkage.bodies[k].local[name]))[0]
+                            w = world(qq, k, self.linkage.bodies[k].local[name])[0]
                             err += float(np.hypot(*(w - np.asarray(self.linkage.sketch[name]))))
                     if best is None or err < best[0] - 1e-12:
                         best = (err, sigma, qq)
+                assert best is not None
                 solver.sigma = best[1]
                 q = best[2]
             else:
@@ -186,6 +189,7 @@ class KinematicModel:
         self._driver(q, phi)
         ok = np.ones(N, dtype=bool)
         for solver in self.solvers:
+            assert isinstance(solver, DyadSolver)  # a NewtonSolver went by continuation above
             margin = solver.solve(q, phi, strict=strict)
             ok &= margin >= 0
         return q, ok
@@ -260,7 +264,7 @@ class KinematicModel:
         """q̇ at the poses ``q``; ``jacobians`` (a dict) keeps each group's J for the accelerations."""
         qd = np.zeros_like(q)
         self._driver_vel(q, qd)
-        return self._by_groups(q, qd, lambda cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians)
+        return self._by_groups(q, qd, lambda _cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None,
                       jacobians: dict | None = None) -> np.ndarray:
@@ -310,7 +314,7 @@ class KinematicModel:
         """Crank-angle intervals (deg, in 0…360, merged across 360°) where every group assembles."""
         phi = np.linspace(0.0, 2 * math.pi, grid, endpoint=False)
         _, ok = self.positions(phi, strict=False)
-        return _intervals(np.degrees(phi), ok, 360.0 / grid)
+        return _intervals(np.degrees(phi), ok)
 
     def _feasible_dyads_only(self, grid: int = 1440) -> tuple[tuple[float, float], ...] | None:
         if not all(isinstance(s, DyadSolver) for s in self.solvers):
@@ -321,8 +325,9 @@ class KinematicModel:
         ok = np.ones(grid, dtype=bool)
         with np.errstate(invalid="ignore", divide="ignore"):
             for solver in self.solvers:
+                assert isinstance(solver, DyadSolver)  # checked above
                 ok &= solver.solve(q, phi, strict=False) >= 0
-        return _intervals(np.degrees(phi), ok, 360.0 / grid)
+        return _intervals(np.degrees(phi), ok)
 
     def solve(self, phi) -> KinematicsResult:
         """Positions, velocities and accelerations at the crank angles ``phi`` (rad)."""
@@ -345,7 +350,7 @@ class KinematicModel:
             for name in lk.bodies[k].points:
                 if name in points or (k == 0):
                     continue
-                points[name] = _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].local[name]))
+                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name])
         for name in lk.ground:
             if name not in points:
                 points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
@@ -390,7 +395,7 @@ class KinematicModel:
         return PointMotion(_ro(pos), _ro(vel), _ro(acc))
 
 
-def _intervals(deg: np.ndarray, ok: np.ndarray, step: float) -> tuple[tuple[float, float], ...]:
+def _intervals(deg: np.ndarray, ok: np.ndarray) -> tuple[tuple[float, float], ...]:
     """Runs of True in a periodic grid as (start, end) degree intervals."""
     if ok.all():
         return ((0.0, 360.0),)

@@ -23,6 +23,7 @@ from ..linkage import Linkage
 from ..structure import Group
 from .constraints import assemble, rot, world
 from .positions import group_constraints
+from ..tolerances import TINY
 
 #: A position whose transmission angle is below this is flagged as near a singular position.
 NEAR_SINGULAR_DEG = 5.0
@@ -37,7 +38,7 @@ def _acute(u: np.ndarray, v: np.ndarray) -> np.ndarray:
 
 
 def _point(q, linkage: Linkage, k: int, name: str) -> np.ndarray:
-    return world(q, k, tuple(linkage.bodies[k].local[name]))
+    return world(q, k, linkage.bodies[k].local[name])
 
 
 def transmission_angle(linkage: Linkage, group: Group, q: np.ndarray) -> np.ndarray:
@@ -75,14 +76,14 @@ def transmission_angle(linkage: Linkage, group: Group, q: np.ndarray) -> np.ndar
         return _acute(dirs[0], dirs[1])
     legs = _base_and_legs(group)
     if legs is not None:
-        return _class3_angle(linkage, q, *legs)
+        return _class3_angle(linkage, q, legs[1])
     cons = group_constraints(linkage, group)
     J, _ = assemble(cons, q, list(group.links))
     L = max([abs(v) for k in group.links for p in linkage.bodies[k].local.values() for v in p] + [1e-12])
     J = J.copy()
     J[:, :, 2::3] /= L
-    s = np.linalg.svd(J, compute_uv=False)
-    return np.degrees(np.arcsin(np.clip(s[:, -1] / s[:, 0], 0.0, 1.0)))
+    sv = np.linalg.svd(J, compute_uv=False)
+    return np.degrees(np.arcsin(np.clip(sv[:, -1] / sv[:, 0], 0.0, 1.0)))
 
 
 def _base_and_legs(group: Group):
@@ -107,11 +108,11 @@ def _line_meet(p1, d1, p2, d2):
     """Intersection of two lines (N, 2), NaN where parallel."""
     den = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
     w = p2 - p1
-    t = (w[:, 0] * d2[:, 1] - w[:, 1] * d2[:, 0]) / np.where(np.abs(den) > 1e-300, den, np.nan)
+    t = (w[:, 0] * d2[:, 1] - w[:, 1] * d2[:, 0]) / np.where(np.abs(den) > TINY, den, np.nan)
     return p1 + t[:, None] * d1
 
 
-def _class3_angle(linkage: Linkage, q: np.ndarray, base: int, legs) -> np.ndarray:
+def _class3_angle(linkage: Linkage, q: np.ndarray, legs) -> np.ndarray:
     pins, dirs = [], []
     for leg, pin, other in legs:
         a = _point(q, linkage, leg, pin)

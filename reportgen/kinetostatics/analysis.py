@@ -17,11 +17,13 @@ from typing import Mapping
 
 import numpy as np
 
+from ..geometry import readonly
 from ..errors import OptionError, TaskError
 from ..kinematics.transmission import NEAR_SINGULAR_DEG
 from .graphical import GraphicalReplica, graphical_replica
 from .reactions import Reactions, solve_reactions
 from .zhukovsky import Lever, zhukovsky_lever
+from ..tolerances import RTOL_EQUAL
 
 #: Grid of crank angles searched for "max-load".
 MAX_LOAD_GRID = 720
@@ -79,7 +81,7 @@ def resistance_magnitude(project, kin) -> tuple[np.ndarray, np.ndarray]:
         mag += np.hypot(*np.asarray(f.vector).T)
     for m in ls.moments:
         mag += np.abs(m.value)
-    return mag, np.abs(power(LoadSet(ls.forces, ls.moments), kin, project.linkage))
+    return mag, np.abs(power(LoadSet(ls.forces, ls.moments), kin))
 
 
 def force_angle(project, force_at_deg: float | None = None) -> tuple[float, int | None]:
@@ -102,8 +104,8 @@ def force_angle(project, force_at_deg: float | None = None) -> tuple[float, int 
         if top <= 0.0:
             raise TaskError("analysis.force_position", "\"max-load\" but the task has no production resistance",
                             "a position index, or a [[mechanism.load]] of kind \"resistance\"")
-        cand = np.flatnonzero(mag >= top * (1 - 1e-9))
-        best = cand[np.argmax(pw[cand] >= pw[cand].max() * (1 - 1e-9))]
+        cand = np.flatnonzero(mag >= top * (1 - RTOL_EQUAL))
+        best = cand[np.argmax(pw[cand] >= pw[cand].max() * (1 - RTOL_EQUAL))]
         phi = float(grid[best])
         return phi, _index_of(project.phi, phi)
     # the index names a position of the task's own [analysis] grid, also when --at replaces it
@@ -152,8 +154,7 @@ def balancing_cycle(project, phi, inertia: bool = True) -> BalancingCycle:
     loads = project.loads_at(kin, inertia=inertia)
     r = solve_reactions(project.linkage, project.structure, kin, loads)
     z = zhukovsky_lever(project.linkage, kin, loads)
-    ro = lambda a: (lambda b: (b.setflags(write=False), b)[1])(np.array(a, dtype=float))  # noqa: E731
-    return BalancingCycle(ro(phi), ro(r.balancing_moment), ro(z.balancing_moment))
+    return BalancingCycle(readonly(phi), readonly(r.balancing_moment), readonly(z.balancing_moment))
 
 
 def balancing_moment_cycle(project, phi, inertia: bool = True) -> np.ndarray:

@@ -28,6 +28,7 @@ accumulate along the chain, as on paper.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -36,6 +37,7 @@ from ..linkage import Linkage
 from ..structure import Group, Structure
 from .reactions import Reactions, _cross, _Known, _ro, pair_name, perp, solve_group
 from .zhukovsky import Lever, turn_cw
+from ..tolerances import RTOL_ROUNDOFF
 
 #: Mantissas of a round scale.
 ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0)
@@ -64,7 +66,7 @@ def round_scale(largest: float, max_mm: float) -> float:
     while True:
         for m in ROUND_MANTISSAS:
             mu = m * 10.0 ** k
-            if largest / mu <= max_mm * (1 + 1e-12):
+            if largest / mu <= max_mm * (1 + RTOL_ROUNDOFF):
                 return float(f"{mu:.12g}")
         k += 1
 
@@ -267,7 +269,7 @@ def _moment_term(name: str, point: np.ndarray, vec: np.ndarray, centre: np.ndarr
 
 
 def _polygon(key: str, entries: list[tuple[str, np.ndarray, bool, float]], mu: float, step: float,
-             extra: list[tuple[str, np.ndarray, float]] = ()) -> ForcePolygon:
+             extra: Sequence[tuple[str, np.ndarray, float]] = ()) -> ForcePolygon:
     """entries: (name, exact vector, known, read value N); drawn head to tail from the origin."""
     vecs, cur = [], np.zeros(2)
     for name, v, known, read in entries:
@@ -321,11 +323,11 @@ def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, ar
         pts = linkage.bodies[k].points
         if len(pts) >= 2:
             from ..kinematics.constraints import world
-            P1 = world(q, k, tuple(linkage.bodies[k].local[pts[0]]))[0]
-            P2 = world(q, k, tuple(linkage.bodies[k].local[pts[1]]))[0]
+            P1 = world(q, k, linkage.bodies[k].local[pts[0]])[0]
+            P2 = world(q, k, linkage.bodies[k].local[pts[1]])[0]
             d = P2 - P1
             den = float(_cross(F, d))
-            if abs(den) > 1e-12 * mag * float(np.hypot(*d)):
+            if abs(den) > RTOL_ROUNDOFF * mag * float(np.hypot(*d)):
                 t = float(_cross(P1 - point, d)) / den
                 swing = _ro(point + t * F)
         m_meas = math.copysign(mag * h_meas * mu_l, M)
@@ -376,18 +378,18 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
     for g in reversed(structure.groups[1:]):
         own = {p.name for p in reactions.pairs if p.group == g.key}
         if g.group_class == 2 and g.kind in ("RRR", "RRP"):
-            groups_out.append(_dyad(linkage, g, reactions, i, q, items_on, own, read, read_pt, mu_l,
+            groups_out.append(_dyad(g, reactions, i, items_on, own, read, read_pt, mu_l,
                                     reading_mm, arm_reading_mm, box))
         else:
             groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm, box))
-    crank = _crank(linkage, reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
-    lev = _lever(lever, reactions, i, arm_reading_mm, linkage)
+    crank = _crank(reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
+    lev = _lever(lever, reactions, i, arm_reading_mm)
     disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
     return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
                             crank, lev, disc)
 
 
-def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set[str], read, read_pt, mu_l: float,
+def _dyad(g: Group, reactions: Reactions, i: int, items_on, own: set[str], read, read_pt, mu_l: float,
           step: float, arm_step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> GroupGraphic:
     a, b = g.links
     inner = next(p for p in g.pairs if not p.external)
@@ -425,7 +427,7 @@ def _dyad(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: set
     # the polygon with the read vectors: knowns rounded, the two unknown directions closing it
     known_sum = np.zeros(2)
     dirs = []
-    for k, ext, its, split in head:
+    for _k, ext, its, split in head:
         if split is not None:
             known_sum += _read_vector(split.tau_measured * split.tangent, mu_f, step) / mu_f
             dirs.append(split.along)
@@ -499,7 +501,7 @@ def _generic(linkage, g: Group, reactions: Reactions, i: int, q, items_on, own: 
     for it in all_items:
         entries.append((it.name, it.vector, True, float(np.hypot(*_read_vector(it.vector_r, mu_f, step)))))
     extra = []
-    for p, W, n, vec, couple in sol:
+    for p, _W, _n, vec, _couple in sol:
         i0, j0 = p.bodies
         exact = next(r for r in reactions.pairs if r.group == g.key and r.joint == p.point and r.kind == p.kind
                      and {r.lo, r.hi} == {i0, j0})
@@ -530,7 +532,7 @@ def _moment_terms(its, couples: float, centre: np.ndarray, mu_l: float,
     return terms, total
 
 
-def _crank(linkage, reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
+def _crank(reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
            arm_step: float, box: tuple[float, float] = POLYGON_BOX_MM) -> CrankGraphic:
     d = reactions.crank
     fp = next(r for r in reactions.pairs if r.group == str(d))
@@ -565,7 +567,7 @@ def _arm_foot(image: np.ndarray, vector: np.ndarray) -> np.ndarray:
     return image - float(image @ u) * u
 
 
-def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float, linkage: Linkage) -> LeverGraphic:
+def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float) -> LeverGraphic:
     imgs = [float(np.hypot(*f.image[i])) for f in lever.forces] + [float(np.hypot(*lever.crank_pin_image[i]))]
     plan = [np.zeros(2), lever.crank_pin_image[i]] + [f.image[i] for f in lever.forces] + \
         [turn_cw(np.asarray(m.vel[i])) for m in reactions.kin.points.values()] + \

@@ -109,8 +109,8 @@ class Reactions:
     def on_link(self, k: int) -> tuple[tuple[Force, ...], tuple[Moment, ...]]:
         """Every force and couple on link k: its loads, the reactions of its neighbours (named
         ``R{j}{k}``, the force of j on k) and, on the crank, the balancing force ``Fур``."""
-        forces, moments = self.loads.on_link(k)
-        forces, moments = list(forces), list(moments)
+        own_forces, own_moments = self.loads.on_link(k)
+        forces, moments = list(own_forces), list(own_moments)
         for p in self.pairs_of(k):
             j = p.other(k)
             forces.append(Force(pair_name(j, k), k, p.joint, p.point, _ro(p.on(k)), "reaction"))
@@ -179,7 +179,7 @@ def _pair_geometry(linkage: Linkage, q: np.ndarray, p: Pair) -> tuple[np.ndarray
     """(point W (N, 2), guide normal n (N, 2)) of a pair; n = 0 for a revolute pair."""
     if p.kind == "R":
         k = p.bodies[1]
-        W = world(q, k, tuple(linkage.bodies[k].local[p.point]))
+        W = world(q, k, linkage.bodies[k].local[p.point])
         return W, np.zeros_like(W)
     s = linkage.slides[p.slide]
     W = world(q, s.link, s.point_local)
@@ -237,7 +237,7 @@ def solve_group(linkage: Linkage, group: Group, q: np.ndarray, known: _Known, L:
     for c, (p, (W, n)) in enumerate(zip(group.pairs, geo)):
         if p.kind == "R":
             vec = x[:, 2 * c:2 * c + 2]
-            couple = np.zeros(N)
+            couple: np.ndarray = np.zeros(N)
         else:
             vec = x[:, 2 * c, None] * n
             couple = x[:, 2 * c + 1] * L
@@ -245,7 +245,7 @@ def solve_group(linkage: Linkage, group: Group, q: np.ndarray, known: _Known, L:
     return out
 
 
-def _record(linkage: Linkage, q: np.ndarray, p: Pair, W: np.ndarray, n: np.ndarray, vec: np.ndarray,
+def _record(p: Pair, W: np.ndarray, n: np.ndarray, vec: np.ndarray,
             couple: np.ndarray, group_key: str, L: float) -> PairReaction:
     """Canonical orientation (force of the lower id on the higher) and the point of action."""
     i, j = p.bodies
@@ -278,7 +278,7 @@ def solve_reactions(linkage: Linkage, structure: Structure, kin: KinematicsResul
     pairs: list[PairReaction] = []
     for g in reversed(structure.groups[1:]):
         for p, W, n, vec, couple in solve_group(linkage, g, q, known, L, kin.phi):
-            rec = _record(linkage, q, p, W, n, vec, couple, g.key, L)
+            rec = _record(p, W, n, vec, couple, g.key, L)
             pairs.append(rec)
             for k in (rec.lo, rec.hi):
                 if k not in g.links and k != 0:
@@ -288,8 +288,8 @@ def solve_reactions(linkage: Linkage, structure: Structure, kin: KinematicsResul
     # the crank: M_ур + ΣM_O = 0, R01 + ΣF + F_ур = 0
     d = linkage.drive_link
     body = linkage.bodies[d]
-    O = world(q, d, tuple(body.local[linkage.drive_axis]))
-    A = world(q, d, tuple(body.local[linkage.drive_tip]))
+    O = world(q, d, body.local[linkage.drive_axis])
+    A = world(q, d, body.local[linkage.drive_tip])
     F, M = known.resultant(d, O, N)
     M_b = -M
     OA = A - O
@@ -300,7 +300,7 @@ def solve_reactions(linkage: Linkage, structure: Structure, kin: KinematicsResul
     drv = structure.groups[0]
     fp = next(p for p in drv.pairs if p.kind == "R" and 0 in p.bodies and p.point == linkage.drive_axis)
     vec = R0d if fp.bodies == (0, d) else -R0d
-    pairs.append(_record(linkage, q, fp, O, np.zeros_like(O), vec, np.zeros(N), str(d), L))
+    pairs.append(_record(fp, O, np.zeros_like(O), vec, np.zeros(N), str(d), L))
     return Reactions(kin, loads, tuple(pairs), d, linkage.drive_axis, linkage.drive_tip, _ro(M_b), _ro(F_b), _ro(A),
                      _ro(R0d_couple), L)
 

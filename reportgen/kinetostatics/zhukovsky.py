@@ -97,8 +97,8 @@ def zhukovsky_lever(linkage: Linkage, kin: KinematicsResult, loads: LoadSet) -> 
             total = total + p
             continue
         b = linkage.bodies[k]
-        P1 = world(q, k, tuple(b.local[pts[0]]))
-        P2 = world(q, k, tuple(b.local[pts[1]]))
+        P1 = world(q, k, b.local[pts[0]])
+        P2 = world(q, k, b.local[pts[1]])
         d = P2 - P1
         l2 = (d * d).sum(-1)
         # F at P2 and −F at P1 with (P2 − P1) × F = M:  F = M·perp(d)/|d|²
@@ -106,19 +106,19 @@ def zhukovsky_lever(linkage: Linkage, kin: KinematicsResult, loads: LoadSet) -> 
         put(f"{m.name}:{pts[1]}", k, m.name, P2, F)
         put(f"{m.name}:{pts[0]}", k, m.name, P1, -F)
     d = linkage.drive_link
-    A = world(q, d, tuple(linkage.bodies[d].local[linkage.drive_tip]))
+    A = world(q, d, linkage.bodies[d].local[linkage.drive_tip])
     pin = turn_cw(point_velocity(kin, d, A))
     w1 = float(kin.omega1)
     M_b = -total / w1
-    O = world(q, d, tuple(linkage.bodies[d].local[linkage.drive_axis]))
+    O = world(q, d, linkage.bodies[d].local[linkage.drive_axis])
     l_OA = np.hypot(*(A - O).T)
     return Lever(tuple(forces), tuple(direct), _ro(pin), _ro(M_b), _ro(M_b / l_OA), w1)
 
 
-def virtual_power_moment(loads: LoadSet, kin: KinematicsResult, linkage: Linkage) -> np.ndarray:
+def virtual_power_moment(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
     """M_ур = −P/ω1 with P = Σ F·v + Σ M·ω the power of the loads (:func:`reportgen.loads.power`)."""
     from ..loads import power
-    return -power(loads, kin, linkage) / float(kin.omega1)
+    return -power(loads, kin) / float(kin.omega1)
 
 
 __all__ = ["Lever", "LeverForce", "zhukovsky_lever", "virtual_power_moment", "turn_cw", "point_velocity"]

@@ -47,6 +47,10 @@ class UndercutLimits:
                 raise TaskError(f"planetary.limits.{name}", f"{v!r}", "an integer ≥ 1")
 
 
+#: The course's limits (a frozen value: safe as a default argument).
+DEFAULT_LIMITS = UndercutLimits()
+
+
 @dataclass(frozen=True)
 class CoaxialCheck:
     """z1 ± z2 (``left``) against z3 ∓ z2′ (``right``): twice the centre distance in modules."""
@@ -113,7 +117,7 @@ def check_coaxial(scheme: Scheme, z: tuple[int, ...]) -> CoaxialCheck:
 
 
 def check_undercut(scheme: Scheme, z: tuple[int, ...],
-                   limits: UndercutLimits = UndercutLimits()) -> UndercutCheck:
+                   limits: UndercutLimits = DEFAULT_LIMITS) -> UndercutCheck:
     z1, z2, z2p, z3 = expand(scheme, z)
     internal = scheme.internal_wheels
     items: list[UndercutItem] = []

@@ -18,22 +18,23 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 from numbers import Real
-from typing import Literal
+from typing import Literal, cast
 
 import numpy as np
 
 from ..errors import PlanetarySynthesisError, TaskError
-from .conditions import (AdjacencyCheck, AssemblyCheck, CoaxialCheck, UndercutCheck, UndercutLimits,
+from .conditions import (DEFAULT_LIMITS, AdjacencyCheck, AssemblyCheck, CoaxialCheck, UndercutCheck, UndercutLimits,
                          check_adjacency, check_assembly, check_coaxial, check_undercut)
 from .schemes import (DRIVERS, Driver, Scheme, envelope, expand, get_scheme, reducer_ratio,
                       willis_u13h, willis_u1h)
+from ..tolerances import RTOL_EQUAL
 
 AUTO_K_MAX = 6          # K = the largest that fits, up to 6, unless given
 K_GIVEN_MAX = 12
 FIRST_BOUND = 128
 MAX_TEETH = 1000
 NEAREST_BOUND = 120
-EDGE = 1e-9             # a ratio on the edge of the band (|deviation| = tolerance) is accepted
+EDGE = RTOL_EQUAL             # a ratio on the edge of the band (|deviation| = tolerance) is accepted
 
 
 @dataclass(frozen=True)
@@ -141,10 +142,10 @@ def _check_module(module: object) -> float | None:
     return float(module)
 
 
-def _check_driver(driver: object) -> str:
+def _check_driver(driver: object) -> Driver:
     if driver not in DRIVERS:
         raise TaskError("planetary.driver", f"{driver!r}", "wheel (wheel 1 drives, u1H) or carrier (uH1)")
-    return str(driver)
+    return cast(Driver, str(driver))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -161,7 +162,7 @@ def _sign_ok(ratio: float, target: float) -> bool:
 
 def evaluate(scheme: str | Scheme, z: tuple[int, ...], satellites: int | Literal["auto"] = "auto", *,
              target: float | None = None, tolerance: float = 0.05, driver: Driver = "wheel",
-             module: float | None = None, limits: UndercutLimits = UndercutLimits(), ha: float = 1.0,
+             module: float | None = None, limits: UndercutLimits = DEFAULT_LIMITS, ha: float = 1.0,
              alternatives: tuple[Candidate, ...] = ()) -> PlanetaryDesign:
     """Every condition of the tooth set ``z`` with K ``satellites`` ("auto": the largest K ≤ 6 that
     meets adjacency and assembly; if none, the largest that meets adjacency)."""
@@ -224,7 +225,7 @@ def _p_bands(sch: Scheme, driver: str, u_bands: list[tuple[float, float]]) -> li
         p1, p2 = (1 - a) / sch.sigma, (1 - b) / sch.sigma
         lo, hi = min(p1, p2), max(p1, p2)
         if hi > 0:
-            out.append((max(lo, 0.0) * (1 - 1e-9), hi * (1 + 1e-9)))
+            out.append((max(lo, 0.0) * (1 - EDGE), hi * (1 + EDGE)))
     return out
 
 
@@ -247,9 +248,9 @@ def _enumerate(sch: Scheme, driver: str, bound: int, u_bands: list[tuple[float, 
     lo1 = inn if sch.row1 == "internal" else ext
     if bound < max(lo1, ext):
         return _Sets(empty, empty, empty, empty, np.zeros(0))
-    z1g, z2g = np.meshgrid(np.arange(lo1, bound + 1, dtype=np.int64),
-                           np.arange(ext, bound + 1, dtype=np.int64), indexing="ij")
-    z1g, z2g = z1g.ravel(), z2g.ravel()
+    g1, g2 = np.meshgrid(np.arange(lo1, bound + 1, dtype=np.int64),
+                         np.arange(ext, bound + 1, dtype=np.int64), indexing="ij")
+    z1g, z2g = g1.ravel(), g2.ravel()
     if not sch.two_row:
         z3g = z1g + 2 * z2g
         keep = (z3g <= bound) & (z3g >= inn) & (z3g - z2g >= dif)
@@ -366,7 +367,7 @@ def _search(sch: Scheme, target: float, tolerance: float, k_given: int | None, d
 
 def search(scheme: str | Scheme, ratio: float, tolerance: float = 0.05,
            satellites: int | Literal["auto"] = "auto", *, driver: Driver = "wheel",
-           limits: UndercutLimits = UndercutLimits(), ha: float = 1.0, count: int = 6,
+           limits: UndercutLimits = DEFAULT_LIMITS, ha: float = 1.0, count: int = 6,
            max_teeth: int = MAX_TEETH) -> tuple[Candidate, ...]:
     """The ``count`` most compact sets that meet every condition (fewer if fewer exist with an
     envelope ≤ ``max_teeth``); an empty tuple when none exists."""
@@ -378,7 +379,7 @@ def search(scheme: str | Scheme, ratio: float, tolerance: float = 0.05,
 
 def nearest(scheme: str | Scheme, ratio: float, tolerance: float,
             satellites: int | Literal["auto"] = "auto", *, driver: Driver = "wheel",
-            limits: UndercutLimits = UndercutLimits(), ha: float = 1.0,
+            limits: UndercutLimits = DEFAULT_LIMITS, ha: float = 1.0,
             bound: int = NEAREST_BOUND) -> tuple[Candidate, ...]:
     """The valid sets (teeth ≤ ``bound``) with the nearest ratio below and above the band."""
     sch = scheme if isinstance(scheme, Scheme) else get_scheme(scheme)
@@ -416,7 +417,7 @@ def _why(st: dict[str, int], k_given: int | None, driver: str, limits: UndercutL
 
 def synthesize(scheme: str, ratio: float, tolerance: float = 0.05,
                satellites: int | Literal["auto"] = "auto", module: float | None = None, *,
-               driver: Driver = "wheel", limits: UndercutLimits = UndercutLimits(), ha: float = 1.0,
+               driver: Driver = "wheel", limits: UndercutLimits = DEFAULT_LIMITS, ha: float = 1.0,
                alternatives: int = 5, max_teeth: int = MAX_TEETH) -> PlanetaryDesign:
     """The most compact tooth set for the target ratio, with every condition recorded and the next
     ``alternatives`` candidates; ``PlanetarySynthesisError`` (reasons, nearest ratios) if none."""
@@ -438,4 +439,4 @@ def synthesize(scheme: str, ratio: float, tolerance: float = 0.05,
             tuple((c.ratio, c.z, c.satellites) for c in near))
     best = found[0]
     return evaluate(sch, best.z, best.satellites, target=target, tolerance=tolerance, driver=driver,
-                    module=module, limits=limits, ha=ha, alternatives=found[1:])
+                    module=module, limits=limits, ha=ha, alternatives=tuple(found[1:]))

@@ -23,7 +23,7 @@ from ..errors import TaskError
 from .search import PlanetaryDesign
 from .schemes import expand
 
-Point = tuple[float, float]
+from ..geometry import Vec2 as Point
 
 # ГОСТ 2.302 scales (drawing : real), largest first.
 GOST_SCALES: tuple[tuple[str, float], ...] = (

@@ -29,10 +29,10 @@ FIELDS = ("title", "author", "group", "supervisor", "organization", "city")
 def hostile_press() -> str:
     text = PRESS.read_text(encoding="utf-8")
     for key in FIELDS:
-        text, n = re.subn(rf'^{key} = ".*"$', lambda m, k=key: f"{k} = {json.dumps(k.upper() + ': ' + TEXT, ensure_ascii=False)}",
+        text, n = re.subn(rf'^{key} = ".*"$', lambda _m, k=key: f"{k} = {json.dumps(k.upper() + ': ' + TEXT, ensure_ascii=False)}",
                           text, count=1, flags=re.M)
         assert n == 1, key
-    text, n = re.subn(r'^name = ".*"$', lambda m: f"name = {json.dumps('NAME: ' + TEXT, ensure_ascii=False)}",
+    text, n = re.subn(r'^name = ".*"$', lambda _m: f"name = {json.dumps('NAME: ' + TEXT, ensure_ascii=False)}",
                       text, count=1, flags=re.M)
     assert n == 1
     return text

@@ -27,6 +27,6 @@ def test_librecad_draws_the_sheet(demo_dxf, tmp_path):
 
 
 def test_missing_librecad_gives_a_clear_message(monkeypatch, tmp_path):
-    monkeypatch.setattr(librecad.shutil, "which", lambda name: None)
+    monkeypatch.setattr(librecad.shutil, "which", lambda _name: None)
     with pytest.raises(Exception, match="librecad and pdftoppm not found on PATH"):
         librecad.dxf_to_pdf(tmp_path / "x.dxf", tmp_path)

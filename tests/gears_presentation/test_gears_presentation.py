@@ -206,6 +206,7 @@ def test_sheet_halves_follow_the_task(tmp_path):
     sheet = gear_sheet.draw(project, 1, 1)
     assert "reducer_side" in sheet.views and "meshing" not in sheet.views
     assert not sheet.overlaps(), sheet.overlaps()
+    from reportgen.zoo import four_bar  # a linkage only: no gear sheet
     nothing = tmp_path / "n.toml"
-    nothing.write_text(GEAR_ONLY.split("[gears]")[0], encoding="utf-8")
+    nothing.write_text(four_bar(0.1, 0.3, 0.25, 0.3, phi_deg=30, omega=10), encoding="utf-8")
     assert not gear_sheet.available(Project(load_task(str(nothing))))

@@ -16,7 +16,7 @@ SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[Healt
 
 def _velocity_matches(m, phi, h=1e-5):
     r = m.solve([phi - h, phi, phi + h])
-    for name, pm in r.points.items():
+    for pm in r.points.values():
         fd = (pm.pos[2] - pm.pos[0]) / (2 * h) * m.omega
         assert np.allclose(fd, pm.vel[1], atol=1e-6 * max(1.0, np.abs(pm.vel[1]).max()))
         fa = (pm.vel[2] - pm.vel[0]) / (2 * h) * m.omega

@@ -30,7 +30,7 @@ def test_zhukovsky_equals_groups_over_the_cycle(name):
         assert np.abs(cyc.groups - cyc.zhukovsky).max() <= REL * s
         # and both equal the virtual power of the loads computed by reportgen.loads.power
         kin = p.kinematics_at(phi)
-        vp = virtual_power_moment(p.loads_at(kin), kin, p.linkage)
+        vp = virtual_power_moment(p.loads_at(kin), kin)
         assert np.abs(cyc.groups - vp).max() <= REL * s
 
 
@@ -67,7 +67,7 @@ def test_cycle_function_for_dynamics():
     static = balancing_moment_cycle(p, phi, inertia=False)
     # without inertia: −(power of the external loads)/ω1
     kin = p.kinematics_at(phi)
-    assert np.allclose(static, virtual_power_moment(p.loads_at(kin, inertia=False), kin, p.linkage),
+    assert np.allclose(static, virtual_power_moment(p.loads_at(kin, inertia=False), kin),
                        rtol=1e-9, atol=1e-9 * np.abs(static).max())
     assert not np.allclose(m, static)
 
@@ -79,7 +79,7 @@ def test_four_bar_moment_ratio():
     phi = np.radians(np.arange(0.0, 360.0, 7.5))
     kin = p.kinematics_at(phi)
     from reportgen.loads import constant_loads
-    loads = constant_loads(p.task.mechanism, p.linkage, kin)
+    loads = constant_loads(p.task.mechanism, kin)
     r = solve_reactions(p.linkage, p.structure, kin, loads)
     w3 = np.asarray(kin.links[3].omega)
     assert np.allclose(r.balancing_moment, 30.0 * w3 / kin.omega1, rtol=1e-9, atol=1e-9 * 30)

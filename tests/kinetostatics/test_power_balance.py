@@ -35,7 +35,7 @@ def test_balancing_moment_is_the_power_balance(r, lam, e_frac, omega, sgn, m2, m
     h = 1e-5
     dT = (kinetic_energy(p, phi + h) - kinetic_energy(p, phi - h)) / (2 * h)     # dT/dφ
     kin = p.kinematics_at(phi)
-    M_ext = virtual_power_moment(p.loads_at(kin, inertia=False), kin, p.linkage)  # −P_ext/ω1
+    M_ext = virtual_power_moment(p.loads_at(kin, inertia=False), kin)  # −P_ext/ω1
     expected = dT + M_ext                     # M·ω1 = ω1·dT/dφ − P_ext
     scale = abs(force) * r + m3 * omega ** 2 * r * r + m2 * omega ** 2 * r * r + 1.0
     assert abs(M[0] - expected[0]) <= 1e-6 * scale

@@ -134,7 +134,7 @@ def test_bad_input_names_the_key(kwargs, path):
     assert ei.value.path == path and ei.value.expected
 
 
-def test_cli_done_when(tmp_path):
+def test_cli_done_when():
     cmd = [sys.executable, "-m", "reportgen", "planetary", "--scheme", "two-row-ext-int",
            "--ratio", "12.272", "--satellites", "3"]
     out = subprocess.run(cmd, capture_output=True, text=True)

@@ -38,7 +38,7 @@ def test_every_condition_holds(seed):
     assert {i.what: i.value for i in d.undercut.items}["3"] == 121     # seed: z6 > 85
 
 
-def test_seed_is_rejected_with_four_planets(seed):
+def test_seed_is_rejected_with_four_planets():
     d = evaluate("two-row-ext-int", SEED_Z, 4)
     assert not d.adjacency.holds                                       # 81·sin45° = 57.3 < 66
     assert not d.valid
