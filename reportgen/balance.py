@@ -18,8 +18,9 @@ Pure: no presentation import (the LaTeX strings are plain text).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
+from .errors import ParameterError
 from .calc import (
     CalcRecord, DisplayCheck, Var, _evaluate, _parse, _SymbolicLeaves, _to_latex, _tolerance,
     parse_decimal, record,
@@ -41,9 +42,9 @@ class BalanceTerm:
 
     def __post_init__(self) -> None:
         if self.sign not in (1, -1):
-            raise ValueError(f"a balance term's sign is +1 or -1, got {self.sign!r}")
+            raise ParameterError("sign", self.sign, "+1 or -1")
         if (self.arm is None) == (self.divisor is None):
-            raise ValueError("a balance term has exactly one of arm= or divisor=")
+            raise ParameterError("arm/divisor", (self.arm, self.divisor), "exactly one of arm= or divisor=")
 
 
 @dataclass(frozen=True)
@@ -67,7 +68,7 @@ class Balance:
 
     def __post_init__(self) -> None:
         if self.unknown_sign not in (1, -1):
-            raise ValueError(f"the unknown's sign is +1 or -1, got {self.unknown_sign!r}")
+            raise ParameterError("unknown_sign", self.unknown_sign, "+1 or -1")
 
     # ---- one expression for the equation and the check -----------------------------------------
     def _items(self) -> list[tuple[str, dict[str, Var]]]:
@@ -103,7 +104,7 @@ class Balance:
     def solve(self) -> "BalanceSolution":
         """Partial sums of ``per_line`` terms (when longer; their total too when there are more than
         ``per_line`` of them), then ``U = −(Σ)/(s_u·l)``."""
-        items = self._items()
+        items: list[tuple[str, dict[str, Var | CalcRecord]]] = [(e, dict(d)) for e, d in self._items()]
         parts: list[CalcRecord] = []
         final_items = items
         if len(items) > self.per_line:
@@ -111,9 +112,9 @@ class Balance:
             for c in range(0, len(items), self.per_line):
                 chunk = items[c:c + self.per_line]
                 expr = " ".join(e for e, _ in chunk).removeprefix("+ ").strip()
-                named = {k: v for _, d in chunk for k, v in d.items()}
+                named: dict[str, Var | CalcRecord] = {k: v for _, d in chunk for k, v in d.items()}
                 n = c // self.per_line
-                rec = record(f"{self.partial}_{{{n + 1}}}", expr, self.partial_unit, **named,
+                rec = record(f"{self.partial}_{{{n + 1}}}", expr, self.partial_unit, *_vars(named),
                              meaning=self.partial_meaning)
                 parts.append(rec)
                 final_items.append((f"+ S{n}", {f"S{n}": rec}))
@@ -121,7 +122,7 @@ class Balance:
             # many partial sums: their total first (a sum wraps over lines; a long fraction cannot)
             expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()
             named = {k: v for _, d in final_items for k, v in d.items()}
-            total = record(self.partial, expr, self.partial_unit, **named, meaning=self.partial_meaning)
+            total = record(self.partial, expr, self.partial_unit, *_vars(named), meaning=self.partial_meaning)
             parts.append(total)
             final_items = [("+ T", {"T": total})]
         expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()
@@ -132,8 +133,13 @@ class Balance:
             full = f"-({expr}) / l"
         else:
             full = f"({expr}) / l"
-        result = record(self.symbol, full, self.unit, **named, l=self.arm, meaning=self.meaning)
+        result = record(self.symbol, full, self.unit, *_vars({**named, "l": self.arm}), meaning=self.meaning)
         return BalanceSolution(self, tuple(parts), result)
+
+
+def _vars(named: dict[str, Var | CalcRecord]) -> list[Var]:
+    """Inputs of a record under the names its expression uses (a record's result as its symbol)."""
+    return [v.as_var(k) if isinstance(v, CalcRecord) else replace(v, name=k) for k, v in named.items()]
 
 
 @dataclass(frozen=True)

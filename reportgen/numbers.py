@@ -25,6 +25,8 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_EVEN, Decimal
 
+from .errors import ParameterError
+
 __all__ = ["RESIDUE_REL", "ANGLE_DECIMALS", "decimal_text", "significant_decimals", "plain", "significant",
            "is_residue", "clean", "clean_array"]
 
@@ -42,7 +44,7 @@ def decimal_text(value: float, decimals: int) -> str:
     ``-0`` becomes ``0``: ``decimal_text(-0.001, 2) == "0.00"``.
     """
     if not math.isfinite(value):
-        raise ValueError(f"cannot format {value!r}")
+        raise ParameterError("value", value, "a finite number to print")
     d = Decimal(repr(float(value))).quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_EVEN)
     text = format(d, "f")
     if text.startswith("-") and d == 0:

@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
-from typing import Any
 
 import numpy as np
 from ..render import Tex

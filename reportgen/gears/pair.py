@@ -82,11 +82,11 @@ def from_task(gears, **options) -> GearPair:
     """Solve the ``[gears]`` section of a task (:class:`reportgen.task.Gears`) with its limits
     (``eps_min``, ``sa_min``); ``options`` go to :func:`solve_gear_pair` (sliding_steps, rounding, or
     limits that override the task's)."""
-    limits = {"eps_min": getattr(gears, "eps_min", EPS_MIN),
-              "sa_min_factor": getattr(gears, "sa_min", SA_MIN_FACTOR)}
-    limits.update(options)
+    eps_min = float(options.pop("eps_min", getattr(gears, "eps_min", EPS_MIN)))
+    sa_min = float(options.pop("sa_min_factor", getattr(gears, "sa_min", SA_MIN_FACTOR)))
     return solve_gear_pair(gears.z1, gears.z2, gears.module, gears.x1, gears.x2,
-                           alpha_deg=gears.alpha_deg, ha=gears.ha, c=gears.c, **limits)
+                           alpha_deg=gears.alpha_deg, ha=gears.ha, c=gears.c, sa_min_factor=sa_min,
+                           eps_min=eps_min, **options)
 
 
 def passing_alternative(pair: GearPair, rounding: float | None = 0.01) -> GearPair | None:
