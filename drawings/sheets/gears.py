@@ -95,7 +95,7 @@ def draw_pair_table(sheet, pair, rect) -> None:
         view.line((x, top), (x, top - PAIR_ROW_MM * n), "contour")
     for i, row in enumerate(rows):
         y = top - PAIR_ROW_MM * i - PAIR_ROW_MM / 2
-        view.text((1.5, y), row[0], 3.5, "middle-left")
+        view.text((1.5, y), row[0], 2.5, "middle-left")
         for c in (1, 2):
             if row[c]:
                 view.text(((xs[c] + xs[c + 1]) / 2, y), row[c], 3.5 if i else 2.5, "center")

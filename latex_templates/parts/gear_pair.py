@@ -262,8 +262,8 @@ def _conclusion(pair, failed, alt=None, language: str = "ru") -> str:
         text += " Не выполнены условия: " + "; ".join(names[c.name] for c in failed) + "."
         if alt is not None and alt["pair"] is not None:
             text += " " + _strings(language).get("marks.gear_alt_conclusion").format(
-                x1=mnum(alt["x1"]), x2=mnum(alt["x2"]), aw=mnum(alt["aw"], places(alt["aw"], 3)),
-                eps=mnum(alt["eps"], places(alt["eps"], 3)))
+                x1=Tex(mnum(alt["x1"])), x2=Tex(mnum(alt["x2"])), aw=Tex(mnum(alt["aw"], places(alt["aw"], 3))),
+                eps=Tex(mnum(alt["eps"], places(alt["eps"], 3))))
     else:
         text += " Все проверки качества зацепления выполнены."
     return Tex(text)
