@@ -26,11 +26,11 @@ def _fail_in_the_sheets(monkeypatch):
 
     class Broken:
         @staticmethod
-        def draw(project, i, n):
+        def draw(*_args):
             raise TaskError("mechanism.link[1].length", "made up for the test", "a positive length")
 
-    monkeypatch.setattr(pipeline, "_sheet_list", lambda project: [("broken", Broken)] + list(original(project)))
-    monkeypatch.setattr(pipeline, "_note", lambda project, tmp, timeline: None)
+    monkeypatch.setattr(pipeline, "_sheet_list", lambda p: [("broken", Broken)] + list(original(p)))
+    monkeypatch.setattr(pipeline, "_note", lambda *_: None)
 
 
 @pytest.mark.parametrize("jobs", ["2", "1"])
@@ -47,7 +47,7 @@ def test_an_error_in_the_sheets_comes_back_with_its_class_and_fields(tmp_path, m
 
 def test_the_sheets_run_in_parallel_with_the_note(tmp_path, monkeypatch):
     monkeypatch.setenv("REPORTGEN_JOBS", "2")
-    monkeypatch.setattr(pipeline, "_note", lambda project, tmp, timeline: time.sleep(0.3))
+    monkeypatch.setattr(pipeline, "_note", lambda *_: time.sleep(0.3))
     timeline = pipeline.Timeline(quiet=True)
     build_cmd.build(str(PRESS), tmp_path / "out", quiet=True, pdf=False, timeline=timeline)
     lanes = {s.lane for s in timeline.spans}
@@ -89,12 +89,12 @@ def _args(task: Path, out: Path) -> argparse.Namespace:
                               latexmk="latexmk", no_cache=True)
 
 
-def test_watch_rebuilds_when_the_task_changes(tmp_path, capsys):
+def test_watch_rebuilds_when_the_task_changes(tmp_path):
     task = tmp_path / "task.toml"
     task.write_text("a = 1\n", encoding="utf-8")
     seen = []
 
-    def fake_build(path, out, **kw):
+    def fake_build(path, *_args, **_kw):
         seen.append(Path(path).read_text(encoding="utf-8"))
         if len(seen) == 1:   # the student edits the file after the first build
             threading.Timer(0.05, lambda: task.write_text("a = 22\n", encoding="utf-8")).start()
@@ -108,7 +108,7 @@ def test_watch_reports_a_bad_task_and_ends_cleanly_on_ctrl_c(tmp_path, capsys):
     task.write_text("a = 1\n", encoding="utf-8")
     calls = []
 
-    def fake_build(path, out, **kw):
+    def fake_build(*_args, **_kw):
         calls.append(1)
         if len(calls) == 1:
             threading.Timer(0.05, lambda: task.write_text("a = 2\n", encoding="utf-8")).start()
