@@ -104,6 +104,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     i = data.analysed
     scheme = add_scheme_view(sheet, b, k)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
+    sheet.set_scale(scale_text)
     # the diagrams
     d = diagrams_of(project)
     if d is not None:

@@ -78,7 +78,9 @@ def test_analysed_position_is_the_solvers(name, projects):
     i = detail_position(project)
     cycle = ProjectCycle(project, res.crank_inertia)
     r = cycle.reduced(np.array([cycle.theta_of(float(project.kinematics.phi[i]))]))
-    assert c["M_rec"].value == pytest.approx(float(r.M[0]), rel=1e-9, abs=1e-9)
+    # the powers use the angles as printed (to 0,01°, the course's precision): M_пр agrees with the
+    # solver far within its printed four digits
+    assert c["M_rec"].value == pytest.approx(float(r.M[0]), rel=2e-4, abs=1e-6)
     assert c["J_rec"].value == pytest.approx(float(r.J[0]), rel=1e-12)
 
 
