@@ -21,7 +21,7 @@ from ..render import Tex
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
 
-from . import PartContent, tr
+from . import PartContent, tr, unit
 
 NEEDS = ("kinematics", "strokes", "dynamics")
 
@@ -140,7 +140,7 @@ def angle_table(project) -> tuple[list, list]:
         per_position.append((j, math.degrees(float(project.phi[j])) % 360.0, angles, total / w1))
     header = [Tex("№"), Tex("$\\varphi_1$, \\textdegree")]
     header += [Tex(f"$\\alpha_{{{c}}}$, \\textdegree") for c in columns]
-    header.append(Tex("$M_\\text{пр}$, Н$\\cdot$м"))
+    header.append(Tex("$M_\\text{пр}$, " + unit("Н$\\cdot$м")))      # the subscript: localize_latex
     rows = []
     for j, phi, angles, M in per_position:
         cells = [angles.get(c) for c in columns]
