@@ -124,7 +124,7 @@ def _work_paragraphs(project, strings) -> list:
     if not keys:
         return []
     names = [strings.get(f"marks.intro.{k}") for k in keys]
-    parts = names[0] if len(names) == 1 else Tex(", ").join(names[:-1]) + Tex(" и~") + names[-1]
+    parts = names[0] if len(names) == 1 else Tex(", ").join(names[:-1]) + strings.get("marks.intro.and") + names[-1]
     return [strings.get("marks.intro.work").format(parts=parts), strings.get("marks.intro.layout").format()]
 
 
