@@ -5,12 +5,14 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
-	texlive-fonts-recommended latexmk fonts-liberation fonts-texgyre-math poppler-utils librecad xvfb xauth
+	texlive-fonts-recommended latexmk fonts-liberation fonts-texgyre-math poppler-utils librecad xvfb xauth \
+	fonts-osifont
 DEMO_OUT ?= demo
 
-.PHONY: demo test check generated system venv bench clean
+.PHONY: demo test check generated system venv bench clean review
 
-# Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets.
+# Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets,
+# osifont (ISO 3098 lettering) for the sheets' previews.
 system:
 	@missing=""; for p in $(DEB_PACKAGES); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || missing="$$missing $$p"; \
@@ -51,6 +53,23 @@ check: venv
 # examples/task.schema.json and the package's copy of the examples (reportgen/examples/).
 generated: venv
 	$(PY) -m reportgen.taskdoc
+
+# Every example's note pages (60 dpi) and sheet previews as PNG in one folder, for a human to look
+# through (not part of CI): $(REVIEW_OUT)/<example>-page-NN.png, <example>-sheetN-….png; the builds
+# themselves go to a fresh temporary folder that is removed afterwards.
+REVIEW_OUT ?= review
+REVIEW_DPI ?= 60
+review: system venv
+	@mkdir -p $(REVIEW_OUT); tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	for task in examples/*/task.toml; do \
+	  ex=$$(basename $$(dirname $$task)); \
+	  echo "== $$ex"; \
+	  $(VENV)/bin/reportgen build $$task -o "$$tmp/$$ex" > "$$tmp/$$ex.log" 2>&1 \
+	    || { echo "build of $$ex failed:"; tail -20 "$$tmp/$$ex.log"; continue; }; \
+	  pdftoppm -png -r $(REVIEW_DPI) "$$tmp/$$ex/report.pdf" "$(REVIEW_OUT)/$$ex-page"; \
+	  for png in "$$tmp/$$ex"/sheets/*.png; do cp "$$png" "$(REVIEW_OUT)/$$ex-$$(basename $$png)"; done; \
+	done; \
+	echo "look through $(REVIEW_OUT)/ ($$(ls $(REVIEW_OUT) | wc -l) images)"
 
 bench: venv
 	$(VENV)/bin/reportgen bench

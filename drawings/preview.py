@@ -44,6 +44,8 @@ def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.Path
     from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
     from ezdxf.addons.drawing.properties import LayoutProperties
 
+    from .style import ensure_sheet_font
+    ensure_sheet_font()
     doc = _load(source)
     w, h = paper_size(doc)
     fig = plt.figure(figsize=(w / MM_PER_INCH, h / MM_PER_INCH), dpi=dpi)

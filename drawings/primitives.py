@@ -21,8 +21,10 @@ from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
-from . import style
 from reportgen.errors import ParameterError
+from reportgen.numbers import plain, significant
+
+from . import style
 
 from reportgen.geometry import Vec2 as Vec
 #: Coordinates as the scenes pass them: a pair (or list) of floats, or a numpy array.
@@ -36,28 +38,28 @@ def format_number(value: float, decimals: int = 2, *, strip: bool = True) -> str
     """``value`` with the sheet language's decimal mark: ``format_number(0.0200) == "0,02"`` (ru/uk);
     ``-0`` becomes ``0``.
 
-    ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept.
+    ``strip`` drops trailing zeros (and a bare comma); ``decimals`` is the maximum kept. The
+    rounding is the note's (:func:`reportgen.numbers.plain`).
     """
     if not math.isfinite(value):
         raise ParameterError("value", value, "a finite number to print")
-    s = f"{value:.{decimals}f}"
-    if strip and "." in s:
-        s = s.rstrip("0").rstrip(".")
-    if s in ("-0", "-0.0", ""):
-        s = "0"
-    if s.startswith("-") and float(s) == 0.0:
-        s = s[1:]
     from .words import decimal_mark
-    return s.replace(".", decimal_mark())
+    return plain(value, decimals, strip=strip, mark=decimal_mark())
+
+
+def ratio_label(k: float) -> str:
+    """A scale as written on a drawing from ``k`` sheet mm per real mm: 0.4 → "1:2,5", 2 → "2:1"."""
+    if not (k > 0 and math.isfinite(k)):
+        raise ParameterError("scale", k, "a positive number (sheet mm per real mm)")
+    from .words import decimal_mark
+    mark = decimal_mark()
+    return f"{significant(k, 4, mark=mark)}:1" if k >= 1 else f"1:{significant(1.0 / k, 4, mark=mark)}"
 
 
 def format_significant(value: float, digits: int = 3) -> str:
-    """``value`` rounded to ``digits`` significant digits, decimal comma (``0,0123``, ``1230``)."""
-    if value == 0 or not math.isfinite(value):
-        return format_number(value, 0)
-    exponent = math.floor(math.log10(abs(value)))
-    decimals = max(digits - 1 - exponent, 0)
-    return format_number(round(value, decimals), decimals)
+    """``value`` rounded to ``digits`` significant digits, the sheet language's decimal mark (``0,0123``)."""
+    from .words import decimal_mark
+    return significant(value, digits, mark=decimal_mark())
 
 
 # ---------------------------------------------------------------------------------------------

@@ -12,7 +12,7 @@ module asks the sheet for views; the sheet packs them into the free field and ea
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Sequence
 
 from ezdxf.document import Drawing
@@ -205,6 +205,15 @@ class Sheet:
         """An A1 landscape sheet whose title block is filled from a ``Document``."""
         return cls(A1, TitleBlock.from_document(document, title=title, code=code, number=number,
                                                 count=count, scale=scale, letter=letter))
+
+    def set_scale(self, label: str) -> None:
+        """Fill «Масштаб» of the title block with the main view's scale (ГОСТ 2.104 graph 6,
+        ГОСТ 2.109: the other views' scales are written at their titles); once per sheet."""
+        if self.fields.scale or not label:
+            return
+        self.fields = replace(self.fields, scale=label)
+        tx, ty = self.title_rect.x0, self.title_rect.y0
+        self._cell_text(label, tx + 167, ty + 20, 18, 15, max_height=3.5)
 
     # -- the free field and views --------------------------------------------------------------
     @property

@@ -15,11 +15,16 @@ import ezdxf
 from ezdxf.document import Drawing
 
 #: LibreCAD chooses the font of a TEXT by the *name* of its text style; OpenGostTypeB-Regular.lff
-#: ships with librecad-data. ezdxf cannot parse that .lff, so the style's font *file* is a TTF that
-#: ezdxf (and other CAD programs) render instead: DejaVu Sans Mono has nearly the same advance as the
-#: OpenGost type B stroke font (measured: 231 vs 234 mm for a 38-character line at 7 mm).
+#: ships with librecad-data. ezdxf 1.4.5 cannot parse that .lff, so the style's font *file* is a TTF
+#: that ezdxf (the PNG previews) and other CAD programs render instead: osifont (Debian
+#: ``fonts-osifont``), an ISO 3098 CAD font — the lettering ГОСТ 2.304 follows — with Cyrillic,
+#: Ukrainian and Greek glyphs. So every place that shows a sheet letters it ГОСТ-like.
 TEXT_STYLE = "OpenGostTypeB-Regular"
-TEXT_STYLE_FONT = "DejaVuSansMono.ttf"
+TEXT_STYLE_FONT = "osifont.ttf"
+#: Text boxes are measured with DejaVu Sans Mono: its advance is nearly LibreCAD's OpenGost type B
+#: (measured: 231 vs 234 mm for a 38-character line at 7 mm) and wider than osifont's (43.5 vs
+#: 49.6 mm for «ТММ.КП 12345» at 5 mm), so a box holds its text in every renderer.
+MEASURE_FONT = "DejaVuSansMono.ttf"
 
 #: The dimension style of every sheet.
 DIM_STYLE = "ESKD"
@@ -99,7 +104,19 @@ def text_lineweight(height: float) -> int:
 @lru_cache(maxsize=64)
 def _font(height: float):
     from ezdxf.fonts import fonts
-    return fonts.make_font(TEXT_STYLE_FONT, height)
+    return fonts.make_font(MEASURE_FONT, height)
+
+
+@lru_cache(maxsize=1)
+def ensure_sheet_font() -> bool:
+    """Make ezdxf know the sheet font (its font cache may predate the font's installation): rebuild
+    the cache once if the font is missing. False when the font is not installed (ezdxf then falls
+    back to its default font; `make system` installs fonts-osifont)."""
+    from ezdxf.fonts import fonts
+    if fonts.font_manager.has_font(TEXT_STYLE_FONT):
+        return True
+    fonts.build_system_font_cache()
+    return fonts.font_manager.has_font(TEXT_STYLE_FONT)
 
 
 #: LibreCAD's OpenGost type B is proportional: measured against the TTF advance it ran 0.88–1.03
@@ -251,10 +268,17 @@ def _setup_header(doc: Drawing, paper_width: float, paper_height: float) -> None
     h["$EXTMAX"] = (float(paper_width), float(paper_height), 0.0)
 
 
+#: Characters the sheet font (osifont) lacks, written with the nearest one it has.
+FONT_SUBSTITUTES = {"\u2032": "'", "\u2033": "''"}
+
+
 def dxf_literal(text: str) -> str:
     """Text as the DXF TEXT entity must hold it to print literally: ``%%d``, ``%%c``, ``%%p`` are
     control codes (°, ⌀, ±), so every ``%`` of a ``%%`` run is written ``%%%``; ``^`` followed by a
     character is a control character (``^I`` a tab), so ``^`` is written ``^ `` (caret-space prints
-    a caret; a user's "x ^ y" keeps its spaces)."""
+    a caret; a user's "x ^ y" keeps its spaces); characters the sheet font lacks (the prime of «2′»)
+    take their :data:`FONT_SUBSTITUTES`."""
+    for ch, sub in FONT_SUBSTITUTES.items():
+        text = text.replace(ch, sub)
     text = text.replace("%%", "%%%%%%") if "%%" in text else text
     return text.replace("^", "^ ")

@@ -130,10 +130,51 @@ def introduction_paragraphs(project, left_out) -> list:
             key = "intro.output_slider" if st.output.kind == "slider" else "intro.output_rocker"
             text = Tex(text + " ") + strings.get(key).format(
                 link=st.output.link, work=Tex(num(st.working_deg)), idle=Tex(num(st.idle_deg)))
+            text = Tex(text + " ") + _machine(project, strings)
         out.append(text)
+    out += _work_paragraphs(project, strings)
     if left_out:
         out.append(strings.get("sections.left_out") + Tex(" ") + Tex("; ").join(left_out) + Tex("."))
     return out
+
+
+def _machine(project, strings):
+    """What this machine does: the motion it makes and the resistance it works against."""
+    from .render import Tex
+    from .numbers import num
+    st, mech = project.strokes, project.task.mechanism
+    slider = st.output.kind == "slider"
+    H = st.stroke * 1000.0 if slider else math.degrees(st.stroke)
+    text = strings.get("marks.intro.machine_slider" if slider else "marks.intro.machine_rocker").format(
+        crank=mech.drive.link, link=st.output.link, H=Tex(num(abs(H))))
+    for ld in mech.loads:
+        if ld.kind == "resistance" and ld.link == st.output.link:
+            if ld.force is not None:
+                text = Tex(text + " ") + strings.get("marks.intro.load_force").format(F=Tex(num(ld.force)))
+            elif ld.moment is not None:
+                text = Tex(text + " ") + strings.get("marks.intro.load_moment").format(M=Tex(num(ld.moment)))
+            break
+    return text
+
+
+def _work_paragraphs(project, strings) -> list:
+    """What the project does (by the sections the task feeds), citing the references."""
+    from .render import Tex
+    task = project.task
+    keys = []
+    if task.mechanism is not None:
+        keys += ["parts_linkage", "parts_kinetostatics"]
+        if task.dynamics is not None:
+            keys.append("parts_dynamics")
+    if task.gears is not None:
+        keys.append("parts_gears")
+    if task.planetary is not None:
+        keys.append("parts_planetary")
+    if not keys:
+        return []
+    names = [strings.get(f"marks.intro.{k}") for k in keys]
+    parts = names[0] if len(names) == 1 else Tex(", ").join(names[:-1]) + strings.get("marks.intro.and") + names[-1]
+    return [strings.get("marks.intro.work").format(parts=parts), strings.get("marks.intro.layout").format()]
 
 
 def _in_sentence(name: str) -> str:

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Mapping, Sequence
 
+from reportgen.balance import check_balance
 from reportgen.calc import CalcRecord, evaluate_displayed
 from reportgen.errors import InternalError, OptionError, ParameterError
 from reportgen.task import Document
@@ -129,6 +130,11 @@ from reportgen.task import Document
         if bad:
             raise InternalError("note", "printed formulas do not reproduce their printed results: "
                              + "; ".join(f"{r.symbol} = {r.expr}" for r in bad))
+        unbalanced = [b for b in self.symbols.balances if not check_balance(b).ok]
+        if unbalanced:
+            raise InternalError("note", "printed balance equations do not hold with their printed results: "
+                                + "; ".join(f"{b.equation_latex()} with {b.result.symbol} = "
+                                            f"{b.result.result_number_latex()}" for b in unbalanced))
         text = self.strings.localize_latex(text)
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")

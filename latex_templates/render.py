@@ -26,6 +26,7 @@ from typing import Any, Iterable, Mapping, Sequence
 import jinja2
 from markupsafe import Markup
 
+from reportgen.balance import BalanceSolution
 from reportgen.calc import CalcRecord, Var, unit_latex
 from reportgen.errors import InternalError, OptionError
 
@@ -406,10 +407,16 @@ class SymbolTracker:
     explained: set[str] = field(default_factory=set)
     unexplained: set[str] = field(default_factory=set)
     records: list[CalcRecord] = field(default_factory=list)
+    balances: list[BalanceSolution] = field(default_factory=list)
 
     def shown(self, rec: CalcRecord) -> str:
         """Note that ``rec`` is printed (the ``calc`` macro calls this); returns ''."""
         self.records.append(rec)
+        return ""
+
+    def balanced(self, sol: BalanceSolution) -> str:
+        """Note that a balance equation is printed (the ``balance`` macro calls this); returns ''."""
+        self.balances.append(sol)
         return ""
 
     def first(self, variables: Iterable[Var]) -> list[Var]:

@@ -31,10 +31,11 @@ import ast
 import math
 import re
 from dataclasses import dataclass, field, replace
-from decimal import ROUND_HALF_EVEN, Decimal
+from decimal import Decimal
 from typing import Callable, Mapping
 
 from .errors import InternalError, ParameterError
+from .numbers import decimal_text, significant_decimals
 
 __all__ = [
     "Var", "CalcRecord", "DisplayCheck", "CalcExpressionError", "record", "evaluate_displayed",
@@ -54,17 +55,15 @@ def round_significant_decimals(value: float, digits: int) -> int:
     """Number of decimals that keeps ``digits`` significant digits but never rounds an integer part.
 
     May be negative only if ``digits`` < 1; for ``|value| >= 10**digits`` it is 0.
+    (The one rule of the work: :func:`reportgen.numbers.significant_decimals`.)
     """
-    if value == 0 or not math.isfinite(value):
-        return max(digits - 1, 0)
-    exponent = math.floor(math.log10(abs(value)))
-    return max(digits - 1 - exponent, 0)
+    return significant_decimals(value, digits)
 
 
 def _decimal_text(value: float, decimals: int) -> str:
-    """``value`` rounded half-even to ``decimals`` places, trailing zeros dropped, plain '.' form."""
-    d = Decimal(repr(float(value))).quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_EVEN)
-    text = format(d, "f")
+    """``value`` rounded (:func:`reportgen.numbers.decimal_text`: on the written number, a bare 5 to even) to
+    ``decimals`` places, trailing zeros dropped, plain '.' form."""
+    text = decimal_text(value, decimals)
     if "." in text:
         text = text.rstrip("0").rstrip(".")
     if text in ("-0", ""):

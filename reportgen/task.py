@@ -27,6 +27,7 @@ class Document:
     author: str = ""
     group: str = ""
     supervisor: str = ""
+    university: str = ""          # the title page's institution (above the department)
     organization: str = ""
     city: str = ""
     year: int | None = None
@@ -175,6 +176,8 @@ class Gears:
     alpha_deg: float = 20.0
     ha: float = 1.0
     c: float = 0.25
+    eps_min: float = 1.2      # least transverse contact ratio εα (Болотовский; seed 000 accepts 1.05)
+    sa_min: float = 0.25      # least tip thickness as a share of the module: sa ≥ sa_min·m
 
 
 @dataclass(frozen=True)

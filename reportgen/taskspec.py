@@ -161,6 +161,8 @@ SECTIONS: tuple[Section, ...] = (
         Key("author", Str(), "the student", "И. И. Иванов", _dflt(Document, "author")),
         Key("group", Str(), "the student's group", "ТМ-21", _dflt(Document, "group")),
         Key("supervisor", Str(), "the teacher", "А. П. Слободюк", _dflt(Document, "supervisor")),
+        Key("university", Str(), "the institution, printed on the title page above the department",
+            "Технический университет", _dflt(Document, "university")),
         Key("organization", Str(), "department or university", "Кафедра теории механизмов и машин",
             _dflt(Document, "organization")),
         Key("city", Str(), "city on the title page", "Белгород", _dflt(Document, "city")),
@@ -329,6 +331,10 @@ SECTIONS: tuple[Section, ...] = (
             _dflt(Gears, "alpha_deg")),
         Key("ha", Number(gt=0, le=2), "addendum coefficient h*a", 1.0, _dflt(Gears, "ha")),
         Key("c", Number(ge=0, le=1), "bottom clearance coefficient c*", 0.25, _dflt(Gears, "c")),
+        Key("eps_min", Number(ge=1, le=2.5), "least transverse contact ratio εα of the quality check "
+            "(Болотовский 1.2; seed 000 accepts 1.05)", 1.05, _dflt(Gears, "eps_min")),
+        Key("sa_min", Number(ge=0, le=1, unit="a share of the module"), "least tip thickness: sa ≥ sa_min·m "
+            "(the seed uses 0.2; Болотовский 0.25…0.3 for hardened teeth)", 0.25, _dflt(Gears, "sa_min")),
     )),
     Section("planetary", "the planetary reduction gear", "", (
         Key("scheme", Word(*PLANETARY_SCHEMES), "the reducer's scheme", "two-row-ext-int"),

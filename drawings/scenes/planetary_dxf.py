@@ -31,6 +31,7 @@ def draw_reducer(sheet, stage, region) -> None:
     tri = sheet_triangle(stage)
     k = tri.length_scale
     label = tri.scale_label.replace(".", decimal_mark())
+    sheet.set_scale(label)          # «Масштаб» when the reducer is the sheet's main view (no gear pair)
     front = front_view(d, k)
     fx0, fy0, fx1, fy1 = front.bounds()
     fw, fh = fx1 - fx0 + 20, fy1 - fy0 + 24

@@ -80,5 +80,6 @@ def draw(project: Project, number: int, count: int) -> Sheet:
         k, stacked = df.sketch_fit(res.flywheel, x1 - x0, top - bottom)
         w, h = df.sketch_size(res.flywheel, k, stacked)
         cy = (top + bottom) / 2 if h <= top - bottom else top - h / 2
+        sheet.set_scale(df.scale_text(k))                              # the flywheel's sketch
         df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), k, stacked)
     return sheet

@@ -42,11 +42,76 @@ def draw(project, number: int, count: int) -> Sheet:
         pic = meshing_picture(pair, n_teeth=3)
         mesh_rect = Rect(left.x0, left.y1 - 415, left.x1, left.y1)
         scale = draw_meshing(sheet, pair, pic, mesh_rect)
-        slide_rect = Rect(left.x0, left.y0, left.x1, mesh_rect.y0 - 10)
+        sheet.set_scale(scale.label)                                   # the meshing, the main view
+        table_rect = Rect(left.x1 - PAIR_TABLE_W, left.y0, left.x1, mesh_rect.y0 - 10)
+        slide_rect = Rect(left.x0, left.y0, table_rect.x0 - 8, mesh_rect.y0 - 10)
         draw_sliding(sheet, pair, slide_rect, scale.factor)
+        draw_pair_table(sheet, pair, table_rect)
     if task.planetary is not None and task.planetary.module is not None:
         stage = project.planetary
         region = right if task.gears is not None else Rect(left.x0, left.y0, right.x1, left.y1)
         draw_reducer(sheet, stage, Rect(region.x0, sheet.title_rect.y1 + 8, region.x1, region.y1))
-    # the views have different scales, each written in its caption: «Масштаб» stays blank (ГОСТ 2.104)
+    # «Масштаб»: the main view's scale (the meshing, else the reducer); each view's scale is in its title
     return sheet
+
+
+#: Width of the gear pair's table: the name, gear 1, gear 2 (mm).
+PAIR_TABLE_COLS = (75.0, 24.0, 24.0)
+PAIR_TABLE_W = sum(PAIR_TABLE_COLS)
+PAIR_ROW_MM = 7.0
+
+
+def _word(key: str) -> str:
+    """A word of the pair's table in the sheet's language (``marks.sheet4`` of the catalogue)."""
+    from drawings.words import tr
+    return tr(f"marks.sheet4.{key}")
+
+
+def pair_rows(pair) -> list[tuple[str, str, str]]:
+    """The parameters of the pair as the sheet tabulates them, with the designations of the meshing
+    picture (r, rb, rw, ra, rf, s, p, αw): (name, gear 1, gear 2 — empty for a common one)."""
+    from drawings.primitives import format_number as f
+    g = pair.geometry
+    w = _word
+    return [
+        (w("m"), f(g.m, 3), ""),
+        (w("z"), str(g.z1), str(g.z2)),
+        (w("x"), f(g.x1, 3), f(g.x2, 3)),
+        (w("r"), f(g.d1 / 2, 3), f(g.d2 / 2, 3)),
+        (w("rb"), f(g.db1 / 2, 3), f(g.db2 / 2, 3)),
+        (w("rw"), f(g.dw1 / 2, 3), f(g.dw2 / 2, 3)),
+        (w("ra"), f(g.da1 / 2, 3), f(g.da2 / 2, 3)),
+        (w("rf"), f(g.df1 / 2, 3), f(g.df2 / 2, 3)),
+        (w("s"), f(g.s1, 3), f(g.s2, 3)),
+        (w("sa"), f(g.sa1, 3), f(g.sa2, 3)),
+        (w("p"), f(g.p, 3), ""),
+        (w("pb"), f(g.pb, 3), ""),
+        (w("alpha_w"), f(g.alpha_w_deg, 3), ""),
+        (w("aw"), f(g.aw, 3), ""),
+        (w("eps"), f(g.eps_alpha, 3), ""),
+    ]
+
+
+def draw_pair_table(sheet, pair, rect) -> None:
+    """The table of the pair's parameters (ГОСТ 2.403 asks for one on a gear drawing): a header
+    row «Параметр | 1 | 2», then :func:`pair_rows`, 7 mm rows, from the top of ``rect``."""
+    from drawings.primitives import Transform
+    view = sheet.place_view("pair table", rect, Transform(1.0, (0.0, 0.0), (rect.x0, rect.y0)))
+    rows = [(_word("param"), _word("gear1"), _word("gear2"))] + pair_rows(pair)
+    top = rect.height - 10.0
+    view.text_mm((rect.x0 + rect.width / 2, rect.y1 - 7.0), _word("title"), 5.0, "bottom-center")
+    n = len(rows)
+    xs = [0.0]
+    for w in PAIR_TABLE_COLS:
+        xs.append(xs[-1] + w)
+    for i in range(n + 1):
+        view.line((0.0, top - PAIR_ROW_MM * i), (xs[-1], top - PAIR_ROW_MM * i),
+                  "contour" if i in (0, 1, n) else "thin")
+    for x in xs:
+        view.line((x, top), (x, top - PAIR_ROW_MM * n), "contour")
+    for i, row in enumerate(rows):
+        y = top - PAIR_ROW_MM * i - PAIR_ROW_MM / 2
+        view.text((1.5, y), row[0], 2.5, "middle-left")
+        for c in (1, 2):
+            if row[c]:
+                view.text(((xs[c] + xs[c + 1]) / 2, y), row[c], 3.5 if i else 2.5, "center")

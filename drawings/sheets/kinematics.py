@@ -102,6 +102,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     i = data.analysed
     scheme = add_scheme_view(sheet, b, k, min_width=cs.SCHEME_MIN_WIDTH_MM["A3" if cs.is_a3(project) else "A1"] if control else 0.0)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
+    sheet.set_scale(scale_text)
     if control:
         cs.place_lever(sheet, project)
     # the diagrams

@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from drawings.primitives import format_number, ratio_label
 from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
-from ..words import decimal_mark, designation, tr
+from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "phi", "kinematics", "kinetostatics")
 
@@ -143,7 +144,8 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     by_key = {gr.key: gr for gr in st.groups}
     where = tr("sheets.sk203", v1=ks.position) if ks.position is not None else ""
-    note = tr("sheets.sk204", where=where, v2=format(ks.phi_deg, ".2f").replace(".", decimal_mark()))
+    note = tr("sheets.sk204", where=where, v2=format_number(ks.phi_deg, 2, strip=False))
+    sheet.set_scale(ratio_label(1.0 / (1000.0 * g.length_scale)))       # the groups' schemes at μl
     pv = sheet.add_view("position", style.text_width(note, 5.0) + 4.0, 9.0, preferred="top-left")
     pv.text_mm((pv.rect.x0 + 2.0, pv.rect.y0 + 2.0), note, 5.0)
 

@@ -11,6 +11,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import FuncFormatter  # noqa: E402
 
+from reportgen.numbers import significant  # noqa: E402
+
 STYLE: dict[Any, Any] = {
     # a list: matplotlib falls back to the next family for a glyph the first lacks (₁ in "О₁")
     "font.family": ["Liberation Serif", "DejaVu Serif"],
@@ -53,8 +55,7 @@ def math_name(name: str) -> str:
 def comma(x: float, _pos=None, mark: str | None = None) -> str:
     """Tick label with the language's decimal mark (comma for ru/uk) and a true minus."""
     from ..parts import decimal_mark
-    s = f"{x:.6g}".replace(".", mark or decimal_mark()).replace("-", "\u2212")
-    return s
+    return significant(x, 6, mark=mark or decimal_mark()).replace("-", "\u2212")
 
 
 COMMA = FuncFormatter(comma)

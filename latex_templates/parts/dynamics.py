@@ -19,9 +19,10 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.numbers import ANGLE_DECIMALS, clean_array
 from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
 
-from . import PartContent, tr
+from . import PartContent, tr, unit
 
 NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics")
 
@@ -66,23 +67,28 @@ def _point_velocity(kin, k: int, point: np.ndarray, i: int) -> np.ndarray:
     return qd[i, k, :2] + qd[i, k, 2] * np.array([-r[1], r[0]])
 
 
-def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
+def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str], list[str]]:
     """P = F·V·cos α of every force and M·ω of every couple acting in position i (inertia excluded,
     as in M_red); also the LaTeX symbols of the loads that act but do no work there (a force
-    perpendicular to its point's velocity)."""
+    perpendicular to its point's velocity), and of those whose point does not move."""
     from reportgen.loads import external_loads
 
     kin = project.kinematics
     loads = external_loads(project.task.mechanism, project.linkage, project.model, kin, project.strokes)
     out: list[PowerTerm] = []
     idle: list[str] = []
+    still: list[str] = []
+    v_scale = max([float(np.hypot(*np.asarray(m.vel)[i])) for m in kin.points.values()] + [0.0])
     for j, f in enumerate(loads.forces):
         vec = np.asarray(f.vector)[i]
         F = float(np.hypot(*vec))
         if F <= ZERO_FORCE:
             continue
-        v = _point_velocity(kin, f.link, f.point, i)
+        v = clean_array(_point_velocity(kin, f.link, f.point, i), v_scale)
         V = float(np.hypot(*v))
+        if V == 0.0:
+            still.append(_sub(f.name))    # its point does not move (a centre of mass on a fixed axis)
+            continue
         alpha = math.degrees(math.atan2(abs(vec[0] * v[1] - vec[1] * v[0]), float(vec @ v))) if V > 0 else 90.0
         if abs(float(vec @ v)) <= PERPENDICULAR * F * max(V, ZERO_FORCE):
             idle.append(_sub(f.name))     # perpendicular to its velocity (a slider's weight): no power
@@ -95,7 +101,8 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
         Fv = Var(f"F{j}", sym, F, "Н", kind)
         Vv = Var(f"V{j}", vsym, V, "м/с", tr("dynamics.m41", where=where) if not where.startswith("S")
                  else tr("dynamics.m42", v1=f.link))
-        av = Var(f"a{j}", rf"\alpha_{{{sym}}}", alpha, "°",
+        # the angle as the course measures it, to 0,01° (the power follows from the printed angle)
+        av = Var(f"a{j}", rf"\alpha_{{{sym}}}", round(alpha, ANGLE_DECIMALS), "°",
                  Tex(tr("dynamics.m43", sym=sym, vsym=vsym)))
         rec = record(f"P_{{{sym}}}", f"F{j} * V{j} * cos(radians(a{j}))", "Вт", Fv, Vv, av,
                      meaning=Tex(tr("dynamics.m57", sym=sym)))
@@ -110,7 +117,36 @@ def power_terms(project, i: int) -> tuple[list[PowerTerm], list[str]]:
         wv = Var(f"w{j}", rf"\omega_{{{mo.link}}}", w, "рад/с", tr("dynamics.m15", v1=mo.link))
         rec = record(f"P_{{{sym}}}", f"M{j} * w{j}", "Вт", Mv, wv, meaning=Tex(tr("dynamics.m58", sym=sym)))
         out.append(PowerTerm(mo.name, rec))
-    return out, idle
+    return out, idle, still
+
+
+def angle_table(project) -> tuple[list, list]:
+    """The force–velocity angles α_i of every load in every position of the analysis (as the course
+    tabulates them for M_пр), with M_пр: the header (LaTeX) and the rows. A load whose point does not
+    move or that does not act in a position shows «---»; one perpendicular to its velocity 90°."""
+    columns: list[str] = []
+    per_position = []
+    w1 = abs(float(project.linkage.omega))
+    for j in range(len(project.phi)):
+        terms, idle, still = power_terms(project, j)
+        angles: dict[str, float | None] = {}
+        for t in terms:
+            alpha = next((v for v in t.record.variables if v.name.startswith("a")), None)
+            if alpha is not None:                         # a force (a couple has no angle)
+                angles[_sub(t.name)] = alpha.value
+        angles.update({x: 90.0 for x in idle})
+        angles.update({x: None for x in still})
+        columns += [x for x in angles if x not in columns]
+        total = sum(t.record.value for t in terms)
+        per_position.append((j, math.degrees(float(project.phi[j])) % 360.0, angles, total / w1))
+    header = [Tex("№"), Tex("$\\varphi_1$, \\textdegree")]
+    header += [Tex(f"$\\alpha_{{{c}}}$, \\textdegree") for c in columns]
+    header.append(Tex("$M_\\text{пр}$, " + unit("Н$\\cdot$м")))      # the subscript: localize_latex
+    rows = []
+    for j, phi, angles, M in per_position:
+        cells = [angles.get(c) for c in columns]
+        rows.append([j, phi] + [Tex("---") if a is None else a for a in cells] + [M])
+    return header, rows
 
 
 def moment_records(terms: list[PowerTerm], omega1: Var) -> tuple[CalcRecord, CalcRecord]:
@@ -345,7 +381,7 @@ def content(project) -> PartContent:
     w1 = abs(float(project.linkage.omega))
     omega = Var("omega1", r"\omega_1", w1, "рад/с", tr("dynamics.m12"))
     delta = Var("delta", r"\delta", res.delta_target, "", tr("dynamics.m13"))
-    terms, idle = power_terms(project, i)
+    terms, idle, still = power_terms(project, i)
     P_sum, M_rec = moment_records(terms, omega)
     shares, J_rec = inertia_records(project, i, omega)
     positions = int(round(2 * math.pi / float(_first_step(res.graphical.theta))))
@@ -368,7 +404,8 @@ def content(project) -> PartContent:
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
         "i": _position_ref(project, i, i_dyn, short=True), "i_ref": _position_ref(project, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
-        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
+        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle],
+        "still": [Tex(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(not x.isdigit() and x not in (tr("dynamics.m48"), tr("dynamics.m49")) for x in labels),
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
@@ -378,6 +415,7 @@ def content(project) -> PartContent:
         "index_K": labels[res.graphical.index_K], "index_L": labels[res.graphical.index_L],
         "theta_K": math.degrees(res.exact.theta_K), "theta_L": math.degrees(res.exact.theta_L),
         "J_zero": res.exact.J_fly <= 0,
+        "angles": angle_table(project),
     }
     strings = Strings(project.task.document.language or "ru")
     concl = [strings.get("findings_dynamics.flywheel").format(

@@ -197,12 +197,15 @@ def content(project) -> PartContent:
         auto = {"equal": choice.rule == RULE_EQUAL_SLIDING, "x1_exact": choice.x1_exact,
                 "x2_exact": choice.x2_exact, "lambda1_a": choice.lambda1_a, "lambda2_b": choice.lambda2_b}
     failed = [c for c in checks if not c.passed]
-    conclusions = [_conclusion(pair, failed)]
+    alt = _alternative(pair) if failed else None
+    if alt is not None:
+        figures["gear_pair_contour"] = blocking_contour_figure(alt["pair"])
+    conclusions = [_conclusion(pair, failed, alt, project.task.document.language or "ru")]
     ctx = {
         "g": g, "pair": pair, "r": r, "checks": {c.name: c for c in checks}, "failed": failed,
         "auto": auto, "pic": pic, "scale": scale, "ab_read": ab_read, "ab_drawn": ab_drawn,
         "eps_drawn": eps_drawn, "eps_diff": eps_diff, "k_var": k_var,
-        "sliding_rows": rows, "sl": sl, "zones": _zones(pic),
+        "sliding_rows": rows, "sl": sl, "zones": _zones(pic), "alt": alt,
     }
     return PartContent("sections/gear_pair.tex.j2", ctx, figures, tuple(conclusions))
 
@@ -228,7 +231,20 @@ def _zones(pic) -> dict:
     return {"double": double, "single": single, "gap": gap}
 
 
-def _conclusion(pair, failed) -> str:
+def _alternative(pair) -> dict | None:
+    """The passing shift pair of the blocking contour when the given one fails (with its numbers)."""
+    from reportgen.gears.pair import passing_alternative
+    alt = passing_alternative(pair)
+    if alt is None:
+        return {"pair": None}
+    a = alt.geometry
+    return {"pair": alt, "x1": a.x1, "x2": a.x2, "aw": a.aw, "eps": a.eps_alpha, "sa1": a.sa1, "sa2": a.sa2,
+            "eps_min": alt.eps_min, "sa_min": alt.sa_min_factor * a.m,
+            "rho": [(alt.check(f"interference{i}").value, alt.check(f"interference{i}").limit) for i in (1, 2)],
+            "xmin": [alt.check(f"undercut{i}").limit for i in (1, 2)]}
+
+
+def _conclusion(pair, failed, alt=None, language: str = "ru") -> str:
     """A sentence for the conclusions (trusted LaTeX, numbers with a decimal comma)."""
     from ..render import Tex
     from latex_templates.numbers import mnum
@@ -242,6 +258,15 @@ def _conclusion(pair, failed) -> str:
              "interference2": tr("gears.m28")}
     if failed:
         text += tr("gears.m47") + "; ".join(names[c.name] for c in failed) + "."
+        if alt is not None and alt["pair"] is not None:
+            text += " " + _strings(language).get("marks.gear_alt_conclusion").format(
+                x1=Tex(mnum(alt["x1"])), x2=Tex(mnum(alt["x2"])), aw=Tex(mnum(alt["aw"], places(alt["aw"], 3))),
+                eps=Tex(mnum(alt["eps"], places(alt["eps"], 3))))
     else:
         text += tr("gears.m29")
     return Tex(text)
+
+
+def _strings(language: str):
+    from latex_templates.render import Strings
+    return Strings(language)

@@ -110,7 +110,8 @@ def content(project) -> PartContent:
         K = record("K", "phi_w / phi_i", "", wk, ik, meaning=tr("kinematics.m20"))
         stroke_ctx = {"K": K, "working": strokes.working_deg, "idle": strokes.idle_deg, "H": strokes.stroke,
                       "kind": strokes.output.kind, "link": strokes.output.link, "point": strokes.output.point,
-                      "start": math.degrees(strokes.phi_start) % 360, "end": math.degrees(strokes.phi_end) % 360}
+                      "start": math.degrees(strokes.phi_start) % 360, "end": math.degrees(strokes.phi_end) % 360,
+                      "construction": _construction(project, strokes)}
     # positions table
     from reportgen.kinematics.extremes import output_coordinate
     out_rows = []
@@ -265,3 +266,28 @@ def content(project) -> PartContent:
 
 def _translates(lk, k: int) -> bool:
     return any(s.link == k and s.guide == 0 for s in lk.slides)
+
+
+def _construction(project, strokes):
+    """The course's construction of the extreme positions, as sentences with their numbers (or None)."""
+    from reportgen.kinematics.extremes import extreme_construction
+    from ..numbers import num
+    from ..render import Strings, Tex
+    c = extreme_construction(project.model, strokes)
+    if c is None:
+        return None
+    strings = Strings(project.task.document.language or "ru")
+    mu = 1000.0                    # lengths in mm, as on the plan of positions
+    if c.kind == "in-line":
+        text = strings.get("marks.extremes.in_line").format(O=c.axis, A=c.pin, B=c.far, k=c.coupler)
+        for phi, how, ob in c.positions:
+            key = "marks.extremes.extended" if how == "extended" else "marks.extremes.folded"
+            text = Tex(text + " ") + strings.get(key).format(
+                O=c.axis, A=c.pin, B=c.far, AB=Tex(num(c.coupler_length * mu)), OA=Tex(num(c.crank_length * mu)),
+                OB=Tex(num(ob * mu)), phi=Tex(num(phi, 5)))
+        return text
+    text = strings.get("marks.extremes.perpendicular").format(O=c.axis, A=c.pin, B=c.far, k=c.coupler,
+                                                               OB=Tex(num(c.positions[0][2] * mu)),
+                                                               OA=Tex(num(c.crank_length * mu)))
+    phis = [Tex(num(phi, 5)) for phi, _, _ in c.positions]
+    return Tex(text + " ") + strings.get("marks.extremes.perpendicular_at").format(phi1=phis[0], phi2=phis[1])

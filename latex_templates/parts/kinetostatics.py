@@ -12,18 +12,18 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
-from typing import Any
 
 import numpy as np
 from ..render import Tex
 
+from reportgen.balance import Balance, BalanceTerm
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.errors import InternalError
+from reportgen.numbers import clean
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
 
-from . import PartContent, tr
+from . import PartContent, active, tr
 
 NEEDS = ("linkage", "structure", "kinetostatics", "resistance", "balancing_cycle", "balancing_cycle_dense")
 
@@ -64,46 +64,6 @@ def _canon(name: str) -> str | None:
 def _check(rec: CalcRecord, expected: float, what: str) -> None:
     if not math.isclose(rec.value, expected, rel_tol=1e-9, abs_tol=1e-9 * max(1.0, abs(expected))):
         raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
-
-
-def _sum_records(terms: list[tuple[float, Var, Var]], prefix: str, extra: Sequence[tuple[str, dict]] = ()
-                 ) -> tuple[list[CalcRecord], list[tuple[str, dict]]]:
-    """Σ sign·F·h over ``terms`` (sign, force Var, arm Var) + ``extra`` (expression over X and its
-    operands: {"X": Var, other names: Var}); split into partial sums of :data:`TERMS_PER_RECORD` terms
-    when longer. Returns the partial records and the (expression, operands) list of the final formula."""
-    items: list[tuple[str, dict]] = []
-    for n, (s, F, h) in enumerate(terms):
-        fn, hn = f"F{n}", f"h{n}"
-        items.append((("- " if s < 0 else "+ ") + f"{fn} * {hn}", {fn: F, hn: h}))
-    for n, (expr, ops) in enumerate(extra):
-        items.append((expr.replace("X", f"X{n}"), {(f"X{n}" if k == "X" else k): v for k, v in ops.items()}))
-    if len(items) <= TERMS_PER_RECORD:
-        return [], items
-    parts, out = [], []
-    for c in range(0, len(items), TERMS_PER_RECORD):
-        chunk = items[c:c + TERMS_PER_RECORD]
-        expr = " ".join(e for e, _ in chunk).lstrip("+ ").strip()
-        named = {k: v for _, d in chunk for k, v in d.items()}
-        rec = record(f"\\Sigma^{{({prefix})}}_{{{c // TERMS_PER_RECORD + 1}}}", expr, "Н·мм", **named,
-                     meaning=tr("kinetostatics.m30"))
-        parts.append(rec)
-        out.append((f"+ S{c // TERMS_PER_RECORD}", {f"S{c // TERMS_PER_RECORD}": rec}))
-    return parts, out
-
-
-def _final(symbol: str, items, denominator: tuple[str, Var], unit: str, negate: bool, meaning) -> CalcRecord:
-    expr = " ".join(e for e, _ in items).strip()
-    if expr.startswith("+ "):
-        expr = expr[2:]
-    if not expr:
-        expr = "0"
-    named: dict[str, Any] = {k: v for _, d in items for k, v in d.items()}
-    dn, dv = denominator
-    full = f"-({expr}) / {dn}" if negate else f"({expr}) / {dn}"
-    if expr == "0":
-        full = f"0 * {dn}"
-    denom: dict[str, Any] = {dn: dv}
-    return record(symbol, full, unit, **named, **denom, meaning=meaning)
 
 
 def _arm_terms(terms, read_mags: dict[str, float], centre: str, counter: _Counter, arms_shown: list
@@ -147,11 +107,16 @@ def _meaning(name: str, read: bool) -> Tex:
     return Tex(tr("kinetostatics.m02", s=Tex(s)))
 
 
-def _couples(extra_terms, mu_l: Var, link: int) -> list[tuple[str, dict]]:
+def _balance_terms(terms: list[tuple[float, Var, Var]]) -> tuple[BalanceTerm, ...]:
+    """(sign, force, arm) triples as the known terms of a balance."""
+    return tuple(BalanceTerm(1 if sgn > 0 else -1, F, h) for sgn, F, h in terms)
+
+
+def _couples(extra_terms, mu_l: Var, link: int) -> tuple[BalanceTerm, ...]:
     """Couples enter a sum of moments in N·mm as M/μl."""
-    return [("+ X / mu_l" if t.moment >= 0 else "- X / mu_l",
-             {"X": Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", tr("kinetostatics.m42", link=link)),
-              "mu_l": mu_l}) for t in extra_terms]
+    return tuple(BalanceTerm(1 if t.moment >= 0 else -1,
+                             Var("M", f"M_{{{link}}}", abs(t.moment), "Н·м", tr("kinetostatics.m42", link=link)),
+                             divisor=mu_l) for t in extra_terms)
 
 
 def _polygon_rows(polygon) -> list[list]:
@@ -229,14 +194,18 @@ def content(project) -> PartContent:
             P = _pair_letter(r, sp, gg.key)
             l = Var("l", f"{P}{sp.centre}", sp.length_mm_measured, "мм",
                     tr("kinetostatics.m35", P=P, v2=sp.centre))
-            parts, items = _sum_records(terms, f"{sp.link}", _couples(extra, mu_l, sp.link))
-            rec = _final(f"R^{{\\tau}}_{{{sp.name[1:]}}}", items, ("l", l), "Н", False,
-                         Tex(tr("kinetostatics.m43", v1=Tex(sym(sp.name)))))
+            bal = Balance(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}}", f"R^{{\\tau}}_{{{sp.name[1:]}}}", "Н",
+                          -1, l, _balance_terms(terms) + _couples(extra, mu_l, sp.link),
+                          Tex(tr("kinetostatics.m43", v1=Tex(sym(sp.name)))),
+                          partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"), per_line=TERMS_PER_RECORD)
+            sol = bal.solve()
+            parts, rec = list(sol.parts), sol.result
             _check(rec, sp.tau_measured, f"R^τ {sp.name}")
             splits.append({"name": sp.name, "link": sp.link, "centre": sp.centre, "pair": P, "parts": parts,
                            "rec": rec, "terms": terms, "through": [Tex(f"${sym(x)}$") for x in through],
                            "negative": rec.value < 0, "exact": sp.tau, "dev": sp.deviation_percent,
-                           "moment_eq": _moment_equation(sp, P, terms, extra)})
+                           "balance": sol})
+        slot = _slot_step(ks, grp, gg, counter, mu_l, read_mags) if gg.method == "exact-read" else None
         reads = _read_records(gg.polygon, mu_f)
         for v in list(gg.polygon.vectors) + list(gg.polygon.extra):
             c = _canon(v.name)
@@ -246,7 +215,7 @@ def content(project) -> PartContent:
                            "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
                            "rows": _polygon_rows(gg.polygon), "reads": reads,
                            "unknown": [Tex(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
-                           "mu_tr": ks.transmission_deg.get(gg.key)})
+                           "mu_tr": ks.transmission_deg.get(gg.key), "slot": slot})
     if control:
         lever_ctx = _lever(project, ks, counter, figures)
         crank_ctx, comparison, cycle = None, None, None
@@ -263,7 +232,8 @@ def content(project) -> PartContent:
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
            "control": control, "power": power,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
-           "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky, "disc": ks.discrepancy_percent,
+           "M": ks.balancing_moment, "Mz": ks.balancing_moment_zhukovsky,
+           "disc": clean(ks.discrepancy_percent, 100.0),
            "first_group": groups_ctx[0]["label"] if groups_ctx else "",
            "trans": [{"label": by_key[k].label, "mu": v} for k, v in ks.transmission_deg.items()],
            "width": {name: _width(fig) for name, fig in figures.items()}}
@@ -302,14 +272,66 @@ def _pair_letter(r, sp, key: str) -> str:
     return next(p.joint for p in r.pairs if p.group == key and p.external and sp.link in (p.lo, p.hi))
 
 
-def _moment_equation(sp, P: str, terms, extra) -> Tex:
-    """ΣM_Q(link) = −R^τ·l + Σ ±F·h = 0 in symbols."""
-    body = [f"-R^{{\\tau}}_{{{sp.name[1:]}}} \\cdot {P}{sp.centre}"]
-    for s, F, h in terms:
-        body.append(("+ " if s > 0 else "- ") + f"{F.latex} \\cdot {h.latex}")
-    for t in extra:
-        body.append(("+ " if t.moment >= 0 else "- ") + f"M_{{{sp.link}}}")
-    return Tex(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}} = " + " ".join(body) + " = 0")
+def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> dict | None:
+    """The course's graphical step for a group of a block sliding in a slotted link pivoted at the
+    frame (RPR): the block's reaction on the slotted link is perpendicular to the slot (no friction)
+    and acts at the block's point, so ΣM_C(slotted link) = 0 gives it; the polygon follows."""
+    from reportgen.kinetostatics.graphical import measure
+    r = ks.reactions
+    frame = [p for p in r.pairs if p.group == gg.key and p.external and 0 in (p.lo, p.hi) and p.kind == "R"]
+    inner = [p for p in r.pairs if p.group == gg.key and not p.external and p.kind == "P"]
+    if len(frame) != 1 or len(inner) != 1 or len(grp.links) != 2:
+        return None
+    k3 = frame[0].other(0)
+    P = inner[0]
+    if k3 not in (P.lo, P.hi):
+        return None
+    k2 = P.other(k3)
+    C, A, n = frame[0].point[0], P.point[0], np.asarray(P.normal[0], float)
+    step = ks.graphical.arm_reading_mm
+    mu = mu_l.value
+    repl = {x.link: x for x in ks.graphical.inertia}
+    arrows: list = []
+    couples: list = []
+    _loads_on(ks, (k3,), repl, arrows, couples)
+    own = {p.name for p in r.pairs if p.group == gg.key}
+    for p in r.pairs_of(k3):                                # reactions found on the previous steps
+        j = p.other(k3)
+        if p.name not in own and j not in grp.links:
+            arrows.append({"point": p.point[0], "vector": p.on(k3)[0], "name": pair_name(j, k3), "read": True})
+    terms, arms, through = [], [], []
+    for a in arrows:
+        F = np.asarray(a["vector"], float)
+        c = _canon(a["name"]) if a.get("read") else None
+        mag = read_mags.get(c, float(np.hypot(*F))) if c else float(np.hypot(*F))
+        rr = np.asarray(a["point"], float) - C
+        mom = float(rr[0] * F[1] - rr[1] * F[0])
+        arm_mm = measure(abs(mom) / mag / mu, step) if mag > 0 else 0.0
+        if arm_mm == 0.0:
+            through.append(Tex(f"${sym(a['name'])}$"))
+            continue
+        nmb = counter.next()
+        s = sym(a["name"])
+        terms.append(BalanceTerm(1 if mom > 0 else -1, Var("F", s, mag, "Н", _meaning(a["name"], bool(c))),
+                                 Var("h", f"h_{{{nmb}}}", arm_mm, "мм",
+                                     Tex(active().get("marks.slot.arm").format(s=Tex(s), C=frame[0].joint)))))
+        arms.append(nmb)
+    extra = tuple(BalanceTerm(1 if cp["value"] >= 0 else -1,
+                              Var("M", sym(cp["name"]), abs(cp["value"]), "Н·м",
+                                  active().get("marks.slot.couple").format(k=k3)), divisor=mu_l) for cp in couples)
+    lever = float((A - C)[0] * n[1] - (A - C)[1] * n[0])    # moment of a unit force along n at A about C
+    d = n if lever > 0 else -n                              # the positive sense: a counter-clockwise moment
+    arm = Var("l", f"{frame[0].joint}{P.joint}", measure(abs(lever) / mu, step), "мм",
+              active().get("marks.slot.reaction_arm").format(C=frame[0].joint, A=P.joint))
+    name = pair_name(k2, k3)
+    sol = Balance(f"\\sum M_{{{frame[0].joint}}}^{{({k3})}}", sym(name), "Н", 1, arm,
+                  tuple(terms) + extra, Tex(active().get("marks.slot.reaction").format(R=Tex(sym(name)))),
+                  partial=f"\\Sigma^{{({k3})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  per_line=TERMS_PER_RECORD).solve()
+    exact = float(np.asarray(P.on(k3)[0]) @ d)
+    return {"balance": sol, "parts": list(sol.parts), "rec": sol.result, "exact": exact, "name": Tex(f"${sym(name)}$"),
+            "slot_link": k3, "block": k2, "C": frame[0].joint, "A": P.joint, "through": through,
+            "negative": sol.value < 0}
 
 
 def _loads_section(project, ks, mu_l: Var) -> dict:
@@ -324,10 +346,15 @@ def _loads_section(project, ks, mu_l: Var) -> dict:
         if b.mass <= 0 and b.inertia <= 0:
             continue
         m = Var("m", f"m_{{{k}}}", b.mass, "кг", tr("kinetostatics.m24", k=k))
-        ent: dict = {"k": k, "G": None, "F": None, "M": None, "h": None, "h_mm": None, "repl": None}
+        ent: dict = {"k": k, "G": None, "F": None, "M": None, "h": None, "h_mm": None, "repl": None,
+                     "F_zero": False}
         a_s = float(np.hypot(*np.asarray(kin.coms[k].acc)[0]))
         eps = abs(float(np.asarray(kin.links[k].epsilon)[0]))
-        if b.mass > 0:
+        if b.mass > 0 and a_s == 0.0:          # a centre of mass on a fixed axis (kinematics: exact 0)
+            if lk.g:
+                ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=tr("kinetostatics.m57", k=k))
+            ent["F_zero"] = True
+        elif b.mass > 0:
             if lk.g:
                 ent["G"] = record(f"G_{{{k}}}", "m * g", "Н", m, gvar, meaning=tr("kinetostatics.m57", k=k))
             aS = Var("a", f"a_{{S{k}}}", a_s, "м/с²", tr("kinetostatics.m36", k=k))
@@ -462,19 +489,20 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
     OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
              tr("kinetostatics.m05", v1=r.crank_axis, v2=r.crank_pin))
-    parts, items = _sum_records(terms, "1", _couples(extra, mu_l, d))
-    F = _final("F_{\\text{ур}}", items, ("l", OA), "Н", True, tr("kinetostatics.m39")
-               + r.crank_pin + tr("kinetostatics.m26"))
+    # F_ур at the pin along the crank turned +90°: its moment about the axis is +F_ур·OA
+    sol = Balance(f"\\sum M_{{{r.crank_axis}}}", "F_{\\text{ур}}", "Н", 1, OA,
+                  _balance_terms(terms) + _couples(extra, mu_l, d),
+                  tr("kinetostatics.m39") + r.crank_pin + tr("kinetostatics.m26"),
+                  partial="\\Sigma^{(1)}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"), per_line=TERMS_PER_RECORD).solve()
+    parts, F = list(sol.parts), sol.result
     _check(F, c.balancing_force_measured, "F_ур (groups)")
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
                "м", tr("kinetostatics.m07", v1=r.crank_axis, v2=r.crank_pin))
     M = record("M_{\\text{ур}}", "F * l_OA", "Н·м", l_oa, F=F, meaning=tr("kinetostatics.m27"))
     _check(M, c.balancing_moment_measured, "M_ур (groups)")
     mu_f = Var("mu_F", r"\mu_F", c.polygon.scale, "Н/мм", tr("kinetostatics.m09"))
-    eq = [f"-F_{{\\text{{ур}}}} \\cdot {OA.latex}"] + [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}"
-                                                      for s, Fv, h in terms]
     return {"F": F, "M": M, "parts": parts, "through": [Tex(f"${sym(x)}$") for x in through],
-            "moment_eq": Tex(f"\\sum M_{{{r.crank_axis}}} = " + " ".join(eq) + " = 0"),
+            "balance": sol,
             "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
@@ -501,19 +529,21 @@ def _lever(project, ks, counter, figures) -> dict:
             Fv = Var("F", s, t.magnitude, "Н", _meaning(t.name, False))
             h = Var("h", f"h_{{{n}}}", abs(t.arm_mm_measured), "мм",
                     Tex(tr("kinetostatics.m56", s=Tex(s))))
-            sign = -math.copysign(1.0, t.arm_mm_measured) * (1.0 if lev.omega1 >= 0 else -1.0)
-            terms.append((sign, Fv, h))
+            terms.append((math.copysign(1.0, t.arm_mm_measured), Fv, h))
             ent["h"] = f"h_{{{n}}}"
         loads.append(ent)
     mu = Var("mu_v", r"\mu_v", mu_v, "(м/с)/мм", tr("kinetostatics.m10"))
-    extra = [("- X / mu_v" if (p >= 0) == (lev.omega1 >= 0) else "+ X / mu_v",
-              {"X": Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Tex(tr("kinetostatics.m60", v1=Tex(sym(name))))), "mu_v": mu})
-             for name, p in L.direct if p != 0.0]
-    parts, items = _sum_records(terms, "\\text{Ж}", extra)
+    # moments about the pole, counter-clockwise positive; the direct couples enter as P/μv
+    extra = tuple(BalanceTerm(1 if p >= 0 else -1,
+                              Var("P", f"P_{{{sym(name)}}}", abs(p), "Вт", Tex(tr("kinetostatics.m60", v1=Tex(sym(name))))),
+                              divisor=mu) for name, p in L.direct if p != 0.0)
     pa = Var("pa", f"p{r.crank_pin.lower()}", L.pa_mm_measured, "мм",
              tr("kinetostatics.m11", v1=r.crank_pin))
-    F = _final("F_{\\text{ур}}^{\\text{Ж}}", items, ("pa", pa), "Н", False,
-               tr("kinetostatics.m12"))
+    # F_ур at the image of the pin: its moment about p is +F·pa when the crank turns counter-clockwise
+    sol = Balance("\\sum M_{p}", "F_{\\text{ур}}^{\\text{Ж}}", "Н", 1 if lev.omega1 >= 0 else -1, pa,
+                  _balance_terms(terms) + extra, tr("kinetostatics.m12"),
+                  partial="\\Sigma^{(\\text{Ж})}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"), per_line=TERMS_PER_RECORD).solve()
+    parts, F = list(sol.parts), sol.result
     _check(F, L.balancing_force_measured, "F_ур (lever)")
     fp = next(p for p in r.pairs if p.group == str(r.crank))
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
@@ -523,11 +553,7 @@ def _lever(project, ks, counter, figures) -> dict:
     _check(M, L.balancing_moment_measured, "M_ур (lever)")
     arm_names = {ld["name"]: ld["h"] for ld in loads if ld["h"]}
     figures["kst_lever"] = scene_figure(lever_scene(ks, lk, arm_names))
-    eq = [("+ " if s > 0 else "- ") + f"{Fv.latex} \\cdot {h.latex}" for s, Fv, h in terms]
-    sign_pa = "-" if lev.omega1 >= 0 else "+"
-    return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(),
-            "moment_eq": Tex(f"\\sum M_{{p}} = {sign_pa}F_{{\\text{{ур}}}}^{{\\text{{Ж}}}} \\cdot {pa.latex} "
-                                + " ".join(eq) + " = 0"),
+    return {"F": F, "M": M, "parts": parts, "mu_v": mu, "pin": r.crank_pin.lower(), "balance": sol,
             "n_zero": sum(1 for t in L.terms if t.arm_mm_measured == 0.0 and t.magnitude > 0),
             "direct": bool(extra)}
 
@@ -552,7 +578,7 @@ def _cycle(project, ks, figures) -> dict:
     rows = []
     for j in range(len(at.phi)):
         mg, mz = float(at.groups[j]), float(at.zhukovsky[j])
-        dev = 100.0 * (mg - mz) / mz if mz != 0 else 0.0
+        dev = clean(100.0 * (mg - mz) / mz, 100.0) if mz != 0 else 0.0
         rows.append([j, math.degrees(float(at.phi[j])) % 360.0, mg, mz, Tex(f"${_sci(dev)}$")])
     return {"rows": rows, "max": float(np.max(dense.groups)), "min": float(np.min(dense.groups)),
             "mean": float(np.mean(np.asarray(dense.groups)[:-1]))}

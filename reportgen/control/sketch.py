@@ -13,7 +13,7 @@ from typing import Mapping
 from ..errors import ReportgenInputError
 from .tables import Scheme, Variant, evaluate
 
-Point = tuple[float, float]
+from ..geometry import Vec2 as Point
 
 
 class VariantGeometryError(ReportgenInputError):

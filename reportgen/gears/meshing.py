@@ -22,6 +22,7 @@ from typing import Mapping
 import numpy as np
 from shapely.geometry import LineString
 
+from ..numbers import plain
 from .profile import DEFAULT_POSITIONS, half_thickness_angle, pair_teeth
 from .. import gost_scales
 from ..geometry import readonly as _ro, vec2
@@ -183,11 +184,11 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
             circles.append(Circle(f"{name}{gear}", gear, kind, centre, float(dia / 2)))
     labels = tuple(Label(k, points[k]) for k in ("O1", "O2", "P", "N1", "N2", "a", "b"))
     dims = (
-        Dimension("aw", points["O1"], points["O2"], float(g.aw), f"aw = {g.aw:.3f}"),
-        Dimension("ab", points["a"], points["b"], ab, f"ab = {ab:.3f}"),
+        Dimension("aw", points["O1"], points["O2"], float(g.aw), f"aw = {plain(g.aw, 3)}"),
+        Dimension("ab", points["a"], points["b"], ab, f"ab = {plain(ab, 3)}"),
         Dimension("pb", vec2(p), vec2(p + g.pb * u), float(g.pb),
-                  f"pb = {g.pb:.3f}"),
-        Dimension("N1N2", points["N1"], points["N2"], float(g.g), f"N1N2 = {g.g:.3f}"),
+                  f"pb = {plain(g.pb, 3)}"),
+        Dimension("N1N2", points["N1"], points["N2"], float(g.g), f"N1N2 = {plain(g.g, 3)}"),
     )
     allpts = np.vstack(teeth1 + teeth2 + tuple(np.array([v]) for v in pts.values() if v is not o2 and v is not o1))
     margin = g.m

@@ -55,7 +55,7 @@ def solve_gear_pair(z1: int, z2: int, module: float, x1: Shift = 0.0, x2: Shift 
     contour, :mod:`reportgen.gears.shifts`; rounded to ``rounding``). Bad input raises
     :class:`reportgen.errors.TaskError` with the key ``gears.<name>``; failed checks do not raise."""
     if not (sa_min_factor >= 0 and math.isfinite(sa_min_factor)):
-        raise TaskError("gears.sa_min_factor", f"value {sa_min_factor!r} is out of range", "a number ≥ 0")
+        raise TaskError("gears.sa_min", f"value {sa_min_factor!r} is out of range", "a number ≥ 0")
     if not (eps_min > 0 and math.isfinite(eps_min)):
         raise TaskError("gears.eps_min", f"value {eps_min!r} is out of range", "a number > 0")
     choice = None
@@ -79,7 +79,27 @@ def solve_gear_pair(z1: int, z2: int, module: float, x1: Shift = 0.0, x2: Shift 
 
 
 def from_task(gears, **options) -> GearPair:
-    """Solve the ``[gears]`` section of a task (:class:`reportgen.task.Gears`); ``options`` go to
-    :func:`solve_gear_pair` (sa_min_factor, eps_min, sliding_steps, rounding)."""
+    """Solve the ``[gears]`` section of a task (:class:`reportgen.task.Gears`) with its limits
+    (``eps_min``, ``sa_min``); ``options`` go to :func:`solve_gear_pair` (sliding_steps, rounding, or
+    limits that override the task's)."""
+    eps_min = float(options.pop("eps_min", getattr(gears, "eps_min", EPS_MIN)))
+    sa_min = float(options.pop("sa_min_factor", getattr(gears, "sa_min", SA_MIN_FACTOR)))
     return solve_gear_pair(gears.z1, gears.z2, gears.module, gears.x1, gears.x2,
-                           alpha_deg=gears.alpha_deg, ha=gears.ha, c=gears.c, **options)
+                           alpha_deg=gears.alpha_deg, ha=gears.ha, c=gears.c, sa_min_factor=sa_min,
+                           eps_min=eps_min, **options)
+
+
+def passing_alternative(pair: GearPair, rounding: float | None = 0.01) -> GearPair | None:
+    """When a pair with *given* shifts fails a check: the pair with the shifts chosen on the blocking
+    contour under the same limits (:func:`reportgen.gears.shifts.choose_shifts`), which passes every
+    check; None when the given pair passes, the shifts were chosen already, or no point of the
+    contour passes (then the teeth numbers or the limits must change)."""
+    if pair.all_passed or pair.shift_choice is not None:
+        return None
+    g = pair.geometry
+    try:
+        alt = solve_gear_pair(g.z1, g.z2, g.m, "auto", "auto", alpha_deg=g.alpha_deg, ha=g.ha, c=g.c,
+                              sa_min_factor=pair.sa_min_factor, eps_min=pair.eps_min, rounding=rounding)
+    except TaskError:
+        return None
+    return alt if alt.all_passed else None

@@ -193,7 +193,7 @@ def choose_shifts(z1: int, z2: int, module: float, alpha_deg: float = 20.0, ha: 
     if not contour.feasible.any():
         raise TaskError("gears.x1", f"no profile shifts (x1, x2) satisfy every check for z1 = {z1}, "
                         f"z2 = {z2} (εα ≥ {eps_min}, sa ≥ {sa_min_factor}·m, no undercut, no "
-                        f"interference)", "explicit x1 and x2, or a smaller eps_min / sa_min_factor, "
+                        f"interference)", "explicit x1 and x2, or a smaller eps_min / sa_min, "
                         "or more teeth")
     h = float(contour.x1[1] - contour.x1[0])
     best = None

@@ -128,3 +128,76 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
         start, end, work, idle, direction = phi_min, phi_max, a_min_to_max, a_max_to_min, 1.0
     stroke = float(rx[i_max] - rx[i_min])
     return Strokes(out, start % (2 * math.pi), end % (2 * math.pi), work, idle, stroke, direction, work / idle)
+
+
+# ------------------------------------------------------------------------------ the course's construction
+#: Collinearity / perpendicularity tolerance of the extreme-position construction (relative, a sine).
+CONSTRUCTION_TOL = 1e-6
+
+
+@dataclass(frozen=True)
+class ExtremeConstruction:
+    """How the course finds the extreme positions graphically, checked on the solved ones.
+
+    ``kind`` "in-line": the crank O–A and the coupler A–B lie on one line (``positions`` give, per
+    extreme, φ1 in degrees, "extended" |OB| = l_AB + l_OA or "folded" |OB| = l_AB − l_OA, and |OB| in
+    m); "perpendicular": the crank is perpendicular to the slotted link that carries its pin's
+    block (the slotted link touches the crank pin's circle; |OB| is then the distance of the slotted
+    link's pivot B from O, the same for both)."""
+    kind: str
+    axis: str
+    pin: str
+    far: str
+    coupler: int
+    crank_length: float
+    coupler_length: float
+    positions: tuple[tuple[float, str, float], ...]
+
+
+def extreme_construction(model: KinematicModel, strokes: Strokes) -> ExtremeConstruction | None:
+    """The construction of the two extreme positions found by :func:`find_strokes`, or None when
+    neither applies (the output is not driven through the crank's coupler in one of these ways)."""
+    lk = model.linkage
+    O, A = lk.drive_axis, lk.drive_tip
+    phis = np.array([strokes.phi_start, strokes.phi_end])
+    kin = model.solve(phis)
+    pos = {n: np.asarray(m.pos) for n, m in kin.points.items()}
+    joint = next((j for j in lk.joints if j.name == A and lk.drive_link in j.bodies), None)
+    if joint is None:
+        return None
+    for c in joint.bodies:
+        if c in (0, lk.drive_link):
+            continue
+        for B in lk.bodies[c].points:
+            if B == A or B not in pos or not any(j.name == B for j in lk.joints):
+                continue
+            out = []
+            for i, ph in enumerate(phis):
+                oa, ab = pos[A][i] - pos[O][i], pos[B][i] - pos[A][i]
+                sin = abs(oa[0] * ab[1] - oa[1] * ab[0]) / (np.hypot(*oa) * np.hypot(*ab))
+                if sin > CONSTRUCTION_TOL:
+                    break
+                out.append((math.degrees(float(ph)) % 360.0, "extended" if float(oa @ ab) > 0 else "folded",
+                            float(np.hypot(*(pos[B][i] - pos[O][i])))))
+            else:
+                return ExtremeConstruction("in-line", O, A, B, c, float(np.hypot(*(pos[A][0] - pos[O][0]))),
+                                           float(np.hypot(*(pos[B][0] - pos[A][0]))), tuple(out))
+    # a block on the crank pin sliding along a slotted link pivoted at the frame
+    for s in lk.slides:
+        blocks = {b for b in joint.bodies if b not in (0, lk.drive_link)}
+        if s.link not in blocks or s.guide == 0:
+            continue
+        pivot = next((j.name for j in lk.joints if 0 in j.bodies and s.guide in j.bodies), None)
+        if pivot is None:
+            continue
+        out = []
+        for i, ph in enumerate(phis):
+            oa, ba = pos[A][i] - pos[O][i], pos[A][i] - pos[pivot][i]
+            cos = abs(float(oa @ ba)) / (np.hypot(*oa) * np.hypot(*ba))
+            if cos > CONSTRUCTION_TOL:
+                break
+            out.append((math.degrees(float(ph)) % 360.0, "tangent", float(np.hypot(*(pos[pivot][i] - pos[O][i])))))
+        else:
+            return ExtremeConstruction("perpendicular", O, A, pivot, s.guide,
+                                       float(np.hypot(*(pos[A][0] - pos[O][0]))), 0.0, tuple(out))
+    return None

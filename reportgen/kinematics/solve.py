@@ -16,6 +16,7 @@ import numpy as np
 
 from ..errors import AssemblyError, SingularPositionError
 from ..linkage import Linkage, compile_linkage, sketch_q
+from ..numbers import clean_array
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
 from .constraints import assemble, gamma, known_terms, perp, rot, world
@@ -70,6 +71,12 @@ class DerivedMotions(Mapping):
 
 def _deferred(fn: Callable, *args) -> Callable[[], PointMotion]:
     return lambda: fn(*args)
+
+
+def _cleaned(make: Callable[[], PointMotion], v_scale: float, a_scale: float) -> PointMotion:
+    """A point's motion with its round-off residue made exact zeros (see ``_without_residue``)."""
+    m = make()
+    return PointMotion(m.pos, _ro(clean_array(m.vel, v_scale)), _ro(clean_array(m.acc, a_scale)))
 
 
 def _fixed_point(xy, n: int) -> PointMotion:
@@ -357,9 +364,26 @@ class KinematicModel:
             trans[g.key] = _ro(mu)
             for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG):
                 flags.append((int(i), g.key, float(mu[i])))
+        points, coms, links = self._without_residue(points, coms, links)
         return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), DerivedMotions(points),
                                 DerivedMotions(coms), MappingProxyType(links), MappingProxyType(trans),
                                 tuple(flags))
+
+    def _without_residue(self, points, coms, links):
+        """Velocities and accelerations that are round-off residue (a centre of mass on a fixed axis
+        comes out at ~1e-16 m/s²) become exact zeros: residue against |ω1|·L, ω1²·L (L the size of
+        the mechanism), |ω1|, ω1² (:func:`reportgen.numbers.clean_array`)."""
+        sketch = np.array(list(self.linkage.sketch.values()), dtype=float).reshape(-1, 2)
+        size = float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
+        w = abs(self.omega) or 1.0
+        v_scale, a_scale = w * size, w * w * size
+
+        def lm(m: LinkMotion) -> LinkMotion:
+            return LinkMotion(m.angle, _ro(clean_array(m.omega, w)), _ro(clean_array(m.epsilon, w * w)))
+
+        return ({n: _deferred(_cleaned, f, v_scale, a_scale) for n, f in points.items()},
+                {k: _deferred(_cleaned, f, v_scale, a_scale) for k, f in coms.items()},
+                {k: lm(m) for k, m in links.items()})
 
     @staticmethod
     def _point_motion(q, qd, qdd, k: int, p: tuple) -> PointMotion:

@@ -79,7 +79,9 @@ def test_analysed_position_is_the_solvers(name, projects):
     i = detail_position(project)
     cycle = ProjectCycle(project, res.crank_inertia)
     r = cycle.reduced(np.array([cycle.theta_of(float(project.kinematics.phi[i]))]))
-    assert c["M_rec"].value == pytest.approx(float(r.M[0]), rel=1e-9, abs=1e-9)
+    # the powers use the angles as printed (to 0,01°, the course's precision): M_пр agrees with the
+    # solver far within its printed four digits
+    assert c["M_rec"].value == pytest.approx(float(r.M[0]), rel=2e-4, abs=1e-6)
     assert c["J_rec"].value == pytest.approx(float(r.J[0]), rel=1e-12)
 
 
@@ -126,5 +128,6 @@ def test_pdf_prints_the_results(projects, tmp_path):
     J, delta = (num(results[k]).replace("{,}", ",") for k in ("J_flywheel", "delta_achieved"))
     assert re.search(rf"Точный\s+{re.escape(J)}\s+—\s+{re.escape(delta)}", text), (J, delta)
     assert f"= {J} кг" in text          # the record of the exact J_fly
-    # the record of δ achieved: δ′ = (ω′max − ω′min)/ω′m = … = δ   (3.n); the prime is a line above
-    assert re.search(rf"𝛿 =.*= {re.escape(delta)}\s+\(\d+\.\d+\)", text)
+    # the record of δ achieved: δ′ = (ω′max − ω′min)/ω′m = … = δ   (3.n); pdftotext puts the prime
+    # inline or a line above, depending on the horizontal position of the display
+    assert re.search(rf"𝛿′? =.*= {re.escape(delta)}\s+\(\d+\.\d+\)", text)

@@ -106,12 +106,19 @@ def test_records_are_the_solver_numbers(name):
 
 
 def test_failed_check_is_stated_as_a_finding(tmp_path):
-    project = project_of("press")            # the seed's pair: εα = 1,152 < 1,2
+    from dataclasses import replace
+    press = project_of("press")
+    # the seed's pair against the default limit: εα = 1,152 < 1,2
+    project = Project(replace(press.task, gears=replace(press.task.gears, eps_min=1.2)))
     assert not project.gears.check("contact_ratio").passed
-    render_section(project, tmp_path)
+    note = render_section(project, tmp_path)
     tex = (tmp_path / "report.tex").read_text(encoding="utf-8")
     assert r"\varepsilon_\alpha = 1{,}152 < [\varepsilon_\alpha] = 1{,}2" in tex
     assert "не~выполнено" in tex
+    # … and the passing pair of the blocking contour with its numbers, in the text and the conclusions
+    assert "Заданная пара смещений не~проходит проверку" in tex
+    assert "$x_1 = 0{,}58$, $x_2 = 0{,}52$" in tex and r"\varepsilon_\alpha = 1{,}201 \ge 1{,}2" in tex
+    assert any("0{,}58" in c and "0{,}52" in c for c in note.conclusions)
 
 
 def _pdf_text(pdf: Path) -> str:

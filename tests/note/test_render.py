@@ -138,7 +138,8 @@ def test_render_writes_tex_with_escaped_title_and_figure(tmp_path):
     assert r"Пресс \#1 \& \$x\_5\$ \textasciitilde{} 100\% \{a\} \textasciicircum{} \textbackslash{}relax" in text
     assert NASTY_TITLE not in text
     assert r"\section{Кинематический анализ}\label{sec:kinematics}" in text
-    assert r"\includegraphics[width=0.85\textwidth]{figures/kinematics-plot.pdf}" in text
+    assert (r"\notefigure{\includegraphics[width=0.85\textwidth,height=\notefigmaxheight,keepaspectratio]"
+            r"{figures/kinematics-plot.pdf}}") in text
     figure = (tmp_path / "out" / "figures" / "kinematics-plot.pdf").read_bytes()
     assert figure.startswith(b"%PDF") and b"CreationDate" not in figure
     assert [r.symbol for r in note.records] == ["V_A", "a_A", "l_{AC}"]

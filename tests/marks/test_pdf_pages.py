@@ -1,0 +1,109 @@
+"""The typeset note of every example, read back from its PDF (issue 12: figures and residue).
+
+* every figure's box (written by ``\\notefigure`` at shipout: page, position, size) lies inside the
+  text block of the ГОСТ page (30/15/20/27 mm margins) and every figure but the assignment's scheme
+  has a numbered caption «Рисунок N.M — …»;
+* no glyph of any page (pdftotext -bbox) lies outside the text block, except in the title block;
+* no LaTeX or Jinja residue («\\%», «??», a backslash, ``\\VAR``, ``{{``) in the PDF text, and no
+  round-off residue printed as a number (·10⁻⁹ and below: below the precision of any quantity of
+  the course).
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+import unicodedata
+
+import pytest
+
+from conftest import EXAMPLES
+
+pytestmark = pytest.mark.slow
+
+MM_PER_PT = 25.4 / 72.0             # PDF points (bp)
+MM_PER_SP = 25.4 / 72.27 / 65536.0  # TeX scaled points
+PAGE_H = 297.0
+TEXT = (30.0, 195.0, 20.0, 270.0)   # x from, x to, y from the top, y to (mm): preamble's geometry
+DEPTH = 3.5                          # the last line's descenders and subscripts below the block, mm
+STAMP = (20.0, 205.0, 277.0, 292.0)  # the title block (form 2a) inside the frame
+STAMP_FORM2 = (20.0, 205.0, 252.0, 292.0)  # form 2 on the first sheet of the text (the contents)
+SLACK = 0.5
+
+
+def _figboxes(out):
+    log = (out / "latex-build" / "report.log").read_text(encoding="utf-8", errors="replace")
+    boxes = []
+    for m in re.finditer(r"^FIGBOX(\*?) (\d+)\s+(-?\d+)\s+(-?\d+)\s+([\d.]+)pt\s+([\d.]+)pt", log, re.M):
+        star, page, x, y, w, h = m.groups()
+        x_mm, y_mm = int(x) * MM_PER_SP, PAGE_H - int(y) * MM_PER_SP   # y: baseline, from the top
+        w_mm, h_mm = float(w) * 25.4 / 72.27, float(h) * 25.4 / 72.27
+        boxes.append((bool(star), int(page), x_mm, y_mm - h_mm, x_mm + w_mm, y_mm))
+    return boxes
+
+
+def _pdftext(pdf) -> str:
+    txt = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True,
+                         check=True).stdout
+    return unicodedata.normalize("NFKC", txt)
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_every_figure_inside_the_text_block_with_a_caption(example, built):
+    out = built(example)
+    boxes = _figboxes(out)
+    includes = len(re.findall(r"\\includegraphics", (out / "report.tex").read_text(encoding="utf-8")))
+    assert len(boxes) == includes > 0            # every figure went through \notefigure
+    x0, x1, y0, y1 = TEXT
+    bad = [b for b in boxes if b[2] < x0 - SLACK or b[4] > x1 + SLACK or b[3] < y0 - SLACK or b[5] > y1 + SLACK]
+    assert not bad, bad
+    text = _pdftext(out / "report.pdf")
+    captions = re.findall(r"Рисунок \d+\.\d+ — \S", text)
+    assert len(set(captions)) >= sum(1 for b in boxes if not b[0])
+    assert sum(1 for b in boxes if b[0]) <= 1
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_glyph_outside_the_text_block(example, built):
+    out = built(example)
+    html = subprocess.run(["pdftotext", "-bbox", str(out / "report.pdf"), "-"], capture_output=True,
+                          text=True, check=True).stdout
+    x0, x1, y0, y1 = TEXT
+    bad = []
+    for n, page in enumerate(html.split("<page ")[1:], 1):
+        if n == 1:
+            continue                  # the title page has its own layout (ГОСТ 7.32: no frame)
+        box = STAMP_FORM2 if ">Разраб.<" in page else STAMP
+        for m in re.finditer(r'xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)<', page):
+            a, b, c, d = (float(v) * MM_PER_PT for v in m.groups()[:4])
+            inside = a >= x0 - 1 and c <= x1 + 1 and b >= y0 - 1 and d <= y1 + DEPTH
+            stamp = a >= box[0] and c <= box[1] and b >= box[2] and d <= box[3]
+            if not inside and not stamp:
+                bad.append((n, m.group(5), round(a), round(b)))
+    assert not bad, bad[:20]
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_residue_in_the_pdf_text(example, built):
+    text = _pdftext(built(example) / "report.pdf")
+    for residue in ("\\%", "??", "\\", "VAR{", "BLOCK{", "{{", "}}", "{%", "%}"):
+        assert residue not in text, residue
+    tiny = [m.group(0) for m in re.finditer(r"\d\s*[·⋅]\s*10\s*[−-]\s*(\d+)", text) if int(m.group(1)) >= 9]
+    assert not tiny, tiny
+
+
+@pytest.mark.parametrize("example", ["press", "conveyor"])
+def test_front_matter(example, built):
+    """Title page with the university; form 2 (ГОСТ 2.104) on the first sheet of the text, the contents;
+    an introduction that says what the machine does and cites the references."""
+    out = built(example)
+    pages = _pdftext(out / "report.pdf").split("\f")
+    if example == "press":
+        assert "Технический университет" in pages[0]
+    first = next(i for i, p in enumerate(pages) if "СОДЕРЖАНИЕ" in p)
+    assert "Разраб." in pages[first] and "Листов" in pages[first] and "Утв." in pages[first]
+    assert all("Разраб." not in p for p in pages[first + 1:])
+    intro = next(p for p in pages if "ВВЕДЕНИЕ" in p and "СОДЕРЖАНИЕ" not in p)
+    intro = " ".join(re.sub(r"-\s*\n\s*", "", intro).split())      # hyphenation and line breaks undone
+    assert "Механизм преобразует" in intro and "[1, 2]" in intro and "[3]" in intro
+    if example == "conveyor":
+        assert "проектирование эвольвентной" not in intro      # no [gears]: the work designs no gears
