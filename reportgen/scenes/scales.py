@@ -70,5 +70,4 @@ def _needed(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -
 
 def gost_scales_from(k: float) -> list[tuple[float, str]]:
     """The ГОСТ 2.302 scales (paper mm per metre, ratio text) not larger than ``k``, largest first."""
-    out = [(1000.0 * gost_scales.factor(s), gost_scales.label(s)) for s in GOST_SCALES]
-    return [c for c in out if c[0] <= k * (1 + 1e-9)]
+    return [(1000.0 * gost_scales.factor(s), gost_scales.label(s)) for s in gost_scales.fitting(k / 1000.0)]
