@@ -180,24 +180,30 @@ def _start_latex(tex: Path, latexmk: str, cache: Any) -> Any:
         raise BuildError("LaTeX", exc.problem, exc.kept) from None
 
 
-def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any = None, *,
-                lane: str = SHEETS) -> Iterator[Span]:
-    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
-    from drawings.preview import render_png
+def draw_sheet(project: Any, mod: Any, number: int, count: int) -> Any:
+    """Sheet ``number`` of ``count`` drawn by the sheet module ``mod``, in the task's language, with
+    a view of the project that lets it read only the stages it declares in ``NEEDS``."""
     from drawings.words import language, use_catalogue
     from latex_templates.parts import active_strings
     from latex_templates.render import Strings
 
     use_catalogue(Strings)
+    with language(project.task.document.language), \
+            active_strings(Strings(project.task.document.language or "ru")):   # the sheet's words in the task's language
+        return mod.draw(Needs(project, mod.NEEDS, f"sheet {mod.__name__}"), number, count)
+
+
+def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any = None, *,
+                lane: str = SHEETS) -> Iterator[Span]:
+    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
+    from drawings.preview import render_png
 
     folder = tmp / "sheets"
     folder.mkdir(exist_ok=True)
     for i, (stem, mod) in enumerate(todo, start=1):
         name = f"sheet {i}: {stem}"
         t0 = time.perf_counter()
-        with language(project.task.document.language), \
-                active_strings(Strings(project.task.document.language or "ru")):   # the sheet's words in the task's language
-            sheet = mod.draw(Needs(project, mod.NEEDS, f"sheet {mod.__name__}"), i, len(todo))
+        sheet = draw_sheet(project, mod, i, len(todo))
         dxf = folder / f"{stem}.dxf"
         png = folder / f"{stem}.png"
         sheet.save(dxf)

@@ -15,13 +15,14 @@ SCRIPT = r"""
 import sys
 from pathlib import Path
 from drawings.sheets import available_sheets
+from reportgen.commands.pipeline import draw_sheet
 from reportgen.project import Project
 from reportgen.taskfile import load_task
 project = Project(load_task(sys.argv[1]))
 todo = available_sheets(project)
 for i, (stem, mod) in enumerate(todo, start=1):
     if stem in sys.argv[3:]:
-        mod.draw(project, i, len(todo)).save(Path(sys.argv[2]) / f"{stem}.dxf")
+        draw_sheet(project, mod, i, len(todo)).save(Path(sys.argv[2]) / f"{stem}.dxf")
 """
 
 

@@ -217,8 +217,8 @@ def planetary_table(project, bounds) -> Table:
 def batch_table(quick: bool) -> Table:
     """Wall time of `reportgen batch`: the answer keys of every variant of the 22 tables, and the full
     notes (PDF + sheet) of one table's 10 variants, with 1 and 2 processes (a cold output folder each)."""
-    from ..commands.batch import batch, variant_job
-    from ..control.tables import tables
+    from ..batch import batch, variant_job
+    from ...control.tables import tables
 
     t = Table("batch", "Wall time of `reportgen batch` (control work, seed 001)",
               ["run", "variants", "processes", "time, s", "per variant, s"])
