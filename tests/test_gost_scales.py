@@ -13,7 +13,7 @@ from reportgen import gost_scales
 from reportgen.cli import main
 from reportgen.taskfile import MAX_LENGTH, MIN_LENGTH
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]
 PRESS = ROOT / "examples" / "press" / "task.toml"
 SCHEME_MM = 450.0   # about the room of sheet 1's scheme
 
