@@ -25,6 +25,7 @@ from .calc import (
     CalcRecord, DisplayCheck, Var, _evaluate, _parse, _SymbolicLeaves, _to_latex, _tolerance,
     parse_decimal, record,
 )
+from .tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 __all__ = ["BalanceTerm", "Balance", "BalanceSolution", "check_balance", "balance_is_consistent", "UNKNOWN"]
 
@@ -179,7 +180,7 @@ def check_balance(sol: BalanceSolution) -> DisplayCheck:
     tol = _tolerance(sol.result.value, sol.result.digits) * arm
     tol += sum(_tolerance(p.value, p.digits) for p in sol.parts)
     scale = abs(u) * arm + sum(abs(p.value) for p in sol.parts)
-    tol += 1e-9 * scale + 1e-12
+    tol += RTOL_EQUAL * scale + ABS_ROUNDOFF
     return DisplayCheck(residual, 0.0, tol)
 
 

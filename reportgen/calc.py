@@ -36,6 +36,7 @@ from typing import Callable, Mapping
 
 from .errors import InternalError, ParameterError
 from .numbers import decimal_text, significant_decimals
+from .tolerances import RTOL_EQUAL
 
 __all__ = [
     "Var", "CalcRecord", "DisplayCheck", "CalcExpressionError", "record", "evaluate_displayed",
@@ -276,7 +277,7 @@ def _tolerance(value: float, digits: int) -> float:
         half_unit = 0.5 * 10.0 ** (exponent - digits + 1)
     else:
         half_unit = 0.5 * 10.0 ** (-round_significant_decimals(value, digits))
-    return half_unit * (1 + 1e-9) + 4 * math.ulp(abs(value))
+    return half_unit * (1 + RTOL_EQUAL) + 4 * math.ulp(abs(value))
 
 
 def record(symbol: str, expr: str, unit: str = "", *variables: Var, label: str = "",

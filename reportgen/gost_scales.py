@@ -19,6 +19,8 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
+from .tolerances import RTOL_ROUNDOFF
+
 
 class Scale(NamedTuple):
     """A scale as ``paper:real`` (1:2,5 is ``Scale(1, 2.5)``); a plain ``(paper, real)`` tuple compares equal."""
@@ -50,7 +52,7 @@ def label(scale: tuple[float, float], decimal: str = ",") -> str:
 
 def scales(largest: float = math.inf, smallest: float = 0.0) -> tuple[tuple[float, float], ...]:
     """The listed scales with ``smallest ≤ factor ≤ largest``, the largest first."""
-    return tuple(s for s in GOST_2_302 if smallest * (1 - 1e-12) <= factor(s) <= largest * (1 + 1e-12))
+    return tuple(s for s in GOST_2_302 if smallest * (1 - RTOL_ROUNDOFF) <= factor(s) <= largest * (1 + RTOL_ROUNDOFF))
 
 
 def largest_fitting(needed: float) -> tuple[float, float]:
@@ -62,9 +64,9 @@ def largest_fitting(needed: float) -> tuple[float, float]:
     if not needed > 0 or math.isinf(needed):
         return GOST_2_302[0] if math.isinf(needed) else GOST_2_302[-1]
     if needed >= 200:
-        return Scale(100 * math.floor(needed / 100 * (1 + 1e-12)), 1)
+        return Scale(100 * math.floor(needed / 100 * (1 + RTOL_ROUNDOFF)), 1)
     for s in GOST_2_302:
-        if factor(s) <= needed * (1 + 1e-12):
+        if factor(s) <= needed * (1 + RTOL_ROUNDOFF):
             return s
     return GOST_2_302[-1]
 

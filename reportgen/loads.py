@@ -28,6 +28,7 @@ from .kinematics.extremes import Strokes
 from .linkage import Linkage
 from .task import Mechanism
 from .geometry import readonly as _ro
+from .tolerances import ABS_ROUNDOFF
 
 
 @dataclass(frozen=True)
@@ -88,7 +89,7 @@ class StrokeWindow:
     def on_working(self, phi: np.ndarray) -> np.ndarray:
         span = (self.sign * (self.phi_end - self.phi_start)) % (2 * math.pi)
         off = (self.sign * (np.asarray(phi) - self.phi_start)) % (2 * math.pi)
-        return off <= span + 1e-12
+        return off <= span + ABS_ROUNDOFF
 
     def switching_angles(self) -> tuple[float, float]:
         return (self.phi_start, self.phi_end)

@@ -26,13 +26,14 @@ import math
 from decimal import ROUND_HALF_EVEN, Decimal
 
 from .errors import ParameterError
+from .tolerances import RTOL_EQUAL
 
 __all__ = ["RESIDUE_REL", "ANGLE_DECIMALS", "decimal_text", "significant_decimals", "plain", "significant",
            "is_residue", "clean", "clean_array"]
 
 #: A value below this fraction of its problem's scale is round-off residue (double precision leaves
 #: ~1e-16; every measured quantity of the course is above 1e-6 of its scale).
-RESIDUE_REL = 1e-9
+RESIDUE_REL = RTOL_EQUAL
 #: Angles are printed to 0,01° (the course reads angles off a drawing to a tenth of a degree; the
 #: extra digit keeps the computed value recognisable).
 ANGLE_DECIMALS = 2

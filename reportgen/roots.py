@@ -20,11 +20,10 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from .errors import ComputationError
+from .tolerances import BRACKET_NODE_EPS, BRENT_RTOL, BRENT_XTOL, EXTREME_XTOL
 
 #: Points sampled across each bracket per round of :func:`extremes`.
 SAMPLES = 17
-#: Absolute tolerance on the abscissa of an extreme (the value near an extreme errs by its square).
-EXTREME_XTOL = 1e-9
 #: A bracket whose samples all agree with the best to this relative spread (a few ulps) is done:
 #: the value is exact to rounding, and its abscissa cannot be resolved any further (≈ √ε·scale).
 FLAT = 8 * np.finfo(float).eps
@@ -38,8 +37,8 @@ class RootNotBracketedError(ComputationError, ValueError):
         super().__init__("Brent's method", f"f({a!r}) = {fa!r} and f({b!r}) = {fb!r} have the same sign")
 
 
-def brent_root(f: Callable[..., float], a: float, b: float, args: tuple = (), *, xtol: float = 2e-12,
-               rtol: float = 8.881784197001252e-16, maxiter: int = 200) -> float:
+def brent_root(f: Callable[..., float], a: float, b: float, args: tuple = (), *, xtol: float = BRENT_XTOL,
+               rtol: float = BRENT_RTOL, maxiter: int = 200) -> float:
     """A root of f in [a, b] (f(a)·f(b) ≤ 0) by Brent's method, to ``xtol + rtol·|x|``."""
     fa, fb = float(f(a, *args)), float(f(b, *args))
     if fa == 0.0:
@@ -137,7 +136,7 @@ def extremes(evaluate: Callable[[np.ndarray], tuple], nodes: np.ndarray,
             if len(br) > 1:
                 # (a best sample on the node shared by both brackets keeps both sides, as one bracket:
                 # the extreme may lie just beyond the node, closer than one sample spacing)
-                keep = [i for i, (a, b) in enumerate(br) if a - 1e-15 <= best[k][0] <= b + 1e-15]
+                keep = [i for i, (a, b) in enumerate(br) if a - BRACKET_NODE_EPS <= best[k][0] <= b + BRACKET_NODE_EPS]
                 if keep:
                     brackets[k] = [(min(br[i][0] for i in keep), max(br[i][1] for i in keep))]
                     limits[k] = [(min(limits[k][i][0] for i in keep), max(limits[k][i][1] for i in keep))]

@@ -15,11 +15,12 @@ import tomllib
 from pathlib import Path
 
 from ..errors import OptionError
+from ..tolerances import ABS_ZERO
 
 #: The tolerance of a graphical construction when neither the option nor the task gives one, %.
 DEFAULT_TOLERANCE_PERCENT = 5.0
 #: Below this magnitude an exact value counts as zero (a student's value passes if as small).
-ZERO = 1e-9
+ZERO = ABS_ZERO
 
 
 def register(sub) -> None:

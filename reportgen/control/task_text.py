@@ -12,6 +12,7 @@ import math
 from ..zoo import toml_value
 from .sketch import link4_key, sketch
 from .tables import Table, Variant
+from ..tolerances import RTOL_EQUAL
 
 #: Defaults of the choices the manual leaves open (§5: q = 8…25 kg/m, m_slider = (4…18)·m1).
 DEFAULT_Q = 10.0
@@ -32,7 +33,7 @@ def _bar_or_triangle(pts, names: tuple[str, str, str]) -> tuple[list[str], bool]
     d = {frozenset((p, q)): math.dist(pts[p], pts[q]) for p, q in itertools.combinations(names, 2)}
     (p, q), longest = max(((tuple(k), v) for k, v in d.items()), key=lambda kv: kv[1])
     mid = next(n for n in names if n not in (p, q))
-    straight = abs(d[frozenset((p, mid))] + d[frozenset((mid, q))] - longest) <= 1e-9 * longest
+    straight = abs(d[frozenset((p, mid))] + d[frozenset((mid, q))] - longest) <= RTOL_EQUAL * longest
     return ([names[0], names[1], names[2]] if not straight else sorted((p, q)) + [mid]), straight
 
 

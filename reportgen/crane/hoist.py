@@ -31,6 +31,7 @@ from . import drive
 from .rules import DutyRules, brake_factor_each
 from .spec import Crane
 from .steps import Check, Steps, check
+from ..tolerances import WHOLE_EPS
 
 #: Allowed fleet angle of the rope from the groove of a grooved drum (Казак; seed 002: 6°).
 FLEET_ANGLE_DEG = 6.0
@@ -133,7 +134,7 @@ def hoist_calc(crane: Crane, rules: DutyRules) -> MechanismCalc:
     dr = h.drum
     st.rec("L_k", r"L_{к}", "H * u_p", "м")
     st.rec("z_w", r"z_{р}", "L_k * 1000 / (pi * D_c)", "")
-    st.var("z_wa", r"z_{р}'", math.ceil(st.value("z_w") - 1e-9), "")
+    st.var("z_wa", r"z_{р}'", math.ceil(st.value("z_w") - WHOLE_EPS), "")
     st.var("t", "t", dr.groove_pitch_mm, "мм")
     st.add(check("groove", dr.groove_pitch_mm, "≥", h.rope.diameter_mm + 2.0, "мм",
                  advice="groove_pitch", advice_value=h.rope.diameter_mm + 2.0, advice_unit="мм"))

@@ -17,7 +17,7 @@ from typing import Any, Mapping
 
 from ..calc import CalcRecord, Var, format_decimal, record
 from ..errors import ParameterError
-from ..tolerances import TINY
+from ..tolerances import RTOL_EQUAL, TINY
 
 
 @dataclass(frozen=True)
@@ -44,7 +44,7 @@ def check(key: str, value: float, relation: str, limit: float, unit: str = "", *
           records: tuple[str, ...] = (), advice: str = "", advice_value: float | None = None,
           advice_unit: str = "") -> Check:
     """A check of ``value relation limit`` with a small relative tolerance for rounding (1e-9)."""
-    tol = 1e-9 * max(abs(value), abs(limit), TINY)
+    tol = RTOL_EQUAL * max(abs(value), abs(limit), TINY)
     if relation == "≥":
         ok = value >= limit - tol
     elif relation == "≤":

@@ -19,6 +19,7 @@ from ..loads import StrokeWindow, external_loads, link_coordinate
 from ..roots import brent_root
 from .errors import DynamicsInputError
 from .reduction import constant_inertia, reduced_inertia, reduced_moment
+from ..tolerances import EDGE_ANGLE_TOL
 
 TWO_PI = 2.0 * math.pi
 
@@ -161,7 +162,7 @@ class ProjectCycle:
                         def h(t, f_target=f_target, idle=idle):
                             v = float(frac(np.array([t]))[0])
                             return (1.0 - v if idle else v) - f_target
-                        out.append(float(np.mod(brent_root(h, ts[i], ts[i + 1], xtol=1e-14, rtol=1e-14), TWO_PI)))
+                        out.append(float(np.mod(brent_root(h, ts[i], ts[i + 1], xtol=EDGE_ANGLE_TOL, rtol=EDGE_ANGLE_TOL), TWO_PI)))
         return out
 
     # -- reduced quantities ---------------------------------------------------------------------

@@ -30,7 +30,7 @@ from ..scenes.boxes import GraphLayout  # noqa: F401  (the room of the diagrams;
 from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle
 from ..geometry import readonly as _ro
-from ..tolerances import RTOL_ROUNDOFF
+from ..tolerances import RTOL_EQUAL, RTOL_ROUNDOFF
 
 #: Reading accuracy of a length measured on the sheet, mm.
 READING_MM = 0.5
@@ -113,7 +113,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     s = dict(scales or {})
     mu_phi = s.setdefault("mu_phi", TWO_PI / layout.phi_axis)
     # a machine without load (M_red ≈ 0) still gets a finite scale: a floor of 1e-9·J·ω² (N·m)
-    m_ref = max(float(np.abs(np.concatenate((M, Mmid))).max()), 1e-9 * float(J.max()) * wm * wm)
+    m_ref = max(float(np.abs(np.concatenate((M, Mmid))).max()), RTOL_EQUAL * float(J.max()) * wm * wm)
     mu_M = s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
     x = theta / mu_phi
     y_mid = Mmid / mu_M

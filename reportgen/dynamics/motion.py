@@ -23,6 +23,7 @@ from ..roots import brent_root, extremes
 from .energy import EnergyProfile
 from .errors import DynamicsInputError
 from ..errors import ComputationError
+from ..tolerances import IVP_RTOL, MEAN_SPEED_REFINE, MEAN_SPEED_RTOL, MEAN_SPEED_XREL
 
 
 @dataclass(frozen=True)
@@ -64,7 +65,7 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
     u_hi = max(u_lo, 1.0) + float(J.max()) * wm * wm
     while mean_speed(u_hi, E, J) < 0:
         u_hi *= 2.0
-    u = brent_root(mean_speed, u_lo, u_hi, args=(E, J), xtol=1e-14 * u_hi, rtol=1e-15)
+    u = brent_root(mean_speed, u_lo, u_hi, args=(E, J), xtol=MEAN_SPEED_XREL * u_hi, rtol=MEAN_SPEED_RTOL)
     # Refine: the extremes of ω lie between nodes; solve again on the refined extreme points.
     for _ in range(4):
         def w_of(st, u=u):
@@ -74,8 +75,8 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
         tt = np.array([t_hi, t_lo])
         Ex, Jx = profile.state(tt)
         Jx = Jx + J_fly
-        u_new = brent_root(lambda v, Ex=Ex, Jx=Jx: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=1e-14 * u_hi, rtol=1e-15)
-        done = abs(u_new - u) <= 1e-13 * abs(u_new)
+        u_new = brent_root(lambda v, Ex=Ex, Jx=Jx: 0.5 * (_omega(v, Ex, Jx).sum()) - wm, u_lo, u_hi, xtol=MEAN_SPEED_XREL * u_hi, rtol=MEAN_SPEED_RTOL)
+        done = abs(u_new - u) <= MEAN_SPEED_REFINE * abs(u_new)
         u = u_new
         if done:
             break
@@ -91,7 +92,7 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
 
 
 def integrate_ivp(cycle: Cycle, M_drive: float, J_fly: float, omega0: float, theta_out: np.ndarray,
-                  rtol: float = 1e-10) -> np.ndarray:
+                  rtol: float = IVP_RTOL) -> np.ndarray:
     """ω at ``theta_out`` (within [0, 2π]) from dω/dθ = (M_drive + M_red − ½·J′·ω²)/(J·ω), ω(0) = ω0,
     integrated piecewise between the cycle's break angles (DOP853)."""
     from scipy.integrate import solve_ivp

@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ..errors import ReportgenInputError
+from ..tolerances import INV_INVERSE_TOL
 
 #: Below this angle (rad) inv is evaluated by its Taylor series, which avoids the cancellation in
 #: tan α − α: inv α = α³/3 + 2α⁵/15 + 17α⁷/315 + 62α⁹/2835 + …
@@ -43,7 +44,7 @@ def inv(alpha):
     return float(out) if out.ndim == 0 else out
 
 
-def inv_inverse(value, *, tol: float = 1e-15, max_iter: int = 60):
+def inv_inverse(value, *, tol: float = INV_INVERSE_TOL, max_iter: int = 60):
     """α with inv α = value (rad), by monotone Newton iteration (module docstring).
 
     Accurate to about 1e-15 rad relative for 1e-9 ≤ value ≤ 100; accepts a float or an array.

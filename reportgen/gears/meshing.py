@@ -29,6 +29,7 @@ from ..geometry import readonly as _ro, vec2
 from ..errors import GeometryError, ParameterError
 
 from ..geometry import Vec2 as Point
+from ..tolerances import TOOTH_SIMPLIFY_REL
 
 #: ГОСТ 2.302-68 scales (enlargement > 1, reduction < 1).
 GOST_SCALES = tuple(gost_scales.factor(s) for s in gost_scales.scales(largest=10.0, smallest=1 / 10))
@@ -138,7 +139,7 @@ def meshing_picture(pair, n_teeth: int = 3, positions: int = DEFAULT_POSITIONS,
         raise ParameterError("n_teeth", n_teeth, "≥ 1")
     g = pair.geometry
     tooth1, tooth2 = pair_teeth(pair, positions)
-    tol = simplify if simplify is not None else 2e-4 * g.m
+    tol = simplify if simplify is not None else TOOTH_SIMPLIFY_REL * g.m
     rw1, rw2 = g.dw1 / 2, g.dw2 / 2
     o1, o2 = np.array([0.0, 0.0]), np.array([0.0, g.aw])
     psi_w1 = float(half_thickness_angle(rw1, g.db1 / 2, g.s1, g.d1, g.alpha))

@@ -26,7 +26,7 @@ from shapely.geometry import Polygon
 from .involute import inv
 from ..geometry import readonly as _ro
 from ..errors import GeometryError
-from ..tolerances import RTOL_ROUNDOFF
+from ..tolerances import ABS_ZERO, RTOL_ROUNDOFF
 
 DEFAULT_POSITIONS = 481
 
@@ -168,7 +168,7 @@ def generate_tooth(z: int, m: float, x: float, alpha: float, ha: float, c: float
         tooth = max(tooth.geoms, key=lambda g: g.area)
     ring = np.asarray(tooth.exterior.coords)[:-1]
     rr = np.hypot(ring[:, 0], ring[:, 1])
-    inner = rr < 0.999 * rf if rf > 0 else rr < 1e-9
+    inner = rr < 0.999 * rf if rf > 0 else rr < ABS_ZERO
     # rotate the ring so that it starts right after the inner (blank) part, then drop that part
     k = int(np.nonzero(inner)[0][-1]) + 1 if inner.any() else 0
     ring = np.roll(ring, -k, axis=0)

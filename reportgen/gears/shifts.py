@@ -34,6 +34,7 @@ from .contours import zero_lines
 from .geometry import pair_arrays
 from .sliding import lambda1, lambda2
 from ..geometry import readonly as _ro
+from ..tolerances import SHIFT_BISECT_TOL, SHIFT_FD_STEP, SHIFT_SECANT_TOL
 
 RULE_EQUAL_SLIDING = "equal maximal specific sliding λ1(a) = λ2(b) at the largest feasible x1 + x2"
 RULE_LEAST_IMBALANCE = "no feasible point has equal sliding: smallest |λ1(a) − λ2(b)|, then largest x1 + x2"
@@ -150,7 +151,7 @@ def _refine_on_line(ev: _Evaluator, p_in: np.ndarray, p_out: np.ndarray) -> np.n
     point is first moved onto λ1(a) = λ2(b) along x2 (secant steps)."""
     def project(p):
         x1, x2 = float(p[0]), float(p[1])
-        h = 1e-4
+        h = SHIFT_FD_STEP
         for _ in range(30):
             f0 = float(ev.sliding_gap(ev.arrays(x1, x2)))
             f1 = float(ev.sliding_gap(ev.arrays(x1, x2 + h)))
@@ -158,7 +159,7 @@ def _refine_on_line(ev: _Evaluator, p_in: np.ndarray, p_out: np.ndarray) -> np.n
                 break
             step = -f0 * h / (f1 - f0)
             x2 += step
-            if abs(step) < 1e-13:
+            if abs(step) < SHIFT_SECANT_TOL:
                 break
         return np.array([x1, x2])
 
@@ -170,7 +171,7 @@ def _refine_on_line(ev: _Evaluator, p_in: np.ndarray, p_out: np.ndarray) -> np.n
             lo, best = (lo + hi) / 2.0, mid
         else:
             hi = (lo + hi) / 2.0
-        if np.hypot(*(hi - lo)) < 1e-12:
+        if np.hypot(*(hi - lo)) < SHIFT_BISECT_TOL:
             break
     return best
 

@@ -18,13 +18,13 @@ from ..errors import ReportgenError
 from ..roots import brent_root
 from .constraints import rot, world
 from .solve import KinematicModel
+from ..tolerances import CONSTRUCTION_TOL, ROOT_XTOL
 
 GRID = 720
 
 
 class NoExtremesError(ReportgenError, ValueError):
     """The output link turns fully: it has no extreme positions."""
-ROOT_XTOL = 1e-13
 
 
 @dataclass(frozen=True)
@@ -131,8 +131,6 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
 
 
 # ------------------------------------------------------------------------------ the course's construction
-#: Collinearity / perpendicularity tolerance of the extreme-position construction (relative, a sine).
-CONSTRUCTION_TOL = 1e-6
 
 
 @dataclass(frozen=True)

@@ -24,11 +24,10 @@ from ..errors import AssemblyError
 from ..geometry import cross as _cross, dot as _dot
 from ..linkage import Linkage
 from ..structure import Group, Pair
-from ..tolerances import RTOL_EQUAL
+from ..tolerances import ABS_ROUNDOFF, NEWTON_REL_TOL, RTOL_EQUAL
 from .constraints import Constraint, RevoluteC, SlideC, assemble, perp, residual, revolute, rot, world
 
-#: Newton on class III+ groups: relative step tolerance and iteration cap.
-NEWTON_REL_TOL = 1e-13
+#: Newton on class III+ groups: iteration cap (its step tolerance: tolerances.NEWTON_REL_TOL).
 NEWTON_MAX_ITER = 50
 
 
@@ -256,7 +255,7 @@ class NewtonSolver:
         self.cons = group_constraints(linkage, group)
         self.cols = list(group.links)
         lengths = [abs(v) for k in self.cols for p in linkage.bodies[k].local.values() for v in p]
-        self.L = max(lengths + [1e-12])
+        self.L = max(lengths + [ABS_ROUNDOFF])
 
     def newton(self, q: np.ndarray, phi: np.ndarray, strict: bool = True) -> np.ndarray:
         """Refine the group's poses in q (N positions, each from its own start); return a margin."""
@@ -281,7 +280,7 @@ class NewtonSolver:
             if converged.all():
                 break
         F = np.abs(residual(self.cons, q)).max(axis=1) / self.L
-        margin = np.where(F < 1e-9, 1.0, -1.0)
+        margin = np.where(F < RTOL_EQUAL, 1.0, -1.0)
         if strict and (margin < 0).any():
             i = int(np.flatnonzero(margin < 0)[0])
             raise AssemblyError(f"{self.group.label} {self.group.kind}", math.degrees(phi[i]) % 360.0,

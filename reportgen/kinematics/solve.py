@@ -23,6 +23,7 @@ from .constraints import assemble, gamma, known_terms, perp, rot, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
 from ..geometry import readonly as _ro
+from ..tolerances import ABS_ROUNDOFF
 
 #: Largest crank step when following a class III+ group by continuation, rad.
 CONTINUATION_STEP = math.radians(5.0)
@@ -166,7 +167,7 @@ class KinematicModel:
                         for name in self.linkage.bodies[k].points:
                             w = world(qq, k, self.linkage.bodies[k].local[name])[0]
                             err += float(np.hypot(*(w - np.asarray(self.linkage.sketch[name]))))
-                    if best is None or err < best[0] - 1e-12:
+                    if best is None or err < best[0] - ABS_ROUNDOFF:
                         best = (err, sigma, qq)
                 assert best is not None
                 solver.sigma = best[1]

@@ -23,7 +23,7 @@ from ..linkage import Linkage
 from ..structure import Group
 from .constraints import assemble, rot, world
 from .positions import group_constraints
-from ..tolerances import TINY
+from ..tolerances import ABS_ROUNDOFF, TINY
 
 #: A position whose transmission angle is below this is flagged as near a singular position.
 NEAR_SINGULAR_DEG = 5.0
@@ -79,7 +79,7 @@ def transmission_angle(linkage: Linkage, group: Group, q: np.ndarray) -> np.ndar
         return _class3_angle(linkage, q, legs[1])
     cons = group_constraints(linkage, group)
     J, _ = assemble(cons, q, list(group.links))
-    L = max([abs(v) for k in group.links for p in linkage.bodies[k].local.values() for v in p] + [1e-12])
+    L = max([abs(v) for k in group.links for p in linkage.bodies[k].local.values() for v in p] + [ABS_ROUNDOFF])
     J = J.copy()
     J[:, :, 2::3] /= L
     sv = np.linalg.svd(J, compute_uv=False)

@@ -23,7 +23,7 @@ from ..kinematics.transmission import NEAR_SINGULAR_DEG
 from .graphical import GraphicalReplica, graphical_replica
 from .reactions import Reactions, solve_reactions
 from .zhukovsky import Lever, zhukovsky_lever
-from ..tolerances import RTOL_EQUAL
+from ..tolerances import ABS_ZERO, RTOL_EQUAL
 
 #: Grid of crank angles searched for "max-load".
 MAX_LOAD_GRID = 720
@@ -121,7 +121,7 @@ def force_angle(project, force_at_deg: float | None = None) -> tuple[float, int 
 def _index_of(phis: np.ndarray, phi: float) -> int | None:
     d = np.abs(np.angle(np.exp(1j * (np.asarray(phis) - phi))))
     j = int(np.argmin(d)) if d.size else -1
-    return j if j >= 0 and d[j] < 1e-9 else None
+    return j if j >= 0 and d[j] < ABS_ZERO else None
 
 
 def kinetostatics_at(project, force_at_deg: float | None = None, **graphical_options) -> Kinetostatics:

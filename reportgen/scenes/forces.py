@@ -11,6 +11,7 @@ import numpy as np
 
 from ..geometry import vec2 as _pt
 from .scene import Arrow, Entity, Label, Scale, Scene, frozen
+from ..tolerances import MM_EPS
 
 #: A vector shorter than this (mm) is named with a leader.
 LEADER_MM = 12.0
@@ -63,7 +64,7 @@ def polygon_scene(polygon, name: str | None = None) -> Scene:
         a, e = _pt(v.start_mm), _pt(v.end_mm)
         values[v.name] = v.measured_mm
         values[f"{v.name}:read"] = v.read_value
-        if math.dist(a, e) < 1e-6:
+        if math.dist(a, e) < MM_EPS:
             continue
         ents.append(Arrow(f"vec:{v.name}", a, e, "load" if v.known else "found"))
         labels.append(Label(force_tex(v.name), f"vec:{v.name}", ((a[0] + e[0]) / 2, (a[1] + e[1]) / 2),
@@ -72,7 +73,7 @@ def polygon_scene(polygon, name: str | None = None) -> Scene:
         a, b = (_pt(p) for p in diagonal(polygon, v))
         values[v.name] = v.measured_mm
         values[f"{v.name}:read"] = v.read_value
-        if math.dist(a, b) < 1e-6:
+        if math.dist(a, b) < MM_EPS:
             continue
         ents.append(Arrow(f"read:{v.name}", a, b, "read", "hidden"))
         labels.append(Label(force_tex(v.name), f"read:{v.name}", ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2),

@@ -12,6 +12,7 @@ from .scales import FORCE_SERIES, round_scale
 from ..geometry import vec2 as _pt
 from .scene import Arrow, Entity, Label, Scale, Scene, Segment, frozen
 from .forces import force_tex
+from ..tolerances import ABS_ZERO, MM_ROUNDOFF
 
 #: The lever's loads: the largest drawn this long (mm), none shorter than MIN_ARROW_MM.
 LEVER_ARROW_MM = 40.0
@@ -29,7 +30,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
     points: dict[str, tuple[float, float]] = {}
     for name, mo in kin.points.items():
         img = turn_cw(np.asarray(mo.vel))[0] / mu_v
-        if float(np.hypot(*img)) > 1e-9:
+        if float(np.hypot(*img)) > MM_ROUNDOFF:
             points[name.lower()] = _pt(img)
     ents: list[Entity] = []
     for k in linkage.moving:
@@ -43,7 +44,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
     pin = np.asarray(lev.crank_pin_image)[0] / mu_v
     fb = np.asarray(r.balancing_force)[0]
     loads.append(("Fур", pin, fb, 0.0, "found"))
-    mu_f = round_scale(max([float(np.hypot(*v)) for _, _, v, _, _ in loads] + [1e-9]), LEVER_ARROW_MM, FORCE_SERIES)
+    mu_f = round_scale(max([float(np.hypot(*v)) for _, _, v, _, _ in loads] + [ABS_ZERO]), LEVER_ARROW_MM, FORCE_SERIES)
     labels: list[Label] = []
     n_arm = 0
     for name, img, v, arm, style in loads:

@@ -15,6 +15,8 @@ import math
 
 import numpy as np
 
+from ..tolerances import ABS_ZERO, ANGLE_READ_EPS, WHOLE_EPS
+
 
 def first_step(theta) -> float:
     """The equal step of the diagrams' positions (the break angles fall between them)."""
@@ -47,10 +49,10 @@ def diagram_labels(res, positions: int | None = None) -> list[str]:
     corner = 0
     for t in map(float, res.graphical.theta):
         j = t / step
-        if abs(j - round(j)) < 1e-9:
+        if abs(j - round(j)) < WHOLE_EPS:
             out.append(str(int(round(j))))
             continue
-        name = next((v for k, v in names.items() if abs(k - t) < 1e-9), None)
+        name = next((v for k, v in names.items() if abs(k - t) < ABS_ZERO), None)
         if name is None:
             corner += 1
             name = f"и{corner}"
@@ -63,6 +65,6 @@ def diagram_label(res, phi_rad: float) -> str | None:
     theta = float(np.mod(sense(res) * (phi_rad - float(res.phi[0])), 2 * math.pi))
     labels = diagram_labels(res)
     for t, name in zip(map(float, res.graphical.theta), labels):
-        if abs(math.remainder(t - theta, 2 * math.pi)) < 1e-7:
+        if abs(math.remainder(t - theta, 2 * math.pi)) < ANGLE_READ_EPS:
             return name
     return None

@@ -17,6 +17,7 @@ from .boxes import SceneBoxes
 from .scales import gost_scale, gost_scales_from
 from .scene import Circle, Entity, Label, Point, Polyline, Scale, Scene, Segment, frozen
 from .symbols import block, fixed_pivot, ground
+from ..tolerances import ABS_ZERO, FLAT_PATH_RATIO
 
 #: Positions of the dense trajectories.
 DENSE = 144
@@ -47,7 +48,7 @@ def scheme_data(project, analysed: int) -> SchemeData:
     dense = project.model.solve(project.phi[0] + phis)
     st = project.strokes
     ext = project.model.solve(np.array([st.phi_start, st.phi_end])) if st is not None else None
-    start_is_zero = st is not None and abs(math.remainder(float(project.phi[0]) - st.phi_start, 2 * math.pi)) < 1e-9
+    start_is_zero = st is not None and abs(math.remainder(float(project.phi[0]) - st.phi_start, 2 * math.pi)) < ABS_ZERO
     bold = tuple(sorted({0, analysed}))
     return SchemeData(project.kinematics, dense, ext, bold, analysed, start_is_zero)
 
@@ -119,7 +120,7 @@ def pivot_direction(lk, kin: KinematicsResult, i: int, name: str) -> float:
                     n = np.hypot(*v)
                     if n > 0:
                         acc += v / n
-    if np.hypot(*acc) < 1e-9:
+    if np.hypot(*acc) < ABS_ZERO:
         return -90.0
     ang = math.degrees(math.atan2(-acc[1], -acc[0]))
     return float(round(ang / 90.0) * 90.0)
@@ -197,7 +198,7 @@ def positions_scene(project, data: SchemeData, k: float, ratio: str) -> Scene:
         x, y = path[:, 0], path[:, 1]
         area = 0.5 * abs(float(np.dot(x, np.roll(y, 1)) - np.dot(y, np.roll(x, 1))))
         length = float(np.hypot(*np.diff(np.vstack([path, path[:1]]), axis=0).T).sum())
-        if area < 1e-4 * length ** 2:
+        if area < FLAT_PATH_RATIO * length ** 2:
             continue          # a straight path (a slider on the frame): its guide shows it
         if np.allclose(path, np.asarray(data.dense.points[lk.drive_tip].pos)):
             continue          # the crank pin's circle is drawn already

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from .scene import Circle, Entity, Point, Polyline, Segment
+from ..tolerances import MM_ROUNDOFF
 
 
 def _unit(angle_deg: float) -> Point:
@@ -26,7 +27,7 @@ def hatch_strokes(id_: str, p: Point, q: Point, side: float = -1.0, length: floa
     out = []
     for i in range(n):
         t = start + i * spacing + length / math.sqrt(2)
-        if t > d + 1e-9:
+        if t > d + MM_ROUNDOFF:
             break
         x, y = p[0] + ux * t, p[1] + uy * t
         out.append(Segment(f"{id_}:h{i}", (x, y), (x + sx * length, y + sy * length), "thin"))
