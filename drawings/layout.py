@@ -16,7 +16,7 @@ from shapely.geometry import box
 from shapely.geometry.base import BaseGeometry
 
 from reportgen.errors import BuildError, GeometryError, ParameterError
-from reportgen.tolerances import MM_EPS
+from reportgen.tolerances import AREA_EPS_MM2, MM_EPS, MM_ROUNDOFF
 
 Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right", "center"]
 CORNERS: tuple[str, ...] = ("top-left", "top-right", "bottom-left", "bottom-right", "center")
@@ -125,7 +125,7 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
             rx, ry = rect.center if req.preferred == "center" else _corner_target(
                 rect.polygon(), req.preferred)
             d = (rx - tx) ** 2 + (ry - ty) ** 2
-            if best is None or d < best[0] - 1e-9:
+            if best is None or d < best[0] - MM_ROUNDOFF:
                 best = (d, rect)
         if best is None:
             free = region.area - sum(r.width * r.height for r in done)
@@ -194,7 +194,7 @@ def try_pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 
             if cx < bx0 - eps or cy < by0 - eps or cx + req.width > bx1 + eps or cy + req.height > by1 + eps:
                 continue
             d = (cx + fx * req.width - tx) ** 2 + (cy + fy * req.height - ty) ** 2
-            if best is not None and d >= best[0] - 1e-9:
+            if best is not None and d >= best[0] - MM_ROUNDOFF:
                 continue
             rect = Rect.from_size(cx, cy, req.width, req.height)
             if any(rect.overlaps(b) for b in blocked):
@@ -211,7 +211,7 @@ def walls(region: BaseGeometry) -> list[Rect]:
     """The parts of ``region``'s bounding box outside it (the notches of the title block and
     graph 26), as rectangles (bounding boxes of the parts)."""
     rest = box(*region.bounds).difference(region)
-    return [Rect(*g.bounds) for g in getattr(rest, "geoms", [rest]) if not g.is_empty and g.area > 1e-6]
+    return [Rect(*g.bounds) for g in getattr(rest, "geoms", [rest]) if not g.is_empty and g.area > AREA_EPS_MM2]
 
 
 def clearance(region: BaseGeometry, rect: Rect, others: Sequence[Rect],

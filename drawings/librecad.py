@@ -13,11 +13,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from reportgen.errors import BuildError
+from reportgen.tolerances import BLANK_INK
 
 from .preview import ink_fraction
 
-#: A drawn sheet has its frame and title block: far more ink than this share of pixels.
-BLANK_INK = 1e-4
 
 
 def librecad_executable() -> str | None:

@@ -27,6 +27,8 @@ from reportgen.numbers import plain, significant
 from . import style
 
 from reportgen.geometry import Vec2 as Vec
+from reportgen.tolerances import ABS_ZERO, AREA_EPS_MM2, MM_EPS, MM_ROUNDOFF
+
 #: Coordinates as the scenes pass them: a pair (or list) of floats, or a numpy array.
 Coords = Sequence[float] | np.ndarray
 
@@ -113,7 +115,7 @@ class Annotations:
 
     def hits_box(self, poly: Polygon) -> int:
         """How many registered text boxes ``poly`` overlaps (touching does not count)."""
-        return sum(1 for _, b in self.boxes if poly.intersection(b).area > 1e-6)
+        return sum(1 for _, b in self.boxes if poly.intersection(b).area > AREA_EPS_MM2)
 
     def crossings(self, poly: Polygon) -> int:
         """How many drawn lines ``poly`` crosses."""
@@ -290,8 +292,8 @@ class Canvas:
             for ang in order[:16]:
                 ux, uy = _unit(ang)
                 # push the box centre out until its nearest edge is `dist` from the point
-                t = min(((w / 2 + 0.5) / abs(ux)) if abs(ux) > 1e-9 else math.inf,
-                        ((height / 2 + 0.5) / abs(uy)) if abs(uy) > 1e-9 else math.inf)
+                t = min(((w / 2 + 0.5) / abs(ux)) if abs(ux) > ABS_ZERO else math.inf,
+                        ((height / 2 + 0.5) / abs(uy)) if abs(uy) > ABS_ZERO else math.inf)
                 c = (p[0] + ux * (t + dist), p[1] + uy * (t + dist))
                 poly = text_box(c, text, height, "center")
                 score = (self.annotations.hits_box(poly), self.annotations.crossings(poly), rank)
@@ -328,14 +330,14 @@ class Canvas:
         """
         a, b = self.transform(start), self.transform(end)
         d = math.dist(a, b)
-        if d < 1e-9:
+        if d < MM_ROUNDOFF:
             if label:
                 self.label(end, label, label_height)
             return
         head = min(head_mm, d)
         ux, uy = (b[0] - a[0]) / d, (b[1] - a[1]) / d
         shaft_end = (b[0] - ux * head * 0.9, b[1] - uy * head * 0.9)
-        if d - head * 0.9 > 1e-6:
+        if d - head * 0.9 > MM_EPS:
             self._sheet_polyline([a, shaft_end], layer)
         self.arrowhead_mm(b, (ux, uy), head, head / 3.0, layer)
         if label:
@@ -388,7 +390,7 @@ class Canvas:
         for i in range(n):
             t = start + i * spacing + length / math.sqrt(2)
             x, y = p[0] + ux * t, p[1] + uy * t
-            if t > d + 1e-9:
+            if t > d + MM_ROUNDOFF:
                 break
             self._sheet_polyline([(x, y), (x + sx * length, y + sy * length)], layer)
 

@@ -23,6 +23,7 @@ from .layout import Overlap, Rect, Request, find_overlaps, pack
 from .primitives import _ALIGN, _ALIGN_NAMES, Annotations, Canvas, Transform
 from .words import tr
 from reportgen.errors import InternalError, ParameterError
+from reportgen.tolerances import AREA_EPS_MM2
 
 # ---------------------------------------------------------------------------------------------
 # formats and the title block grid
@@ -268,7 +269,7 @@ class Sheet:
         inner = self.frame.polygon()
         for name, poly in views + list(self.annotations.boxes):
             outside = poly.difference(inner).area
-            if outside > 1e-6:
+            if outside > AREA_EPS_MM2:
                 found.append(Overlap(name, "outside the frame", outside))
         found += find_overlaps(list(self.annotations.boxes))
         for name, poly in self.annotations.boxes:
@@ -277,7 +278,7 @@ class Sheet:
                 if vname == f"view {owner}":
                     continue
                 area = poly.intersection(vpoly).area
-                if area > 1e-6:
+                if area > AREA_EPS_MM2:
                     found.append(Overlap(name, vname, area))
         return found
 

@@ -13,6 +13,7 @@ from typing import Sequence
 from drawings.layout import Rect
 from drawings.primitives import Transform
 from drawings.sheet import Sheet, View
+from reportgen.tolerances import MM_ROUNDOFF
 
 ROW_MM = 8.0          # table rows
 TEXT_MM = 3.5         # table and label text
@@ -306,7 +307,7 @@ def draw_trolley_drive(view: View, driven: int, wheels: int, gauge_mm: float = 3
             x = sx * half
             view.polyline([(x - wheel_w / 2, y - wheel_r), (x + wheel_w / 2, y - wheel_r),
                            (x + wheel_w / 2, y + wheel_r), (x - wheel_w / 2, y + wheel_r)], "contour", closed=True)
-            if not any(abs(y - yd) < 1e-9 for yd in driven_ys):
+            if not any(abs(y - yd) < MM_ROUNDOFF for yd in driven_ys):
                 view.line((x - 14.0, y), (x + 14.0, y), "contour")
             bearing(view, x - 10.0 * sx, y)
     return {"motor": (-105.0, y_in + 12.0), "coupling": (-70.0, y_in + 5.0), "brake": (-46.0, y_in + 10.5),

@@ -7,6 +7,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen import gost_scales
+from reportgen.tolerances import MM_ROUNDOFF
 from ..words import tr
 
 #: Room of the sketch around the two views (dimensions, title), mm.
@@ -35,7 +36,7 @@ def sketch_fit(fw, width: float, height: float) -> tuple[float, bool]:
     """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` and its arrangement
     (section beside the front view where both give the same scale, else under it)."""
     D, b = 2000 * fw.radius, 1000 * fw.width
-    candidates = [gost_scales.factor(c) for c in gost_scales.fitting(min(width, height) / max(D, b, 1e-9))]
+    candidates = [gost_scales.factor(c) for c in gost_scales.fitting(min(width, height) / max(D, b, MM_ROUNDOFF))]
     for k in candidates:
         for stacked in (False, True):
             w, h = sketch_size(fw, k, stacked)

@@ -12,6 +12,7 @@ from drawings.primitives import format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
 from reportgen.diagrams import Diagrams
+from reportgen.tolerances import MM_EPS, MM_ROUNDOFF
 from ..words import tr, unit
 
 #: Space above a diagram's largest ordinate (title, dimensions) and between diagrams, mm.
@@ -64,7 +65,7 @@ def _a_steps(d: Diagrams) -> list[tuple[float, float, float]]:
     out = []
     for j in range(d.n):
         x0, x1 = float(x[j] + dx / 2), float(x[j] + 3 * dx / 2)
-        if x1 <= d.axis_mm + 1e-9:
+        if x1 <= d.axis_mm + MM_ROUNDOFF:
             out.append((x0, x1, float(d.a_chord_mm[j])))
         else:
             out.append((x0, d.axis_mm, float(d.a_chord_mm[j])))
@@ -148,9 +149,9 @@ def draw_diagrams(view: View, d: Diagrams, positions: int, start_deg: float, wor
 def _spans(a: float, b: float, length: float) -> list[tuple[float, float]]:
     """The interval a → b (mm) on a periodic axis of ``length``, split where it wraps round."""
     a, b = a % length, b % length
-    if b > a + 1e-9:
+    if b > a + MM_ROUNDOFF:
         return [(a, b)]
-    return [(x, y) for x, y in ((a, length), (0.0, b)) if y - x > 1e-9]
+    return [(x, y) for x, y in ((a, length), (0.0, b)) if y - x > MM_ROUNDOFF]
 
 
 def _strokes(view: View, o: tuple[float, float], length: float, y: float, start_deg: float,
@@ -204,7 +205,7 @@ def _steps(view: View, o: tuple[float, float], steps: list[tuple[float, float, f
     """The steps of a replica: horizontal segments and the verticals joining them."""
     prev = None
     for a, b, y in sorted(steps):
-        if prev is not None and abs(prev[0] - a) < 1e-6:
+        if prev is not None and abs(prev[0] - a) < MM_EPS:
             view.line((o[0] + a, o[1] + prev[1]), (o[0] + a, o[1] + y), "thin")
         view.line((o[0] + a, o[1] + y), (o[0] + b, o[1] + y), "thin")
         prev = (b, y)

@@ -15,6 +15,7 @@ from drawings import style
 from drawings.primitives import Canvas
 
 from reportgen.geometry import Vec2 as Vec
+from reportgen.tolerances import ABS_ZERO, AREA_EPS_MM2, MM_ROUNDOFF
 
 #: LaTeX commands that appear in the names of plan components.
 _GREEK = {r"\tau": "τ", r"\omega": "ω", r"\varepsilon": "ε", r"\varphi": "φ", r"\pi": "π",
@@ -30,7 +31,7 @@ class Rich:
 
 
 def _smaller(height: float) -> float:
-    sizes = [h for h in style.TEXT_HEIGHTS if h < height - 1e-9]
+    sizes = [h for h in style.TEXT_HEIGHTS if h < height - MM_ROUNDOFF]
     return sizes[-1] if sizes else height
 
 
@@ -161,7 +162,7 @@ def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], la
     def hits(poly: Polygon) -> int:
         if tree is None:
             return 0
-        return sum(1 for j in tree.query(poly) if poly.intersection(boxes[j]).area > 1e-6)
+        return sum(1 for j in tree.query(poly) if poly.intersection(boxes[j]).area > AREA_EPS_MM2)
 
     best: tuple[tuple[int, int, int, int], Vec] | None = None
     rank = 0
@@ -192,7 +193,7 @@ def around(p: Vec, rich: Label, height: float, prefer_deg: float = 45.0,
     for gap in gaps:
         for ang in order:
             ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
-            t = min(hw / abs(ux) if abs(ux) > 1e-9 else math.inf, hh / abs(uy) if abs(uy) > 1e-9 else math.inf)
+            t = min(hw / abs(ux) if abs(ux) > ABS_ZERO else math.inf, hh / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
             out.append((p[0] + ux * (t + gap), p[1] + uy * (t + gap)))
     return out
 
@@ -201,7 +202,7 @@ def along(a: Vec, b: Vec, rich: Label, height: float) -> list[Vec]:
     """Candidate centres beside the segment a→b (sheet mm): at its middle first, then towards the
     ends, on either side, at growing distances."""
     d = math.dist(a, b)
-    if d < 1e-9:
+    if d < MM_ROUNDOFF:
         return around(a, rich, height)
     ux, uy = (b[0] - a[0]) / d, (b[1] - a[1]) / d
     nx, ny = -uy, ux

@@ -20,6 +20,7 @@ from reportgen.scenes import positions
 from reportgen.scenes.positions import BLOCK_MM, SchemeData
 from reportgen.scenes.scales import GOST_SCALES, gost_scale  # noqa: F401  (re-exported for the sheet)
 from reportgen.scenes.scene import Scene
+from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 from ..words import tr
 #: Link numbers: radius of the circle, text height, mm.
@@ -60,7 +61,7 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     k = view.transform.scale
     if scene is None:
         scene = project.scenes.positions
-        if abs(scene.scale().value * k - 1.0) > 1e-9:
+        if abs(scene.scale().value * k - 1.0) > RTOL_EQUAL:
             scene = project.scenes.positions_at(k, scale_text)
     render.draw_scene(view, scene, unit=1.0 / k)
     _draw_crank_angles(view, project, data)
@@ -146,7 +147,7 @@ def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
     p0 = np.asarray(data.extremes.points[out.point].pos[0])
     p1 = np.asarray(data.extremes.points[out.point].pos[1])
     d = p1 - p0
-    if d[0] < -1e-12 or (abs(d[0]) <= 1e-12 and d[1] < 0):
+    if d[0] < -ABS_ROUNDOFF or (abs(d[0]) <= ABS_ROUNDOFF and d[1] < 0):
         p0, p1, d = p1, p0, -d          # read from the left (text not upside down)
     n = np.array([-d[1], d[0]]) / (np.hypot(*d) or 1.0)
     # beyond the guide, away from the coupler: the left of p0→p1 (offset > 0) or its right

@@ -25,6 +25,7 @@ from reportgen.scenes.forces import polygon_scene
 from reportgen.scenes.scene import Arrow as SceneArrow
 from reportgen.scenes.scene import Scene
 from reportgen.scenes.scene import Segment as SceneSegment
+from reportgen.tolerances import ABS_ZERO, TINY
 
 from drawings.scenes import kinematics_labels as rl
 
@@ -84,14 +85,14 @@ class Arrow:
 
 def arrow_scale(arrows: list[Arrow]) -> float:
     """μF of a group's view: a round scale that draws the largest force within ARROW_MM."""
-    return round_scale(max([float(np.hypot(*a.vector)) for a in arrows] + [1e-9]), ARROW_MM)
+    return round_scale(max([float(np.hypot(*a.vector)) for a in arrows] + [ABS_ZERO]), ARROW_MM)
 
 
 def arrow_end(a: Arrow, mu_f: float, mu_l: float) -> np.ndarray:
     """The model point of an arrow's tip: its length at μF, at least MIN_ARROW_MM."""
     mag = float(np.hypot(*a.vector))
     mm = max(mag / mu_f, MIN_ARROW_MM)
-    return np.asarray(a.point, float) + a.vector / (mag + 1e-300) * mm * mu_l
+    return np.asarray(a.point, float) + a.vector / (mag + TINY) * mm * mu_l
 
 
 def _title_and_scales(view: View, title: str, upper: str, lower: str) -> None:

@@ -20,6 +20,7 @@ from reportgen.errors import BuildError
 from reportgen.diagrams import Diagrams, build_diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
+from reportgen.tolerances import MM_EPS
 from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
@@ -221,7 +222,7 @@ def _best(region, placed: list[Rect], options: list[list[Block]], max_width: flo
                     if rects is None:
                         continue
                     free = room(region, rects, gap=VIEW_GAP, placed=placed)
-                    if best is None or free > best.room + 1e-6:
+                    if best is None or free > best.room + MM_EPS:
                         rects = spread(region, rects, gap=VIEW_GAP, placed=placed)
                         rects = _grow(region, [b for b, _ in trial], rects, placed)
                         parts = {}

@@ -10,6 +10,7 @@ from drawings.primitives import format_number, ratio_label
 from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
 from reportgen.project import Project
+from reportgen.tolerances import MM_EPS
 from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "phi", "kinematics", "kinetostatics")
@@ -67,9 +68,9 @@ def _room(bounds, obstacles: list, r, axis: int) -> tuple[float, float]:
         o0, o1, c0, c1 = (o.x0, o.x1, o.y0, o.y1) if axis == 0 else (o.y0, o.y1, o.x0, o.x1)
         if not (c0 < a1 and a0 < c1):
             continue
-        if o1 <= lo + 1e-6:
+        if o1 <= lo + MM_EPS:
             before = min(before, lo - o1)
-        elif o0 >= hi - 1e-6:
+        elif o0 >= hi - MM_EPS:
             after = min(after, o0 - hi)
     return max(before, 0.0), max(after, 0.0)
 
