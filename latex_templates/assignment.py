@@ -7,6 +7,8 @@ import re
 
 import numpy as np
 
+from reportgen.tolerances import ABS_ZERO
+
 from .note import Section
 from .render import Strings, Tex
 
@@ -106,7 +108,7 @@ def scheme_phrases(sc, strings) -> list:
             d2=Tex(_expr_tex(sc.e_distances[1]))))
     else:
         out.append(strings.get("control.scheme.e_none").format(p=sc.f_from, s=sc.slider))
-    key = "control.scheme.guide_vertical" if abs(sc.guide_angle_deg - 90.0) < 1e-9 else "control.scheme.guide_horizontal"
+    key = "control.scheme.guide_vertical" if abs(sc.guide_angle_deg - 90.0) < ABS_ZERO else "control.scheme.guide_horizontal"
     coord = sc.guide_through[0] if key.endswith("vertical") else sc.guide_through[1]
     out.append(strings.get(key).format(s=sc.slider, x=Tex(_expr_tex(coord))))
     return out

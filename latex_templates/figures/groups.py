@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from reportgen.geometry import vec2
+from reportgen.tolerances import ABS_ZERO
 from matplotlib.patches import Circle, Polygon
 
 from .mechanism import world_points
@@ -15,8 +16,8 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
     pts = world_points(linkage, q)
     names = sorted({p for k in group.links for p in linkage.bodies[k].points})
     xy = np.array([pts[n] for n in names])
-    L = max(float(np.ptp(xy[:, 0])), float(np.ptp(xy[:, 1])), 1e-9)
-    span = np.ptp(xy, axis=0) + 1e-9
+    L = max(float(np.ptp(xy[:, 0])), float(np.ptp(xy[:, 1])), ABS_ZERO)
+    span = np.ptp(xy, axis=0) + ABS_ZERO
     h_cm = min(7.0, max(3.5, w_cm * span[1] / span[0] + 1.0))
     fig = new_figure(w_cm, h_cm)
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])

@@ -16,6 +16,7 @@ from matplotlib.patches import Circle, FancyArrowPatch, Polygon
 
 from ..parts import active, tr
 from reportgen.scenes.forces import force_tex
+from reportgen.tolerances import ABS_ZERO, TINY
 
 from . import comma_axes, math_name, new_figure
 from .mechanism import world_points
@@ -65,7 +66,7 @@ def _label(ax, p, text, colour, placed: list, size: float) -> None:
 
 def schematic_lengths(mags: list[float], ref: float) -> list[float]:
     """Arrow lengths on a diagram: ref·√(|F|/F_max), at least 0.25·ref."""
-    top = max(mags + [1e-300])
+    top = max(mags + [TINY])
     return [ref * max(0.25, math.sqrt(m / top)) for m in mags]
 
 
@@ -80,7 +81,7 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
     names = sorted({p for k in links for p in linkage.bodies[k].points})
     xy = np.array([pts[n] for n in names])
     span = np.ptp(xy, axis=0)
-    L = float(max(span.max(), 1e-9))
+    L = float(max(span.max(), ABS_ZERO))
     ref = 0.32 * L
     lengths = schematic_lengths([float(np.hypot(*a["vector"])) for a in arrows], ref)
     ends = []
@@ -91,9 +92,9 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
         ends.append((np.asarray(a["point"], float), np.asarray(a["point"], float) + u * ln))
     allp = np.vstack([xy] + [np.vstack(e) for e in ends]) if ends else xy
     lo, hi = allp.min(0) - 0.1 * L, allp.max(0) + 0.1 * L
-    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-9)
+    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], ABS_ZERO)
     h_cm = min(11.0, max(5.0, w_cm * aspect))
-    w_cm = max(5.0, min(w_cm, h_cm / max(aspect, 1e-9)))
+    w_cm = max(5.0, min(w_cm, h_cm / max(aspect, ABS_ZERO)))
     fig = new_figure(w_cm, h_cm)
     ax = fig.add_axes([0.01, 0.01, 0.98, 0.98])
     for k in links:
@@ -105,7 +106,7 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
             ax.plot(p[:, 0], p[:, 1], "k-", lw=2.0, zorder=2)
         c = p.mean(axis=0)
         d = p[-1] - p[0] if len(p) > 1 else np.array([1.0, 0.0])
-        nrm = np.array([-d[1], d[0]]) / (np.hypot(*d) + 1e-300)
+        nrm = np.array([-d[1], d[0]]) / (np.hypot(*d) + TINY)
         t = c + nrm * 0.06 * L
         ax.text(t[0], t[1], str(k), fontsize=9, ha="center", va="center", zorder=7,
                 bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec="black", lw=0.5))
@@ -127,14 +128,14 @@ def free_body_figure(linkage, q: np.ndarray, links: tuple[int, ...], pairs: list
         p = pts[n]
         c = xy.mean(axis=0)
         d = p - c
-        d = d / (np.hypot(*d) + 1e-300)
+        d = d / (np.hypot(*d) + TINY)
         _label(ax, p - d * 0.06 * L + np.array([0.0, 0.04 * L]), math_name(n), "black", placed, L)
     colour = {"load": LOAD, "found": FOUND, "known": KNOWN}
     for a, (tail, head) in zip(arrows, ends):
         col = colour[a["role"]]
         _arrow(ax, tail, head, col)
         d = head - tail
-        d = d / (np.hypot(*d) + 1e-300)
+        d = d / (np.hypot(*d) + TINY)
         _label(ax, head + d * 0.05 * L, mathtext(a["name"]), col, placed, L)
     for c in couples:
         p = np.asarray(c["point"], float)

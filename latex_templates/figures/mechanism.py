@@ -12,6 +12,7 @@ from matplotlib.transforms import Affine2D
 
 from reportgen.kinematics.constraints import rot
 from reportgen.linkage import Linkage
+from reportgen.tolerances import ABS_ZERO, TINY
 
 
 def world_points(linkage: Linkage, q: np.ndarray) -> dict[str, np.ndarray]:
@@ -28,7 +29,7 @@ def world_points(linkage: Linkage, q: np.ndarray) -> dict[str, np.ndarray]:
 
 def size_of(pts: dict[str, np.ndarray]) -> float:
     arr = np.array(list(pts.values()))
-    return float(max(np.ptp(arr[:, 0]), np.ptp(arr[:, 1]), 1e-9))
+    return float(max(np.ptp(arr[:, 0]), np.ptp(arr[:, 1]), ABS_ZERO))
 
 
 def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, numbers: bool = True,
@@ -52,7 +53,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
         if numbers and alpha == 1 and len(names) >= 2:
             c = xy.mean(axis=0)
             d = xy[1] - xy[0]
-            n = np.array([-d[1], d[0]]) / (np.hypot(*d) + 1e-300)
+            n = np.array([-d[1], d[0]]) / (np.hypot(*d) + TINY)
             p = c + n * 0.035 * L
             ax.text(p[0], p[1], str(k), fontsize=9, ha="center", va="center", color=color,
                     bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec=color, lw=0.5), zorder=6)
@@ -121,7 +122,7 @@ def scheme_figure(linkage: Linkage, q: np.ndarray, w_cm: float = 15.0):
     from . import new_figure
     pts = world_points(linkage, q)
     arr = np.array(list(pts.values()))
-    span = np.ptp(arr, axis=0) + 1e-9
+    span = np.ptp(arr, axis=0) + ABS_ZERO
     h_cm = min(12.0, max(5.0, w_cm * span[1] / span[0] + 2.0))
     fig = new_figure(w_cm, h_cm)
     ax = fig.add_axes([0.02, 0.02, 0.96, 0.96])

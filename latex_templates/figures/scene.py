@@ -21,6 +21,7 @@ from matplotlib.patches import Circle as MplCircle
 from matplotlib.patches import Polygon as MplPolygon
 
 from reportgen.scenes.scene import Arrow, Circle, Label, Polyline, Scene, Segment
+from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..parts import active
 from . import new_figure
@@ -56,7 +57,7 @@ def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = T
     it fill the block (the caption then says the figure is reduced and which sheet has the scale)."""
     x0, y0, x1, y1 = scene.bounds()
     w, h = x1 - x0, y1 - y0
-    fit = min((max_w_mm - 2 * PAD_MM) / max(w, 1e-9), (max_h_mm - 2 * PAD_MM) / max(h, 1e-9))
+    fit = min((max_w_mm - 2 * PAD_MM) / max(w, MM_ROUNDOFF), (max_h_mm - 2 * PAD_MM) / max(h, MM_ROUNDOFF))
     return min(1.0, fit)
 
 
@@ -183,13 +184,13 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
     else:
         p = np.asarray(lb.at)
         v = p - centre
-        base = math.atan2(v[1], v[0]) if np.hypot(*v) > 1e-9 else math.pi / 4
+        base = math.atan2(v[1], v[0]) if np.hypot(*v) > MM_ROUNDOFF else math.pi / 4
         for off in (1.0, 2.0, 3.5, 5.0, 7.0):
             for k in range(16):
                 ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
                 ux, uy = math.cos(ang), math.sin(ang)
-                t = min((w / 2) / abs(ux) if abs(ux) > 1e-9 else math.inf,
-                        (h / 2) / abs(uy) if abs(uy) > 1e-9 else math.inf)
+                t = min((w / 2) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
+                        (h / 2) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
                 cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
     best = None
     for rank, c in enumerate(cands):
@@ -249,7 +250,7 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
         x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
         w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
         over = max(w_mm / max_w_mm, h_mm / max_h_mm)
-        if over <= 1.0 + 1e-9:
+        if over <= 1.0 + RTOL_EQUAL:
             break
         r /= over * 1.001
     fig = new_figure(w_mm / 10.0, h_mm / 10.0)
@@ -279,7 +280,7 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
         elif isinstance(e, Arrow):
             a, b = np.asarray(e.a), np.asarray(e.b)
             d = float(np.hypot(*(b - a)))
-            if d < 1e-9:
+            if d < MM_ROUNDOFF:
                 continue
             colour = COLOURS.get(e.style, "black") if colours else "black"
             head = min(3.0 / r, d)               # a 3 mm head on the page

@@ -21,6 +21,7 @@ from ..render import Tex
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
 from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
+from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 from . import PartContent, tr, unit
 
@@ -28,11 +29,11 @@ NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynami
 
 #: A force or couple whose power is below this share of the largest one is still shown (gravity of
 #: a light crank is small but is part of M_red); exactly zero ones (resistance off) are left out.
-ZERO_FORCE = 1e-12
+ZERO_FORCE = ABS_ROUNDOFF
 
 
 #: |cos α| below this: the force is perpendicular to its point's velocity and does no work.
-PERPENDICULAR = 1e-9
+PERPENDICULAR = RTOL_EQUAL
 
 
 def available(project) -> bool:

@@ -22,6 +22,7 @@ from reportgen.errors import InternalError
 from reportgen.numbers import clean
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
 from reportgen.kinetostatics.reactions import pair_name, perp
+from reportgen.tolerances import RTOL_EQUAL
 
 from . import PartContent, active, tr
 
@@ -62,7 +63,7 @@ def _canon(name: str) -> str | None:
 
 
 def _check(rec: CalcRecord, expected: float, what: str) -> None:
-    if not math.isclose(rec.value, expected, rel_tol=1e-9, abs_tol=1e-9 * max(1.0, abs(expected))):
+    if not math.isclose(rec.value, expected, rel_tol=RTOL_EQUAL, abs_tol=RTOL_EQUAL * max(1.0, abs(expected))):
         raise InternalError("kinetostatics note", f"{what} printed as {rec.value!r}, the replica has {expected!r}")
 
 
