@@ -19,11 +19,6 @@ from .preview import ink_fraction
 
 
 
-def librecad_executable() -> str | None:
-    """Path of ``librecad`` on PATH, or None."""
-    return shutil.which("librecad")
-
-
 def missing_tools() -> list[str]:
     """Which of librecad and pdftoppm are not installed (empty when the check can run)."""
     return [tool for tool in ("librecad", "pdftoppm") if shutil.which(tool) is None]

@@ -533,11 +533,6 @@ def table_cell(value: Any, decimals: int | None = None) -> Tex:
     return escape_latex(value)
 
 
-def unit_text(unit: str) -> Tex:
-    """A unit in running text (escaped)."""
-    return escape_latex(unit)
-
-
 #: Letters that the math font (TeX Gyre Termes Math) does not have: Latin-1 letters with diacritics,
 #: Cyrillic (Russian, Ukrainian, Belarusian …). In math they print as the text font's italic.
 MATH_TEXT_LETTERS: tuple[str, ...] = tuple(

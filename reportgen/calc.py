@@ -208,10 +208,6 @@ class CalcRecord:
     input_digits: int = field(default=4, compare=False)
 
     # ---- forms -------------------------------------------------------------------------------
-    @property
-    def result_decimals(self) -> int:
-        return round_significant_decimals(self.value, self.digits)
-
     def symbolic_latex(self) -> str:
         """The formula in symbols: ``\\omega_1 \\cdot l_{OA}``."""
         return _to_latex(_parse(self.expr), _SymbolicLeaves(self._by_name()))

@@ -91,9 +91,6 @@ class Linkage:
     def moving(self) -> tuple[int, ...]:
         return tuple(sorted(k for k in self.bodies if k != 0))
 
-    def body_points(self, k: int) -> tuple[str, ...]:
-        return self.bodies[k].points
-
     def sketch_phi(self) -> float:
         """Crank angle φ1 of the sketch, rad (axis → moving point, from +x, CCW)."""
         o = self.sketch[self.drive_axis]
@@ -110,13 +107,6 @@ class Linkage:
 
 def _dist(p: Vec, q: Vec) -> float:
     return math.hypot(q[0] - p[0], q[1] - p[1])
-
-
-def _link_path(mech: Mechanism, link_id: int) -> str:
-    for i, ln in enumerate(mech.links):
-        if ln.id == link_id:
-            return f"mechanism.link[{i}]"
-    return f"mechanism.link(id={link_id})"
 
 
 def _local_coordinates(mech: Mechanism, link_index: int) -> dict[str, Vec]:

@@ -91,10 +91,6 @@ class Reeving:
     def width(self) -> float:
         return (2 * self.ratio if self.branches == 2 else self.ratio) * BRANCH_MM
 
-    def hook_sheaves(self) -> int:
-        return self.branches * (self.ratio // 2)
-
-
 def draw_reeving(view: View, rv: Reeving, height: float) -> dict[str, tuple[float, float]]:
     """The reeving scheme with its middle at x = 0, the hook sheaves at y = 0 and the top sheaves at
     ``height``; returns anchor points of its parts (sheet-independent model mm)."""

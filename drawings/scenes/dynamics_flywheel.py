@@ -45,11 +45,6 @@ def sketch_fit(fw, width: float, height: float) -> tuple[float, bool]:
     return candidates[-1], False
 
 
-def sketch_scale(fw, width: float, height: float) -> float:
-    """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` (either arrangement)."""
-    return sketch_fit(fw, width, height)[0]
-
-
 def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False) -> View:
     """Front view (circles and centre lines) and the axial section (hatched) of the disk or rim, the
     section right of the front view or (``stacked``) under it; dimensions in real mm (the view's

@@ -14,7 +14,6 @@ from drawings import style
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
-from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
 from reportgen.plans import Plan
@@ -60,20 +59,6 @@ def label_region(view: View, small: bool) -> Polygon:
     r = view.rect
     strip = 6.0 if small else STRIP
     return box(r.x0, r.y0 + (0.0 if small else strip), r.x1, r.y1 - strip)
-
-
-def _groups(plan: Plan, keys: list[str]) -> list[tuple[tuple[float, float], list[str]]]:
-    """Plan points grouped by position (coincident points share a label), pole first."""
-    out: list[tuple[tuple[float, float], list[str]]] = []
-    for k in keys:
-        p = plan.points[k]
-        for pos, names in out:
-            if math.dist(pos, p) < SAME_MM:
-                names.append(k)
-                break
-        else:
-            out.append((vec2(p), [k]))
-    return out
 
 
 @dataclass(frozen=True)

@@ -47,10 +47,6 @@ def _guide_dir(kin: KinematicsResult, i: int, slide) -> np.ndarray:
     return positions.guide_dir(kin, i, slide)
 
 
-def _centre(data: SchemeData) -> np.ndarray:
-    return positions.centre(data)
-
-
 # ---------------------------------------------------------------------------------------------
 
 

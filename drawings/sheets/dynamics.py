@@ -38,16 +38,8 @@ def available(project: Project) -> bool:
 def graph_labels(project: Project) -> list[str]:
     """The names of the graph's positions, as the note's table prints them (the same catalogue
     words: the switching angles and the corners of the resistance law)."""
-    from reportgen.scenes.numbering import diagram_labels
-    words = {"н.р.х.": tr("dynamics.m48"), "к.р.х.": tr("dynamics.m49")}
-    out = []
-    for x in diagram_labels(project.dynamics):
-        if x in words:
-            x = words[x]
-        elif x.startswith("и") and x[1:].isdigit():
-            x = tr("dynamics.m19", corner=int(x[1:]))
-        out.append(x)
-    return out
+    from reportgen.scenes.numbering import translated_diagram_labels
+    return translated_diagram_labels(project.dynamics, tr)
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:

@@ -61,13 +61,6 @@ def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = T
     return min(1.0, fit)
 
 
-def reduction_text(r: float) -> str:
-    """1:2,5 for 0.4."""
-    x = 1.0 / r
-    s = f"{x:.2f}".rstrip("0").rstrip(".").replace(".", ",")
-    return f"1:{s}"
-
-
 def _mathtext(tex: str) -> str:
     """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):

@@ -20,7 +20,7 @@ from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
-from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
+from reportgen.scenes.numbering import diagram_label, first_step, sense, translated_diagram_labels
 from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 from . import PartContent, tr, unit
@@ -211,15 +211,7 @@ def _translates(lk, k: int) -> bool:
 def position_labels(res, positions: int) -> list[str]:
     """Names of the diagrams' positions (:func:`reportgen.scenes.numbering.diagram_labels`) in the
     note's language: the switching angles and the corners of the resistance law translated."""
-    words = {"н.р.х.": tr("dynamics.m48"), "к.р.х.": tr("dynamics.m49")}
-    out = []
-    for x in diagram_labels(res, positions):
-        if x in words:
-            x = words[x]
-        elif x.startswith("и") and x[1:].isdigit():
-            x = tr("dynamics.m19", corner=int(x[1:]))
-        out.append(x)
-    return out
+    return translated_diagram_labels(res, tr, positions)
 
 
 def graph_rows(res, labels: list[str]) -> list[list]:

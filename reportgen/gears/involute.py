@@ -62,8 +62,3 @@ def inv_inverse(value, *, tol: float = INV_INVERSE_TOL, max_iter: int = 60):
         if np.all(np.abs(step) <= tol * alpha):
             break
     return float(alpha) if alpha.ndim == 0 else alpha
-
-
-def profile_angle(rb, r):
-    """Profile angle αy of the involute at radius r of a base circle rb: cos αy = rb / r."""
-    return np.arccos(np.clip(np.asarray(rb, dtype=float) / np.asarray(r, dtype=float), -1.0, 1.0))

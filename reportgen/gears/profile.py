@@ -37,16 +37,6 @@ def half_thickness_angle(r, rb: float, s: float, d: float, alpha: float):
     return s / d + inv(alpha) - inv(ar)
 
 
-def involute_flank(rb: float, s: float, d: float, alpha: float, r_from: float, r_to: float,
-                   n: int = 60, side: int = 1) -> np.ndarray:
-    """Points of one involute flank (gear frame, tooth axis +y) from radius r_from to r_to;
-    side = +1 the right flank (x > 0), −1 the left one. Radii below rb are raised to rb."""
-    r = np.linspace(max(r_from, rb), r_to, n)
-    psi = half_thickness_angle(r, rb, s, d, alpha)
-    theta = math.pi / 2 - side * psi
-    return _ro(np.column_stack((r * np.cos(theta), r * np.sin(theta))))
-
-
 def rack_cutter_polygon(m: float, alpha: float, ha: float, c: float, rho_f: float,
                         teeth: int = 4, arc_segments: int = 12) -> Polygon:
     """The generating rack in its own frame: x along the datum line, y = 0 on it, y > 0 towards

@@ -16,7 +16,6 @@ Closed forms (with P*, S* the known pins, Q the inner pair):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -47,13 +46,6 @@ def set_pose_two_points(q: np.ndarray, k: int, pl: tuple, ql: tuple, wp: np.ndar
     th = np.arctan2(wq[:, 1] - wp[:, 1], wq[:, 0] - wp[:, 0]) - ang_local
     q[:, k, 2] = th
     q[:, k, :2] = wp - rot(th, pl)
-
-
-@dataclass
-class Infeasible:
-    """Where a group does not assemble: mask over positions and the inequality as text."""
-    mask: np.ndarray
-    describe: object  # callable(index) -> str
 
 
 class DyadSolver:

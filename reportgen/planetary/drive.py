@@ -47,11 +47,6 @@ class DriveCheck:
     omega_crank_achieved: float
     deviation: float
 
-    @property
-    def omega_planetary_out(self) -> float:
-        return self.required.omega_planetary_in / abs(self.planetary_ratio)
-
-
 DEFAULT_INPUT_OMEGA = 100.0
 """rad/s: the reducer's input speed when neither the drive nor a motor speed gives one (≈ 955 rpm)."""
 

@@ -12,6 +12,7 @@ names the grid whenever the two numbers differ."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -57,6 +58,25 @@ def diagram_labels(res, positions: int | None = None) -> list[str]:
             corner += 1
             name = f"и{corner}"
         out.append(name)
+    return out
+
+
+#: Catalogue keys of the diagrams' named positions: the switching angles and the resistance law's corners.
+LABEL_KEYS = {"н.р.х.": "dynamics.m48", "к.р.х.": "dynamics.m49"}
+CORNER_KEY = "dynamics.m19"
+
+
+def translated_diagram_labels(res, tr: Callable[..., str], positions: int | None = None) -> list[str]:
+    """:func:`diagram_labels` in the reader's language, the one helper of the note's table and sheet 3
+    (so the two name a position alike): «н.р.х.» / «к.р.х.» and the corners «иN» through the
+    catalogue (``tr`` is the caller's lookup, ``tr(key, **values)``: the note's or the sheet's)."""
+    out = []
+    for x in diagram_labels(res, positions):
+        if x in LABEL_KEYS:
+            x = tr(LABEL_KEYS[x])
+        elif x.startswith("и") and x[1:].isdigit():
+            x = tr(CORNER_KEY, corner=int(x[1:]))
+        out.append(x)
     return out
 
 

@@ -48,13 +48,6 @@ def round_scale(value: float, max_mm: float, series: tuple[float, ...] = PLAN_SE
     return round_up(value / max_mm, series)
 
 
-def ratio_text(paper: float, real: float) -> str:
-    """«1:2,5», «2:1»."""
-    def f(x: float) -> str:
-        return (f"{x:.1f}".rstrip("0").rstrip(".")).replace(".", ",")
-    return f"{f(paper)}:{f(real)}"
-
-
 def gost_scale(width_m: float, height_m: float, max_w_mm: float, max_h_mm: float) -> tuple[float, str]:
     """The largest ГОСТ 2.302 scale at which width × height (m) fits max_w × max_h (mm); returns
     (paper mm per metre, «1:2,5»). The smallest scale of the list if none fits."""

@@ -42,3 +42,28 @@ def test_diagram_label_of_press():
     # seed 000's press: position 2 of the 8-position plan (φ1 = 85,23°) is position 3 of the 12-position diagrams
     assert diagram_label(project.dynamics, float(project.phi[2])) == "3"
     assert diagram_label(project.dynamics, float(project.phi[0])) == "0"
+
+
+@pytest.mark.parametrize("lang", ["ru", "uk", "en"])
+def test_note_and_sheet_translate_the_diagrams_names_alike(lang):
+    """One helper names the diagrams' positions in the note's table and on sheet 3: every catalogue
+    key it asks for exists, and the names are the catalogue's words in the order of diagram_labels."""
+    from latex_templates.render import Strings
+    from reportgen.scenes.numbering import CORNER_KEY, LABEL_KEYS, translated_diagram_labels
+
+    strings = Strings(lang)
+    for key in (*LABEL_KEYS.values(), CORNER_KEY):
+        assert strings.has(key), (lang, key)
+    project = Project(load_task(ROOT / "examples" / "press" / "task.toml"))
+    raw = diagram_labels(project.dynamics)
+    seen = []
+    named = translated_diagram_labels(project.dynamics, lambda key, **kw: seen.append((key, kw)) or f"<{key}>")
+    assert len(named) == len(raw)
+    for r, n in zip(raw, named):
+        if r in LABEL_KEYS:
+            assert n == f"<{LABEL_KEYS[r]}>"
+        elif r.startswith("и"):
+            assert n == f"<{CORNER_KEY}>"
+        else:
+            assert n == r
+    assert any(r in LABEL_KEYS for r in raw)           # the press has its switching angles named
