@@ -9,7 +9,7 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass
-from typing import Iterable, Literal, Sequence
+from typing import Iterable, Sequence
 
 import shapely
 from shapely.geometry import box
@@ -18,7 +18,6 @@ from shapely.geometry.base import BaseGeometry
 from reportgen.errors import BuildError, GeometryError, ParameterError
 from reportgen.tolerances import AREA_EPS_MM2, MM_EPS, MM_ROUNDOFF
 
-Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right", "center"]
 CORNERS: tuple[str, ...] = ("top-left", "top-right", "bottom-left", "bottom-right", "center")
 
 

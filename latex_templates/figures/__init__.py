@@ -58,9 +58,6 @@ def comma(x: float, _pos=None, mark: str | None = None) -> str:
     return significant(x, 6, mark=mark or decimal_mark()).replace("-", "\u2212")
 
 
-COMMA = FuncFormatter(comma)
-
-
 def new_figure(w_cm: float = 16.0, h_cm: float = 10.0):
     plt.rcParams.update(STYLE)
     fig = plt.figure(figsize=(w_cm / 2.54, h_cm / 2.54))

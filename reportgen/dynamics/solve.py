@@ -23,9 +23,6 @@ from ..geometry import readonly as _ro
 MIN_POSITIONS = 360
 
 
-#: The sizes of the graphs when the caller gives none (frozen: safe as a default).
-DEFAULT_LAYOUT = GraphLayout()
-
 
 def check_delta(delta: float) -> float:
     if not (isinstance(delta, (int, float)) and math.isfinite(delta) and 0 < delta < 1):

@@ -27,8 +27,6 @@ from ..tolerances import ABS_ROUNDOFF, TINY
 
 #: A position whose transmission angle is below this is flagged as near a singular position.
 NEAR_SINGULAR_DEG = 5.0
-#: The course's usual design limit for the transmission angle (reported, not enforced).
-RECOMMENDED_MIN_DEG = 40.0
 
 
 def _acute(u: np.ndarray, v: np.ndarray) -> np.ndarray:
