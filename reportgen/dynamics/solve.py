@@ -23,7 +23,6 @@ from ..geometry import readonly as _ro
 MIN_POSITIONS = 360
 
 
-
 def check_delta(delta: float) -> float:
     if not (isinstance(delta, (int, float)) and math.isfinite(delta) and 0 < delta < 1):
         raise DynamicsInputError("dynamics.delta", f"{delta!r} is not a coefficient of non-uniformity",
