@@ -1,6 +1,9 @@
 """Session-wide settings: builds made by tests do not use the user's build cache (a test that is
 about the cache points REPORTGEN_CACHE at a folder of its own)."""
 import os
+from pathlib import Path
+
+import pytest
 
 os.environ["REPORTGEN_CACHE"] = "off"
 
@@ -10,3 +13,72 @@ from drawings.words import use_catalogue  # noqa: E402
 from latex_templates.render import Strings  # noqa: E402
 
 use_catalogue(Strings)
+
+
+# ------------------------------------------------------------------------------------ make check
+# Tests that take seconds of CPU each without building a document (whole sections rendered for
+# every example, brute-force cross-checks, the bench, subprocess runs under other hash seeds) are
+# `slow` as well, so that `make check` (-m "not slow") stays within a minute on two cores; `make
+# test` and CI run them all (docs/testing.md). Listed here rather than in each file so that the list
+# is one place to read and to trim; tests/test_slow_list.py fails on an entry that names no test.
+SLOW_TESTS = (
+    "tests/dynamics_presentation/test_dyn_note.py::test_section_renders_and_every_record_reevaluates",
+    "tests/scenes/test_needs.py::test_parts_read_only_what_they_declare",
+    "tests/hard_cases/test_hard_bench.py::test_bench_quick_writes_tables_and_plot",
+    "tests/planetary/test_search.py::test_same_best_as_brute_force_on_a_grid_of_targets",
+    "tests/planetary/test_search.py::test_same_best_as_brute_force_on_small_ranges",
+    "tests/gears/test_shifts_checks.py::test_auto_satisfies_every_check",
+    "tests/kinetostatics_presentation/test_kst_note.py::test_kst_section_renders_and_records_reevaluate",
+    "tests/kinetostatics_presentation/test_kst_note.py::test_kst_warning_near_dead_centre",
+    "tests/kinetostatics_presentation/test_balance_signs.py::test_every_printed_balance_holds_with_its_printed_result",
+    "tests/scenes/test_note_sheet_same.py::test_plan_segments_equal_in_note_and_sheet",
+    "tests/scenes/test_numbering.py::test_same_angle_same_number",
+    "tests/speed/test_pipeline.py::test_the_sheets_run_in_parallel_with_the_note",
+    "tests/speed/test_dxf_hash_seed.py::test_sheet_dxf_is_the_same_under_different_hash_seeds",
+    "tests/gears_presentation/test_gears_presentation.py::test_section_renders_and_every_record_reevaluates",
+    "tests/gears_presentation/test_gears_presentation.py::test_sheet_audit_and_no_overlaps",
+    "tests/gears_presentation/test_gears_presentation.py::test_gear_only_task_builds_section_and_sheet_without_the_linkage",
+    "tests/dynamics/test_examples.py::test_motion_cross_checked_by_solve_ivp",
+    "tests/kinematics_presentation/test_kin_part.py::test_crank_vectors_on_the_plans",
+    "tests/test_errors.py::test_a_failed_stage_keeps_out_failed",
+    "tests/hard_cases/test_hard_stages.py::test_small_pinion_auto_shifts_refused_with_the_inequalities",
+    "tests/taskfile/test_taskfile_fuzz.py::test_mutated_valid_tasks",
+    "tests/sheet1/test_sheet1_kinematics.py::test_scale_captions_come_from_the_results",
+    "tests/sheet1/test_sheet1_kinematics.py::test_registered_and_drawn",
+    "tests/kinetostatics_presentation/test_kst_sheet.py::test_kst_sheet_audit_and_overlaps",
+    "tests/dynamics_presentation/test_dyn_note.py::test_analysed_position_is_the_solvers",
+    "tests/dynamics_presentation/test_dyn_note.py::test_numbers_are_the_results",
+    "tests/gears_presentation/test_gears_presentation.py::test_failed_check_is_stated_as_a_finding",
+    "tests/gears_presentation/test_gears_presentation.py::test_records_are_the_solver_numbers",
+    "tests/gears_presentation/test_gears_presentation.py::test_sheet_halves_follow_the_task",
+    "tests/cli/test_solve.py::test_at_angles",
+    "tests/control/test_build.py::test_new_build_without_latex",
+    "tests/crane/test_note_and_sheets.py::test_build_writes_note_sheets_and_results",
+    "tests/bad_input/test_bad_input.py::test_latex_special_characters_print_literally",
+    "tests/kinetostatics/test_position_and_cli.py::test_cli_shaper_force_at_45",
+)
+
+
+def _slow_entry(nodeid: str) -> str | None:
+    for entry in SLOW_TESTS:
+        if nodeid == entry or nodeid.startswith(entry + "["):
+            return entry
+    return None
+
+
+def stale_slow_entries(root: Path) -> list[str]:
+    """Entries whose file is gone or no longer defines the test (renamed or moved): tests/test_slow_list.py."""
+    stale = []
+    for entry in SLOW_TESTS:
+        path, name = entry.split("::")
+        file = root / path
+        if not file.is_file() or f"def {name}(" not in file.read_text(encoding="utf-8"):
+            stale.append(entry)
+    return stale
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(items):
+    for item in items:
+        if _slow_entry(item.nodeid) is not None:
+            item.add_marker(pytest.mark.slow)
