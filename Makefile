@@ -42,8 +42,9 @@ demo: system venv
 test: system venv
 	$(PY) -m pytest -n 2 -p no:cacheprovider tests
 
-# The fast loop for developers: ruff + mypy, then every test that needs no TeX and no LibreCAD
-# (tests marked slow are left to `make test`).
+# The fast loop for developers, within a minute on two cores: ruff + mypy, then every test not
+# marked slow (slow: TeX, LibreCAD, builds, or seconds of CPU — tests/conftest.py SLOW_TESTS; they
+# are left to `make test`, see docs/testing.md).
 check: venv
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/mypy
