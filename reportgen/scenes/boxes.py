@@ -18,6 +18,7 @@ class GraphLayout:
     e_height: float = 80.0        # span of ΔE
     j_width: float = 160.0        # largest J_red (from J = 0)
     pole_step: float = 10.0       # H is a multiple of this
+    omega_height: float = 36.0    # largest |ω − ω_m| (or the band) of ω(φ)
 
 
 @dataclass(frozen=True)

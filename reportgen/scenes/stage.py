@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from functools import cached_property
 
+from .dynamics import DynamicsScenes, dynamics_scenes
 from .plans import plan_scene
 from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
 from .scene import Scene
@@ -39,3 +40,10 @@ class Scenes:
     def acceleration_plan(self) -> Scene:
         v, a = self.project.plans
         return plan_scene(a, (set(v.points) - {"p"}) | {"π"})
+
+    @cached_property
+    def dynamics(self) -> DynamicsScenes | None:
+        """The diagrams of section 3 (sheet 3): M_red, A, ΔE, Wittenbauer, J_red, ω (None without
+        [dynamics])."""
+        res = self.project.dynamics
+        return None if res is None else dynamics_scenes(res, self.project.boxes.diagrams)
