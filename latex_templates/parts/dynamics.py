@@ -20,11 +20,12 @@ from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
+from reportgen.scenes.dynamics import MU_J, MU_M, DynamicsScenes
 from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
 
 from . import PartContent, tr, unit
 
-NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics")
+NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics", "scenes")
 
 #: A force or couple whose power is below this share of the largest one is still shown (gravity of
 #: a light crank is small but is part of M_red); exactly zero ones (resistance off) are left out.
@@ -235,29 +236,30 @@ def _sense(res) -> float:
     return sense(res)
 
 
-def scale_records(res) -> dict[str, CalcRecord | Var]:
-    g = res.graphical
-    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Tex(tr("dynamics.m20")))
+def scale_records(scenes: DynamicsScenes) -> dict[str, CalcRecord | Var]:
+    """The scales of the diagrams as sheet 3 draws them (read from the scenes)."""
+    mo = scenes.moment
+    L = Var("L", r"L_\varphi", mo.values["L_phi"], "мм", Tex(tr("dynamics.m20")))
     mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("dynamics.m21"))
-    mu_M = Var("mu_M", r"\mu_M", g.mu_M, "Н·м/мм", tr("dynamics.m02"))
-    H = Var("H", "H", g.H, "мм", tr("dynamics.m03"))
+    mu_M = Var("mu_M", r"\mu_M", mo.scale(MU_M).value, "Н·м/мм", tr("dynamics.m02"))
+    H = Var("H", "H", mo.values["H"], "мм", tr("dynamics.m03"))
     mu_A = record(r"\mu_A", "mu_M * mu_phi * H", "Дж/мм", mu_M, H, mu_phi=mu_phi,
                   meaning=tr("dynamics.m22"))
-    k = Var("k", "k", float(g.enlargement), "", tr("dynamics.m04"))
+    k = Var("k", "k", scenes.energy.values["k"], "", tr("dynamics.m04"))
     mu_E = record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A,
                   meaning=tr("dynamics.m23"))
-    mu_J = Var("mu_J", r"\mu_J", g.mu_J, "кг·м²/мм", tr("dynamics.m05"))
+    mu_J = Var("mu_J", r"\mu_J", scenes.wittenbauer.scale(MU_J).value, "кг·м²/мм", tr("dynamics.m05"))
     return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
 
 
-def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
-    g = res.graphical
+def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
+    """ψmax, ψmin by the course's formula, KL measured on the Wittenbauer scene and J_fly from it."""
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
     psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
                      omega, delta, meaning=Tex(tr("dynamics.m50")), **common)
     psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
                      omega, delta, meaning=Tex(tr("dynamics.m51")), **common)
-    KL = Var("KL", "KL", g.KL_mm, "мм", Tex(tr("dynamics.m24")))
+    KL = Var("KL", "KL", scenes.wittenbauer.values["KL_mm"], "мм", Tex(tr("dynamics.m24")))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
                   mu_E=sc["mu_E"], meaning=tr("dynamics.m25"))
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
@@ -373,7 +375,8 @@ def content(project) -> PartContent:
     from ..figures import dynamics as fig
     from ..numbers import num
     from ..render import Strings
-    from .kinematics import detail_position
+    from ..figures.scene import scene_figure
+    from .kinematics import detail_position, scene_caption
 
     res = project.dynamics
     kin = project.kinematics
@@ -387,17 +390,21 @@ def content(project) -> PartContent:
     positions = int(round(2 * math.pi / float(_first_step(res.graphical.theta))))
     labels = position_labels(res, positions)
     i_dyn = diagram_label(res, float(kin.phi[i]))
-    sc = scale_records(res)
-    tg = tangent_records(res, sc, omega, delta)
+    scenes = project.scenes.dynamics
+    sc = scale_records(scenes)
+    tg = tangent_records(scenes, sc, omega, delta)
     ex = exact_records(res, omega, delta)
     mz = merzalov_records(res, omega, delta)
     fw = flywheel_records(res, cast(CalcRecord, ex["J_ex"])) if res.exact.J_fly > 0 else None
     drv = drive_records(res)
     rows, omegas = method_rows(project, res)
     mot = motion_records(res)
+    fig_work = scene_figure(scenes.column_group())
+    fig_witt = scene_figure(scenes.wittenbauer_group())
+    fig_note = {"dyn_work": scene_caption(project, fig_work, 3), "dyn_wittenbauer": scene_caption(project, fig_witt, 3)}
     figures = {
-        "dyn_work": fig.work_figure(res, labels),
-        "dyn_wittenbauer": fig.wittenbauer_figure(res),
+        "dyn_work": fig_work,
+        "dyn_wittenbauer": fig_witt,
         "dyn_omega": fig.omega_figure(res, omegas),
         "dyn_flywheel": fig.flywheel_figure(res.flywheel),
     }
@@ -412,7 +419,9 @@ def content(project) -> PartContent:
         "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
         "J_var": float(res.J_red.max() - res.J_red.min()), "J_mean": float(res.J_red.mean()),
         "omega": omega, "delta": delta, "shape": res.flywheel.shape,
-        "index_K": labels[res.graphical.index_K], "index_L": labels[res.graphical.index_L],
+        "index_K": labels[int(scenes.wittenbauer.values["index_K"])],
+        "index_L": labels[int(scenes.wittenbauer.values["index_L"])], "fig_note": fig_note,
+        "fig_w": {k: f"{f.width_cm:.2f}cm" for k, f in (("dyn_work", fig_work), ("dyn_wittenbauer", fig_witt))},
         "theta_K": math.degrees(res.exact.theta_K), "theta_L": math.degrees(res.exact.theta_L),
         "J_zero": res.exact.J_fly <= 0,
         "angles": angle_table(project),

@@ -19,7 +19,7 @@ J_red(φ) together as the construction is made (ΔE levels shared, J axis shared
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -53,6 +53,17 @@ class DynamicsScenes:
     #: the names of the diagrams' positions (:func:`reportgen.scenes.numbering.diagram_labels`)
     positions: tuple[str, ...]
 
+    def column_group(self) -> Scene:
+        """M_red(φ), A(φ) and ΔE(φ) one under the other on one φ axis length (as sheet 3's column)."""
+        parts, top = [], 0.0
+        for sc in (self.moment, self.work, self.energy):
+            y0, y1 = sc.bounds()[1], sc.bounds()[3]
+            dy = top - y1
+            parts.append((sc, 0.0, dy, sc.name))
+            top = y0 + dy - GROUP_GAP_MM
+        return merged("column_group", parts, self.moment.scales + self.work.scales[:1] + self.energy.scales[:1],
+                      {**self.moment.values, **self.energy.values})
+
     def wittenbauer_group(self) -> Scene:
         """ΔE(φ) on the left, the Wittenbauer diagram right of it at the same ΔE level, J_red(φ)
         turned under the Wittenbauer diagram on the same J axis (the construction of φ's elimination)."""
@@ -60,7 +71,10 @@ class DynamicsScenes:
         ex1 = e.bounds()[2]
         dx = ex1 + GROUP_GAP_MM
         dy_j = w.bounds()[1] - GROUP_GAP_MM
-        return merged("wittenbauer_group", ((e, 0.0, 0.0, "energy"), (w, dx, 0.0, ""), (j, dx, dy_j, "inertia")),
+        # the positions are numbered on ΔE(φ) and J_red(φ); on the small Wittenbauer curve between
+        # them their numbers would crowd (the sheet, at 1:1, numbers its points)
+        w_plain = replace(w, labels=tuple(lb for lb in w.labels if lb.role != "number"))
+        return merged("wittenbauer_group", ((e, 0.0, 0.0, "energy"), (w_plain, dx, 0.0, ""), (j, dx, dy_j, "inertia")),
                       w.scales, w.values)
 
 
