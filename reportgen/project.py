@@ -32,7 +32,7 @@ if TYPE_CHECKING:  # the planetary package is imported when a task has [planetar
 CYCLE_POINTS = 361
 
 #: The stages of a project: what a part of the note or a sheet declares in its ``NEEDS``.
-STAGES = frozenset({"linkage", "structure", "model", "strokes", "phi", "kinematics", "analysed", "plans",
+STAGES = frozenset({"linkage", "structure", "model", "strokes", "phi", "kinematics", "analysed", "plans", "output_diagrams",
                     "scenes", "kinetostatics", "balancing_cycle", "balancing_cycle_dense", "resistance",
                     "gears", "planetary", "dynamics", "crane"})
 
@@ -217,6 +217,15 @@ class Project:
             return None
         from .crane import crane_calc
         return crane_calc(self.task.crane)
+
+    @cached_property
+    def output_diagrams(self):
+        """The s–v–a diagrams of the output (reportgen.diagrams.Diagrams) from position 0, with the
+        chord replica at ``diagrams.INTERVALS``; None if the output has no extreme positions."""
+        if self.strokes is None:
+            return None
+        from .diagrams import INTERVALS, build_diagrams
+        return build_diagrams(self.model, self.strokes, float(self.phi[0]), n=INTERVALS)
 
     @cached_property
     def dynamics(self):

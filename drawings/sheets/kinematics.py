@@ -17,13 +17,13 @@ from drawings.scenes import kinematics_diagrams as kd
 from drawings.scenes import kinematics_plans as kp
 from drawings.scenes import kinematics_scheme as ks
 from reportgen.errors import BuildError
-from reportgen.diagrams import Diagrams, build_diagrams
+from reportgen.diagrams import Diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
 from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
-                            "plans", "scenes")
+                            "plans", "scenes", "output_diagrams")
 
 
 def sheet_title() -> str:
@@ -41,8 +41,6 @@ def __getattr__(name: str):
 SCHEME_MAX_MM = (470.0, 400.0)
 #: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
-#: Intervals of the φ axis of the diagrams (as the note's section draws them).
-INTERVALS = 24
 #: The small velocity plans: the crank's vector is at most this long, mm.
 SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
 #: Gap between views, and between the two plans of the analysed position put together, mm.
@@ -61,10 +59,8 @@ def analysed_position(project: Project) -> int:
 
 
 def diagrams_of(project: Project) -> Diagrams | None:
-    if project.strokes is None:
-        return None
-    return build_diagrams(project.model, project.strokes, float(project.phi[0]),
-                          n=INTERVALS)
+    """The s–v–a diagrams of the output (the project's stage, the note's)."""
+    return project.output_diagrams
 
 
 def image_keys(project: Project) -> set[str]:
@@ -111,7 +107,9 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         st = project.strokes
         assert st is not None  # the diagrams are drawn between the extreme positions
         start = math.degrees((d.sign * (st.phi_start - d.phi0)) % (2 * math.pi))
-        kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
+        scene = project.scenes.output_diagrams
+        assert scene is not None  # drawn from the same stage
+        kd.add_diagrams_view(sheet, d, scene, len(project.phi), start, st.working_deg, "top-right")
     # the plans of the analysed position (the note's scales), the table of scales
     keys = image_keys(project)
     if control and cs.is_a3(project):   # A3: the plans at round scales of their own (printed on it)

@@ -9,13 +9,12 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import Var, record
-from reportgen.diagrams import build_diagrams
 from reportgen.plans import MEASURE_MM
 
 from . import PartContent, tr
 
 NEEDS = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
-         "scenes")
+         "scenes", "output_diagrams")
 
 
 def available(project) -> bool:
@@ -74,7 +73,6 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
 
 
 def content(project) -> PartContent:
-    from ..figures.plans import diagrams_figure
     from ..figures.scene import scene_figure
 
     lk, st, kin = project.linkage, project.structure, project.kinematics
@@ -214,15 +212,17 @@ def content(project) -> PartContent:
     # --- diagrams ------------------------------------------------------------------------------
     diag = None
     if strokes is not None:
-        dg = build_diagrams(project.model, strokes, float(project.phi[0]), n=24)
-        figures["kin_diagrams"] = diagrams_figure(dg)
-        L = Var("L", "L", dg.axis_mm, "мм", Tex(tr("kinematics.m21")))
+        dg = project.output_diagrams
+        dg_scene = project.scenes.output_diagrams
+        assert dg is not None and dg_scene is not None     # the output has strokes
+        figures["kin_diagrams"] = scene_figure(dg_scene)
+        L = Var("L", "L", dg_scene.values["L"], "мм", Tex(tr("kinematics.m21")))
         mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("kinematics.m22"))
         mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning=tr("kinematics.m23"))
-        H1 = Var("H1", "H_1", dg.H1, "мм", tr("kinematics.m16"))
-        H2 = Var("H2", "H_2", dg.H2, "мм", tr("kinematics.m17"))
+        H1 = Var("H1", "H_1", dg_scene.values["H1"], "мм", tr("kinematics.m16"))
+        H2 = Var("H2", "H_2", dg_scene.values["H2"], "мм", tr("kinematics.m17"))
         unit_s = "м/мм" if dg.unit == "м" else "рад/мм"
-        mu_s = Var("mu_s", r"\mu_s", dg.mu_s, unit_s, tr("kinematics.m18"))
+        mu_s = Var("mu_s", r"\mu_s", dg_scene.scales[0].value, unit_s, tr("kinematics.m18"))
         mu_vd = record(r"\mu_{v}", "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
                        mu_s, H1, mu_t=mu_t, meaning=tr("kinematics.m24"))
         mu_ad = record(r"\mu_{a}", "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
@@ -234,10 +234,10 @@ def content(project) -> PartContent:
     fig_a = scene_figure(scenes.acceleration_plan)
     figures["kin_vplan"] = fig_v
     figures["kin_aplan"] = fig_a
-    fig_w = {name: f"{f.width_cm:.2f}cm" for name, f in
-             (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a))}
-    fig_note = {name: scene_caption(project, f) for name, f in
-                (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a))}
+    scene_figs = (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a)) + \
+        ((("kin_diagrams", figures["kin_diagrams"]),) if "kin_diagrams" in figures else ())
+    fig_w = {name: f"{f.width_cm:.2f}cm" for name, f in scene_figs}
+    fig_note = {name: scene_caption(project, f) for name, f in scene_figs}
     trans = [{"key": g.key, "label": g.label, "min": float(np.min(kin.transmission_deg[g.key])),
               "at": int(np.argmin(kin.transmission_deg[g.key]))} for g in st.groups[1:]]
     ctx = {

@@ -5,6 +5,7 @@ from __future__ import annotations
 from functools import cached_property
 
 from .dynamics import DynamicsScenes, dynamics_scenes
+from .output_diagrams import output_diagrams_scene
 from .plans import plan_scene
 from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
 from .scene import Scene
@@ -47,3 +48,9 @@ class Scenes:
         [dynamics])."""
         res = self.project.dynamics
         return None if res is None else dynamics_scenes(res, self.project.boxes.diagrams)
+
+    @cached_property
+    def output_diagrams(self) -> Scene | None:
+        """The s–v–a diagrams of the output (sheet 1, section 1; None if the output has no strokes)."""
+        d = self.project.output_diagrams
+        return None if d is None else output_diagrams_scene(d, len(self.project.phi))
