@@ -105,9 +105,12 @@ def output_diagrams_scene(d: Diagrams, positions: int) -> Scene:
     ents: list[Entity] = []
     labels: list[Label] = []
     names = ("s", "v", "a")
-    for (up, down), o, name in zip(rng, origins, names):
-        ents.append(Segment(f"{name}:axis:phi", o, (o[0] + d.axis_mm + RIGHT_MM - 6.0, o[1]), "thin"))
-        ents.append(Segment(f"{name}:axis:y", (o[0], o[1] - down), (o[0], o[1] + up + 10.0), "thin"))
+    y_names = ("s", "v", "a") if d.unit == "м" else (r"\psi", r"\omega", r"\varepsilon")
+    for (up, down), o, name, y_name in zip(rng, origins, names, y_names):
+        x_end, y_end = (o[0] + d.axis_mm + RIGHT_MM - 6.0, o[1]), (o[0], o[1] + up + 10.0)
+        ents.append(Segment(f"{name}:axis:phi", o, x_end, "thin"))
+        ents.append(Segment(f"{name}:axis:y", (o[0], o[1] - down), y_end, "thin"))
+        labels += [Label(r"\varphi", f"{name}:axis:phi", x_end), Label(y_name, f"{name}:axis:y", y_end)]
     # s(φ)
     o = origins[0]
     ents.append(Polyline("s:exact", tuple(zip(map(float, o[0] + dense_x), map(float, o[1] + np.asarray(d.s) / d.mu_s))),
