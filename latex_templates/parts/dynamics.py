@@ -222,13 +222,23 @@ def position_labels(res, positions: int) -> list[str]:
     return out
 
 
-def graph_rows(res, labels: list[str]) -> list[list]:
+def _ordinates(scene, id_: str = "curve", axis: int = 1) -> list[float]:
+    """The ordinates (``axis`` 1) or abscissae (0) of a scene's polyline, mm as drawn."""
+    e = scene.entity(id_)
+    return [float(p[axis]) for p in e.points]
+
+
+def graph_rows(res, scenes: DynamicsScenes, labels: list[str]) -> list[list]:
+    """Table 3.1: φ1, M_red, and the lengths of sheet 3's diagrams (read from their scenes) at the
+    diagrams' positions."""
     g = res.graphical
+    y_M, y_A, y_E = (_ordinates(sc) for sc in (scenes.moment, scenes.work, scenes.energy))
+    x_J = _ordinates(scenes.wittenbauer, axis=0)
+    mu_M, mu_J = scenes.moment.scale(MU_M).value, scenes.wittenbauer.scale(MU_J).value
     rows = []
     for j in range(g.theta.size - 1):
         phi = math.degrees(float(np.mod(res.phi[0] + _sense(res) * g.theta[j], 2 * math.pi)))
-        rows.append([labels[j], phi, float(g.M_mm[j] * g.mu_M), float(g.M_mm[j]), float(g.a_mm[j]),
-                     float(g.e_mm[j]), float(g.j_mm[j] * g.mu_J), float(g.j_mm[j])])
+        rows.append([labels[j], phi, y_M[j] * mu_M, y_M[j], y_A[j], y_E[j], x_J[j] * mu_J, x_J[j]])
     return rows
 
 
@@ -413,7 +423,7 @@ def content(project) -> PartContent:
         "i": _position_ref(project, i, i_dyn, short=True), "i_ref": _position_ref(project, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
         "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle],
         "still": [Tex(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
-        "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
+        "rows": graph_rows(res, scenes, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(not x.isdigit() and x not in (tr("dynamics.m48"), tr("dynamics.m49")) for x in labels),
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
         "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
