@@ -93,8 +93,9 @@ def spans(g, labels: list[str] | None = None) -> dict[str, Span]:
 
 
 def _construction(scene: Scene):
-    """The scene's entities but its axes (the sheet draws its own, with arrows and ticks)."""
-    return [e for e in scene.entities if not e.id.startswith("axis:")]
+    """The scene's entities but its axes and break lines (the sheet draws its own, with arrows,
+    ticks and the breaks' names)."""
+    return [e for e in scene.entities if not e.id.startswith(("axis:", "break:"))]
 
 
 def _tangent_ends(g) -> np.ndarray:

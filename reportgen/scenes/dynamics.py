@@ -133,6 +133,9 @@ def moment_scene(g, names) -> Scene:
         ents.append(Segment(f"step:{k}", (float(a), float(y)), (float(b), float(y)), "thin"))
         ents.append(Segment(f"ray:{k}", (0.0, float(y)), pole, "construction"))
     ents.append(Circle("pole", pole, POINT_MM))
+    # the break positions (switching of the resistance, corners of its law): thin verticals
+    ents += [Segment(f"break:{n}", (float(xx), lo), (float(xx), hi), "thin")
+             for xx, n in zip(x, names) if not n.isdigit()]
     labels.append(Label("P", "pole", pole))
     labels += _numbers(x, lo, names)
     return Scene("moment", (Scale(MU_M, g.mu_M, "Н·м/мм"), Scale(MU_PHI, g.mu_phi, "рад/мм")), tuple(ents),
