@@ -23,7 +23,7 @@ from reportgen.project import Project
 from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
-                            "plans", "scenes")
+                            "plans", "plan_positions", "plans_by_position", "scenes")
 
 
 def sheet_title() -> str:
