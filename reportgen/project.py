@@ -187,13 +187,22 @@ class Project:
 
     @cached_property
     def plans_by_position(self):
-        """The velocity and acceleration plans of every plan position (position → (Plan, Plan)), at
-        the default scales of :func:`reportgen.plans.build_plans` (the analysed one is ``plans``)."""
+        """The velocity and acceleration plans of every plan position (position → (Plan, Plan)): the
+        analysed one is ``plans``; the others at the scales of :func:`reportgen.plans.build_plans`,
+        coarser where a point would stand beyond ``boxes.other_plan_mm`` from the pole."""
         from types import MappingProxyType
-        from .plans import build_plans
-        out = {j: (self.plans if j == self.analysed else
-                   build_plans(self.linkage, self.structure, self.kinematics, j))
-               for j in self.plan_positions}
+        from .plans import build_plans, round_scale
+        out = {}
+        for j in self.plan_positions:
+            if j == self.analysed:
+                out[j] = self.plans
+                continue
+            v, a = build_plans(self.linkage, self.structure, self.kinematics, j)
+            far = [max(math.hypot(*pt) for pt in plan.points.values()) * plan.scale for plan in (v, a)]
+            mu = [max(plan.scale, round_scale(f, self.boxes.other_plan_mm)) for plan, f in zip((v, a), far)]
+            if mu != [v.scale, a.scale]:
+                v, a = build_plans(self.linkage, self.structure, self.kinematics, j, mu_v=mu[0], mu_a=mu[1])
+            out[j] = (v, a)
         return MappingProxyType(out)
 
     @cached_property
