@@ -4,6 +4,7 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -184,8 +185,8 @@ def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] |
     """Ways to put the plans of the plan positions together (``sizes``: velocity, acceleration of
     each position in turn; ``names`` their views): the velocity and acceleration plan of a position
     side by side (titles and captions on one line) or one above the other, the positions' pairs
-    in one block (one above the other, or in one row) or in blocks of their own; and every plan
-    apart (the last resort)."""
+    in one block (one above the other, or in one row) or in blocks of their own, or only the
+    analysed position's pair together; and every plan apart (the last resort)."""
     pairs = [(sizes[2 * k], sizes[2 * k + 1]) for k in range(len(sizes) // 2)]
     names = names or _pair_names(sizes)
 
@@ -223,9 +224,12 @@ def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] |
         together = [[Block("plans", rows[0].width, rows[0].height, rows[0].parts)],
                     [Block("plans", cols[0].width, cols[0].height, cols[0].parts)]]
     else:
-        together = [[stacked(rows)], [in_row(cols)], [in_row(rows)], rows, cols]
+        together = [[stacked(rows)], [in_row(cols)], [in_row(rows)],
+                    *[list(choice) for choice in itertools.product(*zip(rows, cols))]]
     apart = [Block(n, *pairs[k][m], ((n, 0.0, 0.0, *pairs[k][m]),))
              for k in range(len(pairs)) for m, n in enumerate(names[k])]
+    if len(pairs) > 1:          # the analysed position's pair together, the other plans apart
+        together += [[rows[0], *apart[2:]], [cols[0], *apart[2:]]]
     return together, apart
 
 
