@@ -335,6 +335,11 @@ def small_plans(project: Project, crank_mm: float) -> list[Plan]:
     return [build_plans(project.linkage, project.structure, kin, j, mu_v=mu)[0] for j in range(len(project.phi))]
 
 
+def _lower_title(title: str) -> str:
+    """«Диаграмма скорости» → «диаграмма скорости» (a row of the table names the diagram)."""
+    return title.replace(tr("sheets.sk123"), tr("sheets.sk124"))
+
+
 def _positions_text(positions: list[int]) -> str:
     return ", ".join(str(j) for j in positions)
 
@@ -360,11 +365,13 @@ def scale_rows(mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]]
         nm = kd.names(d)
         rows += [("μφ", tr("sheets.sk115"), tr("sheets.sk116", v1=format_significant(d.mu_phi, 4))),
                  ("μt", tr("sheets.sk117"), tr("sheets.sk118", v1=format_significant(d.mu_t, 4))),
-                 *[(sym, title.replace(tr("sheets.sk123"), tr("sheets.sk124")), f"{format_significant(mu, 4)} {unit}")
+                 *[(sym, _lower_title(title), f"{format_significant(mu, 4)} {unit}")
                    for sym, title, mu, unit in zip(nm.symbols, nm.titles, (d.mu_s, d.mu_v, d.mu_a),
                                                    (nm.mu_s, nm.mu_v, nm.mu_a))],
-                 ("H1", tr("sheets.sk119"), tr("sheets.sk120", v1=format_number(d.H1, 1))),
-                 ("H2", tr("sheets.sk121"), tr("sheets.sk122", v1=format_number(d.H2, 1)))]
+                 ("H1", tr("sheet1.pole_of", what=_lower_title(nm.titles[1])),
+                  tr("sheets.sk120", v1=format_number(d.H1, 1))),
+                 ("H2", tr("sheet1.pole_of", what=_lower_title(nm.titles[2])),
+                  tr("sheets.sk122", v1=format_number(d.H2, 1)))]
     return rows
 
 
