@@ -368,10 +368,8 @@ def scale_rows(mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]]
                  *[(sym, _lower_title(title), f"{format_significant(mu, 4)} {unit}")
                    for sym, title, mu, unit in zip(nm.symbols, nm.titles, (d.mu_s, d.mu_v, d.mu_a),
                                                    (nm.mu_s, nm.mu_v, nm.mu_a))],
-                 ("H1", tr("sheet1.pole_of", what=_lower_title(nm.titles[1])),
-                  tr("sheets.sk120", v1=format_number(d.H1, 1))),
-                 ("H2", tr("sheet1.pole_of", what=_lower_title(nm.titles[2])),
-                  tr("sheets.sk122", v1=format_number(d.H2, 1)))]
+                 ("H1", tr("sheets.sk119"), tr("sheets.sk120", v1=format_number(d.H1, 1))),
+                 ("H2", tr("sheets.sk121"), tr("sheets.sk122", v1=format_number(d.H2, 1)))]
     return rows
 
 

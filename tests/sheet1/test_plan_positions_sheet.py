@@ -113,7 +113,7 @@ def test_scale_table_one_row_per_scale_with_the_notes_values(built):
     project, tex, sheet, doc = built
     rows = _table_rows(sheet, doc)
     assert all(len(r) == 3 for r in rows), rows
-    assert len({r[1] for r in rows}) == len(rows), rows            # every row names what it draws
+    assert len({r[:2] for r in rows}) == len(rows), rows           # every row names what it draws
     named: dict[str, dict[int, float]] = {"μv": {}, "μa": {}}
     for sym, name, value in rows:
         m = re.search(r"план[ы]? (?:скоростей|ускорений) положени[яй] ([\d, ]+)$", name)
