@@ -341,7 +341,7 @@ def _lower_title(title: str) -> str:
 
 
 def _positions_text(positions: list[int]) -> str:
-    return ", ".join(str(j) for j in positions)
+    return ", ".join(str(j) for j in sorted(positions))
 
 
 def scale_rows(mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]], d: Diagrams | None,
