@@ -33,11 +33,8 @@ def built(request, tmp_path_factory):
     out = tmp_path_factory.mktemp(request.param)
     sections, _ = compose(project, Strings("ru"), only=("linkage",))
     note = NoteBuilder(project.task.document)
-    content = None
     for s in sections:
         note.add_section(s.section)
-        if s.section.key == "kinematics":
-            content = s.section
     tex = note.render(out).read_text(encoding="utf-8")
     sheet = sheet1.draw(project, 1, 4)
     sheet.save(out / "sheet1.dxf")
