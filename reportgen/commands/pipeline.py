@@ -27,6 +27,9 @@ from ..errors import BuildError
 from ..project import Needs
 
 MAIN, SHEETS, LATEX = "main", "sheets", "LaTeX"
+#: How much lower the sheets' process runs than the note's (``os.nice``): they wait for the
+#: processors the note's figures and xelatex leave free, which shortens the build's critical path.
+SHEETS_NICENESS = 3
 
 
 @dataclass(frozen=True)
@@ -246,7 +249,14 @@ class _Child:
     def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any) -> "_Child":
         """Draw the sheets in a child process."""
         (tmp / "sheets").mkdir(exist_ok=True)
-        return cls.fork(lambda: list(draw_sheets(project, tmp, todo, cache)), "sheets")
+
+        def work() -> list[Span]:
+            # the sheets are off the critical path (solve → note → LaTeX): let the scheduler give
+            # the note's processes and xelatex the processors first, the sheets the time left over
+            _lower_priority(SHEETS_NICENESS)
+            return list(draw_sheets(project, tmp, todo, cache))
+
+        return cls.fork(work, "sheets")
 
     @classmethod
     def fork(cls, work: Any, stage: str = "sheets") -> "_Child":
@@ -299,6 +309,13 @@ class _Child:
             except OSError:
                 pass
             self.pid = 0
+
+
+def _lower_priority(increment: int) -> None:
+    try:
+        os.nice(increment)
+    except (AttributeError, OSError):   # no nice() on this system, or not allowed: same priority
+        pass
 
 
 def _portable(exc: BaseException) -> tuple[str, str, str, dict[str, Any]]:
