@@ -37,9 +37,13 @@ def _fixed_limits(ax) -> None:
     """Skip the data-limit bookkeeping of every added artist: the view is set to the paper below
     (autoscaling off), so the limits are never read, and updating them took half the preview's time
     (the Bézier extremes of every glyph outline of the text)."""
-    ax._update_patch_limits = lambda patch: None
-    ax._update_line_limits = lambda line: None
-    ax.update_datalim = lambda xys, updatex=True, updatey=True: None
+    ax._update_patch_limits = _ignore
+    ax._update_line_limits = _ignore
+    ax.update_datalim = _ignore
+
+
+def _ignore(*_args: object, **_kwargs: object) -> None:
+    return None
 
 
 def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.PathLike[str],

@@ -1,8 +1,9 @@
 """The stages of ``reportgen build`` and how they overlap (the build's critical path).
 
-    main process   task → solve → note (sections, figures, report.tex) ─ results.json ─ join ─ join
-    sheets         (forked after solve)      sheet 1 … sheet n: DXF + PNG preview ────┘      │
-    LaTeX          (started when report.tex is written)  latexmk + xelatex ──────────────────┘
+    main process   task → solve → note's sections, report.tex → figures (share 1) ─ results.json ─ join ─ join
+    figures                                       (forked) figures (share 2) ─┘                    │      │
+    sheets         (forked after solve, nice 3)  sheet 1 … sheet n: DXF + PNG preview ─────────────┘      │
+    LaTeX          (started when report.tex and the figures are written)  latexmk + xelatex ──────────────┘
 
 The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
 the sheets are drawn in a forked child process while the main process composes the note, and
@@ -233,7 +234,7 @@ def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any
         yield Span(name, lane, t0, time.perf_counter())
 
 
-# -- child processes (the sheets, a share of the figures) ---------------------------------------------------------------------
+# -- child processes (the sheets, a share of the figures) ------------------------------------------
 
 class _Child:
     """A forked process that does one part of the build (the sheets into ``tmp/sheets``, a share of
