@@ -42,24 +42,25 @@ def draw(project, number: int, count: int) -> Sheet:
     fr = sheet.frame
     tb = sheet.title_rect
     has_reducer = task.planetary is not None and task.planetary.module is not None
-    rest = Rect(fr.x0 + 5, fr.y0 + 5, fr.x1 - 5, fr.y1 - 5)
+    rest = Rect(fr.x0 + 5, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
     if task.gears is not None:
         pair = project.gears
         pic = meshing_picture(pair, n_teeth=3)
         mesh_rect = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + VIEW_W, fr.y0 + 5 + VIEW_H)
         scale = draw_meshing(sheet, pair, pic, mesh_rect)
         sheet.set_scale(scale.label)                                   # the meshing, the main view
-        rest = Rect(mesh_rect.x1 + 10, fr.y0 + 5, fr.x1 - 5, fr.y1 - 5)
+        rest = Rect(mesh_rect.x1 + 10, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
         table_h = PAIR_ROW_MM * (len(pair_rows(pair)) + 1) + 12.0
         table_rect = Rect(rest.x1 - PAIR_TABLE_W, tb.y1 + 8, rest.x1, tb.y1 + 8 + table_h)
-        slide_top = rest.y0 + (200.0 if has_reducer else rest.height * 0.55)
-        slide_rect = Rect(rest.x0, rest.y0, table_rect.x0 - 10, slide_top)
+        slide_top = rest.y0 + (185.0 if has_reducer else rest.height * 0.55)
+        slide_rect = Rect(rest.x0, rest.y0, min(table_rect.x0, tb.x0) - 10, slide_top)
         draw_sliding(sheet, pair, slide_rect, scale.factor)
         draw_pair_table(sheet, pair, table_rect)
         rest = Rect(rest.x0, max(slide_rect.y1, table_rect.y1) + 8, rest.x1, rest.y1)
     if has_reducer:
         stage = project.planetary
-        region = rest if task.gears is not None else Rect(rest.x0, tb.y1 + 8, rest.x1, rest.y1)
+        region = rest if task.gears is not None else Rect(rest.x0, tb.y1 + 8, rest.x1,
+                                                           sheet.extra_rect.y0 - 4)
         draw_reducer(sheet, stage, region)
     # «Масштаб»: the main view's scale (the meshing, else the reducer); each view's scale is in its title
     return sheet
