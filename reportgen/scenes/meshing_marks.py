@@ -190,7 +190,7 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
     w, h = (v / k for v in text_size(text, height))
     best = None
     order = [prefer_deg + s * i * 22.5 for i in range(9) for s in ((1, -1) if i else (1,))][:16]
-    for dist in (1.5 / k, (1.5 + height) / k, (3 + 2 * height) / k):
+    for dist in (1.5 / k, (1.5 + height) / k, (1.5 + 1.5 * height) / k):
         for ang in order:
             ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
             t = min((w / 2) / abs(ux) if abs(ux) > 1e-9 else math.inf,

@@ -2,14 +2,18 @@
 note's figure (:func:`latex_templates.figures.gears.planetary_figure`) and sheet 4
 (:mod:`drawings.scenes.planetary_dxf`). Pure: no plotting, no DXF.
 
-Side view (the usual kinematic scheme): the central axis is horizontal at y = 0, wheels are vertical
-segments of their pitch diameter at the drawing's length scale k, so the mesh points sit at the
-heights y = k·r that Kutzbach's velocity triangle (:mod:`reportgen.planetary.velocity`) uses: A
-(wheel 1 – planet 2) at k·r1, B (planet axis) at k·a, C (planet – wheel 3) at k·r3. Only the upper
-planet is drawn in the side view (the others are in the front view), as course schemes do.
+Side view (the kinematic scheme in section through the axis, ГОСТ 2.770): the central axis is
+horizontal at y = 0, wheels are segments of their pitch diameter with the rims' ticks at the
+drawing's length scale k, so the mesh points sit at the heights y = k·r that Kutzbach's velocity
+triangle (:mod:`reportgen.planetary.velocity`) uses: A (wheel 1 – planet 2) at k·r1, B (planet
+axis) at k·a, C (planet – wheel 3) at k·r3. The satellites above and below the axis turn on their
+axles (bearings) in the carrier H; the input and output shafts run in bearings in the housing's
+walls; the fixed wheel 3 is part of the hatched housing. Each line carries the ``part`` it draws
+(wheel1, satellite, ring, housing, bearing, shaft, carrier), which the tests read.
 
 Front view: the wheels as pitch circles about the central axis, K planets equally spaced on the
-carrier circle of radius k·a, the carrier arms as thick lines.
+carrier circle of radius k·a (two of them on a diagonal, clear of the axes through wheel 1), the
+carrier arms as thick lines.
 """
 from __future__ import annotations
 
@@ -176,8 +180,10 @@ def side_scheme(design, k: float) -> Scene:
             s.line((x3 - FACE, sg * r3), (x3 + FACE, sg * r3), part="ring")
     else:
         _wheel_external(s, x3, 0.0, r3, "ring")
-        for sg in (1, -1):             # its hub: a sleeve round the carrier's shaft to the wall
-            s.line((x3, sg * 2.0 * BEARING_GAP), (x_wr, sg * 2.0 * BEARING_GAP), part="ring")
+        hub = x3 + FACE + 3            # its hub fixed to the housing (a hatched base), round the shaft
+        for sg in (1, -1):
+            s.line((x3, sg * 2.0 * BEARING_GAP), (hub, sg * 2.0 * BEARING_GAP), part="ring")
+            s.ground((hub, sg * 2.0 * BEARING_GAP), (hub, sg * 4.0 * BEARING_GAP), side=-sg, part="ring")
     # carrier H: arm from the upper axle to the lower one, the output shaft to the right
     s.line((x_h, a), (x_h, -a), part="carrier")
     s.line((x_h, 0), (x_out, 0), part="shaft")
