@@ -337,9 +337,15 @@ def _circle_anchors(centre: Point, r: float, window: Polygon, teeth: Polygon, ge
 
 
 def place_marks(pair, pic: MeshingPicture, k: float,
-                room: tuple[float, float, float, float] | None = None) -> MeshingMarks:
-    """Every designation of the meshing picture at scale ``k`` inside ``room`` (real mm; default:
-    the picture's bounds with the centres, widened by 60 sheet mm)."""
+                room: tuple[float, float, float, float] | None = None, *,
+                point_h: float = POINT_H, mark_h: float = MARK_H,
+                keep_out: tuple[tuple[float, float, float, float], ...] = ()) -> MeshingMarks:
+    """Every designation of the meshing picture at scale ``k`` (paper mm per real mm) inside
+    ``room`` (real mm; default: the picture's bounds with the centres, widened by 60 paper mm);
+    letters ``point_h`` and designations ``mark_h`` paper mm high. Sheet 4 places them at its
+    scale in its view; the note's figure, a detail of the same picture round the pole, at its
+    own scale in its frame (points and the dimension aw outside it are left out); ``keep_out``
+    boxes (real mm) hold other things (a legend, a scale bar)."""
     g = pair.geometry
     teeth = teeth_polygons(pic)
     aw_box = arcs_window(pair, pic)
@@ -365,15 +371,20 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     zone_band = Polygon([(pa[0] + zn[0] * d / k, pa[1] + zn[1] * d / k) for d in (3.0, 11.0)]
                         + [(pb_[0] + zn[0] * d / k, pb_[1] + zn[1] * d / k) for d in (11.0, 3.0)])
     placer = _Placer(k, teeth + [zone_band], lines, box(*room))
+    for kb in keep_out:
+        placer.take(box(*kb))
     # the common tangent and N1N2 cross the teeth near P; the line of action matters more
     teeth_u = unary_union(teeth)
     # 1. the letters of the points
     marks: list[Mark] = []
     prefer = {"O1": 0, "O2": 0, "P": -60, "N1": 200, "N2": 20, "a": 150, "b": -30}
+    inside = box(*room)
     for name in ("P", "a", "b", "N1", "N2", "O1", "O2"):
         pt = pic.points[name]
+        if not inside.contains(SPoint(pt)):
+            continue
         marks.append(_beside(placer, name, name, f"{name[0]}_{{{name[1:]}}}" if len(name) > 1 else name,
-                             pt, POINT_H, prefer[name], own_radius=2.4 * g.m))
+                             pt, point_h, prefer[name], own_radius=2.4 * g.m))
     # 2. the dimensions: ab beside the line of action, aw right of the line of centres
     ab_text = plain(pic.ab_drawn, 3).replace(".", ",")
     offs = [s * v for v in (12.0, 16.0, 21.0, 27.0, 34.0, 42.0, 52.0, 64.0, 78.0) for s in (-1.0, 1.0)]
@@ -386,8 +397,9 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     cands = [start + v for v in np.arange(0.0, far - start + 1e-9, 6.0)]
     cands += [start - v for v in np.arange(6.0, start - near + 1e-9, 6.0)]
     aw_text = plain(g.aw, 3).replace(".", ",")
-    dims.append(_dimension(placer, "aw", pic.points["O1"], pic.points["O2"], aw_text,
-                           [-float(v) for v in cands] or [-near]))
+    if inside.contains(SPoint(pic.points["O1"])) and inside.contains(SPoint(pic.points["O2"])):
+        dims.append(_dimension(placer, "aw", pic.points["O1"], pic.points["O2"], aw_text,
+                               [-float(v) for v in cands] or [-near]))
     # 3. the circles: gear 1 (below) on the left, leaders down-left; gear 2 (above) on the right
     order = {"tip": 0, "root": 1, "pitch": 2, "working": 3, "base": 4}
     for c in sorted(pic.circles, key=lambda c: (c.gear, order[c.kind])):
@@ -399,7 +411,8 @@ def place_marks(pair, pic: MeshingPicture, k: float,
         base_name = {"pitch": "r", "base": "rb", "working": "rw", "tip": "ra", "root": "rf"}[c.kind]
         sub = {"pitch": "", "base": "b", "working": "w", "tip": "a", "root": "f"}[c.kind]
         tex = f"r_{{{sub}{c.gear}}}"
-        marks.append(_on_leader(placer, c.name, f"{base_name}{c.gear}", tex, anchors, dirs, MARK_H))
+        anchors = [q for q in anchors if inside.contains(SPoint(q))] or anchors
+        marks.append(_on_leader(placer, c.name, f"{base_name}{c.gear}", tex, anchors, dirs, mark_h))
     # 4. s1, s2 on a tooth beside the central one, p across one pitch of gear 1
     arcs = []
     for gear, teeth_g, r, centre in ((1, pic.teeth1, g.d1 / 2, (0.0, 0.0)), (2, pic.teeth2, g.d2 / 2, (0.0, g.aw))):
@@ -415,7 +428,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
         arcs.append(ArcMark(f"s{gear}", centre, r, a0, a1))
         mid = (centre[0] + r * math.cos((a0 + a1) / 2), centre[1] + r * math.sin((a0 + a1) / 2))
         dirs = [240.0, 210.0, 270.0, 180.0, 300.0] if gear == 1 else [60.0, 30.0, 90.0, 0.0, 120.0]
-        marks.append(_on_leader(placer, f"s{gear}", f"s{gear}", f"s_{{{gear}}}", [mid], dirs, MARK_H,
+        marks.append(_on_leader(placer, f"s{gear}", f"s{gear}", f"s_{{{gear}}}", [mid], dirs, mark_h,
                                 lengths=(9.0, 14.0, 20.0, 28.0, 38.0), own=tooth.buffer(2 * CLEAR / k)))
         if gear == 1:
             # p: from this tooth's left flank to the next tooth's left flank (one angular pitch)
@@ -424,7 +437,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
             arcs.append(p_arc)
             pm = (centre[0] + r * math.cos(a1 + step / 2), centre[1] + r * math.sin(a1 + step / 2))
             marks.append(_on_leader(placer, "p", "p", "p", [pm], [250.0, 290.0, 220.0, 270.0, 200.0],
-                                    MARK_H, lengths=(12.0, 18.0, 26.0, 36.0, 48.0),
+                                    mark_h, lengths=(12.0, 18.0, 26.0, 36.0, 48.0),
                                     own=SPoint(pm).buffer(2.4 * g.m)))
     # 5. αw between the tangent at P (towards +x) and the line of action (towards N2)
     ang_r = 18.0 / k
@@ -433,7 +446,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     tip = (P[0] + ang_r * math.cos(a_w / 2), P[1] + ang_r * math.sin(a_w / 2))
     marks.append(_on_leader(placer, "alpha_w", "αw", "\\alpha_{w}", [tip],
                             [10.0, -20.0, 40.0, 70.0, 90.0, 110.0, 300.0, 270.0, 250.0, 135.0, 200.0, 160.0],
-                            MARK_H, lengths=(10.0, 16.0, 24.0, 34.0, 46.0, 60.0, 75.0, 90.0),
+                            mark_h, lengths=(10.0, 16.0, 24.0, 34.0, 46.0, 60.0, 75.0, 90.0),
                             own=SPoint(P).buffer(max(ang_r + 2.0 / k, 2.4 * g.m))))
     return MeshingMarks(k=k, marks=tuple(marks), arcs=tuple(arcs), angle=angle,
                         dimensions=tuple(dims), arcs_window=aw_box)
