@@ -122,3 +122,30 @@ def test_sheet4_dimension_texts_clear_of_teeth(tmp_path):
     assert found == 2
     texts = {e.dxf.text for e in msp.query("TEXT")}
     assert {"rb1", "ra2", "rf1", "rw2", "s1", "s2", "p", "αw"} <= texts
+
+
+@pytest.mark.parametrize("name", ["press", "crank-slider"])
+def test_note_figure_marks_clear_of_teeth(name):
+    """The note's figure places the sheet's designations by the same rule at its own scale: every
+    circle, s, p, αw named, no text over a tooth, over another text, or outside the figure."""
+    import matplotlib
+    matplotlib.use("Agg")
+    from latex_templates.figures.gears import meshing_figure, meshing_frame
+    from latex_templates.parts import active_strings
+    from latex_templates.render import Strings
+
+    project = Project(load_task(str(ROOT / "examples" / name / "task.toml")))
+    pic = meshing_picture(project.gears, n_teeth=3)
+    with active_strings(Strings("ru")):
+        fig = meshing_figure(project.gears, pic)
+    marks = fig.reportgen_marks
+    names = {m.name for m in marks.marks}
+    assert {f"{n}{i}" for n in ("r", "rb", "rw", "ra", "rf") for i in (1, 2)} | {"s1", "s2", "p", "alpha_w"} <= names
+    room = box(*meshing_frame(project.gears, pic)[0])
+    teeth = teeth_polygons(pic)
+    boxes = marks.boxes()
+    for i, (n1, b1) in enumerate(boxes):
+        assert room.contains(b1), n1
+        assert not any(b1.intersects(t) for t in teeth), f"{n1} over a tooth"
+        for n2, b2 in boxes[i + 1:]:
+            assert b1.intersection(b2).area < 1e-9, f"{n1} overlaps {n2}"
