@@ -52,8 +52,10 @@ def draw(project, number: int, count: int) -> Sheet:
         rest = Rect(mesh_rect.x1 + 10, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
         table_h = PAIR_ROW_MM * (len(pair_rows(pair)) + 1) + 12.0
         table_rect = Rect(rest.x1 - PAIR_TABLE_W, tb.y1 + 8, rest.x1, tb.y1 + 8 + table_h)
-        slide_top = rest.y0 + (185.0 if has_reducer else rest.height * 0.55)
-        slide_rect = Rect(rest.x0, rest.y0, min(table_rect.x0, tb.x0) - 10, slide_top)
+        if has_reducer:            # under the reducer, left of the title block
+            slide_rect = Rect(rest.x0, rest.y0, min(table_rect.x0, tb.x0) - 10, rest.y0 + 185.0)
+        else:                      # above the table, the width of the right side
+            slide_rect = Rect(rest.x0, table_rect.y1 + 12, rest.x1, min(rest.y1, table_rect.y1 + 12 + 320))
         draw_sliding(sheet, pair, slide_rect, scale.factor)
         draw_pair_table(sheet, pair, table_rect)
         rest = Rect(rest.x0, max(slide_rect.y1, table_rect.y1) + 8, rest.x1, rest.y1)
