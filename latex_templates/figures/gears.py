@@ -59,8 +59,8 @@ def blocking_contour_figure(pair):
 
 #: The note's figure of the meshing: width of the drawing (page mm), the margin round the meshing
 #: zone for the designations (a share of its width), letter heights (page mm).
-NOTE_MESH_W = 160.0
-NOTE_MESH_MAX_H = 190.0
+NOTE_MESH_W = 140.0          # 0.85 of the text block, as the figure macro includes it
+NOTE_MESH_MAX_H = 100.0      # under the macro's height limit (0.7 of the text height)
 NOTE_MESH_MARGIN = 0.22
 NOTE_POINT_H = 3.5
 NOTE_MARK_H = 2.9

@@ -445,7 +445,8 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     angle = AngleMark(P, ang_r, 0.0, a_w)
     tip = (P[0] + ang_r * math.cos(a_w / 2), P[1] + ang_r * math.sin(a_w / 2))
     marks.append(_on_leader(placer, "alpha_w", "αw", "\\alpha_{w}", [tip],
-                            [10.0, -20.0, 40.0, 70.0, 90.0, 110.0, 300.0, 270.0, 250.0, 135.0, 200.0, 160.0],
+                            [10.0, -20.0, 40.0, 70.0, 90.0, 110.0, 300.0, 270.0, 250.0, 135.0, 200.0, 160.0,
+                             -45.0, 20.0, 55.0, 125.0, 180.0, 225.0],
                             mark_h, lengths=(10.0, 16.0, 24.0, 34.0, 46.0, 60.0, 75.0, 90.0),
                             own=SPoint(P).buffer(max(ang_r + 2.0 / k, 2.4 * g.m))))
     return MeshingMarks(k=k, marks=tuple(marks), arcs=tuple(arcs), angle=angle,
