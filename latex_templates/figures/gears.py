@@ -66,7 +66,7 @@ NOTE_POINT_H = 3.5
 NOTE_MARK_H = 2.9
 
 
-def meshing_frame(pair, pic) -> tuple[tuple[float, float, float, float], float]:
+def meshing_frame(pic) -> tuple[tuple[float, float, float, float], float]:
     """The note's detail of the meshing picture round the pole: its frame (real mm) and its scale
     (page mm per real mm)."""
     x0, y0, x1, y1 = pic.view
@@ -83,7 +83,7 @@ def meshing_figure(pair, pic):
     :func:`reportgen.scenes.meshing_marks.place_marks` — the sheet's rule at the figure's scale."""
     from reportgen.scenes.meshing_marks import place_marks
     g = pair.geometry
-    room, k = meshing_frame(pair, pic)
+    room, k = meshing_frame(pic)
     inner = (room[0] + 2 / k, room[1] + 2 / k, room[2] - 2 / k, room[3] - 2 / k)
     legend = (room[0], room[3] - 24 / k, room[0] + 62 / k, room[3])       # upper left
     bar_box = (room[0], room[1], room[0] + 0.6 * g.m + 20.0 + 14 / k, room[1] + 0.6 * g.m + 8 / k)

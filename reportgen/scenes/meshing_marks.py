@@ -178,6 +178,11 @@ class _Placer:
         self.placed.append(poly)
 
 
+def _bounds(poly) -> tuple[float, float, float, float]:
+    x0, y0, x1, y1 = poly.bounds
+    return (float(x0), float(y0), float(x1), float(y1))
+
+
 def _box_at(c: Point, w: float, h: float) -> Polygon:
     return box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
 
@@ -212,7 +217,7 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
                           lengths=(8.0, 12.0, 17.0, 23.0, 30.0, 40.0),
                           own=SPoint(p).buffer(own_radius) if own_radius else None)
     placer.take(best[1])
-    return Mark(name, text, tex, (float(p[0]), float(p[1])), (), tuple(float(v) for v in best[1].bounds),
+    return Mark(name, text, tex, (float(p[0]), float(p[1])), (), _bounds(best[1]),
                 height)
 
 
@@ -266,7 +271,7 @@ def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Po
     placer.take(leader.buffer(0.3 / k))
     return Mark(name, text, tex, (float(anchor[0]), float(anchor[1])),
                 tuple((float(x), float(y)) for x, y in leader.coords),
-                tuple(float(v) for v in poly.bounds), height, word)
+                _bounds(poly), height, word)
 
 
 def _dim_box(p1: Point, p2: Point, offset: float, k: float, text: str) -> Polygon:

@@ -141,7 +141,7 @@ def test_note_figure_marks_clear_of_teeth(name):
     marks = fig.reportgen_marks
     names = {m.name for m in marks.marks}
     assert {f"{n}{i}" for n in ("r", "rb", "rw", "ra", "rf") for i in (1, 2)} | {"s1", "s2", "p", "alpha_w"} <= names
-    room = box(*meshing_frame(project.gears, pic)[0])
+    room = box(*meshing_frame(pic)[0])
     teeth = teeth_polygons(pic)
     boxes = marks.boxes()
     for i, (n1, b1) in enumerate(boxes):
