@@ -287,9 +287,10 @@ def _dim_box(p1: Point, p2: Point, offset: float, k: float, text: str) -> Polygo
 
 
 def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
-               offsets: list[float]) -> PlacedDimension:
+               offsets: list[float], prefer_clear: bool = False) -> PlacedDimension:
     """The first offset (sheet mm) at which the text, the dimension line and its extension lines
-    cross no tooth and no placed text."""
+    cross no tooth and no placed text; ``prefer_clear``: among those, the first whose text crosses
+    no drawn line (the arcs), else the one crossing fewest."""
     k = placer.k
     d = math.dist(p1, p2)
     nx, ny = -(p2[1] - p1[1]) / d, (p2[0] - p1[0]) / d
@@ -309,13 +310,15 @@ def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
                 start = (p[0] + nx * s, p[1] + ny * s)
                 if abs(off) > 2.5 and placer.teeth.intersects(LineString([start, q])):
                     rank = 1
+        if prefer_clear:
+            rank = rank * 100 + placer.crossings(poly)
         if best is None or rank < best[0]:
             best = (rank, off, poly)
         if rank == 0:
             break
     if best is None:          # no free place for the text: the first offset (a test reports it)
         off = offsets[0]
-        best = (3, off, _dim_box(p1, p2, off, k, text))
+        best = (10**6, off, _dim_box(p1, p2, off, k, text))
     chosen = (best[1], best[2])
     placer.take(chosen[1])
     return PlacedDimension(name, (float(p1[0]), float(p1[1])), (float(p2[0]), float(p2[1])),
@@ -404,7 +407,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     aw_text = plain(g.aw, 3).replace(".", ",")
     if inside.contains(SPoint(pic.points["O1"])) and inside.contains(SPoint(pic.points["O2"])):
         dims.append(_dimension(placer, "aw", pic.points["O1"], pic.points["O2"], aw_text,
-                               [-float(v) for v in cands] or [-near]))
+                               [-float(v) for v in cands] or [-near], prefer_clear=True))
     # 3. the circles: gear 1 (below) on the left, leaders down-left; gear 2 (above) on the right
     order = {"tip": 0, "root": 1, "pitch": 2, "working": 3, "base": 4}
     for c in sorted(pic.circles, key=lambda c: (c.gear, order[c.kind])):
