@@ -24,6 +24,7 @@ from reportgen.scenes.scene import Arrow, Circle, Label, Polyline, Scene, Segmen
 
 from ..parts import active
 from . import new_figure
+from .labels import names
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
 #: caption).
@@ -294,9 +295,10 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
             bx = min(max(lb.at[0], pl.box[0]), pl.box[2])
             by = min(max(lb.at[1], pl.box[1]), pl.box[3])
             ax.plot([bx, lb.at[0]], [by, lb.at[1]], color="0.3", lw=0.4)
-        ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
-                style="italic" if lb.role == "point" else "normal",
-                color="tab:blue" if lb.role == "number" else "black", zorder=6)
+        t = ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
+                    style="italic" if lb.role == "point" else "normal",
+                    color="tab:blue" if lb.role == "number" else "black", zorder=6)
+        names(t, *(lb.along if lb.role == "vector" and lb.along is not None else (lb.at,)))
     fig.reportgen_exact = True
     fig.reportgen_labels = tuple(pl for _, _, pl in labels)
     fig.reportgen_reduction = r
