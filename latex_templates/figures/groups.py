@@ -27,7 +27,7 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
     ax.set_ylim(xy[:, 1].min() - pad, xy[:, 1].max() + pad)
     ax.set_aspect("equal")
     centre = xy.mean(axis=0)
-    numbers: list = []                # (link, candidates, what it names), placed after the drawing
+    numbers: list = []                # (link, candidates, what it names, a block?), placed last
     letters: dict[str, np.ndarray] = {}
     for k in group.links:
         b = linkage.bodies[k]
@@ -37,11 +37,11 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
         elif len(b.points) == 2:
             ax.plot(p[:, 0], p[:, 1], "k-", lw=1.6)
         if len(b.points) >= 2:
-            c = p.mean(axis=0)
             d = p[1] - p[0]
             nrm = np.array([-d[1], d[0]]) / (np.hypot(*d) or 1.0)
-            numbers.append((k, [c + nrm * 0.07 * L, c - nrm * 0.07 * L, c + nrm * 0.11 * L, c - nrm * 0.11 * L],
-                            [tuple(x) for x in p]))
+            numbers.append((k, [p[0] + d * t + side * nrm * f * L for f in (0.07, 0.11)
+                                for t in (0.5, 0.3, 0.7, 0.2, 0.8) for side in (1.0, -1.0)],
+                            [tuple(x) for x in p], False))
     for pr in group.pairs:
         if pr.kind == "R":
             p = pts[pr.point]
@@ -62,9 +62,9 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
             ax.plot([g0[0], g1[0]], [g0[1], g1[1]], "k-", lw=0.8)
             letters.setdefault(s.point, p)
             if len(linkage.bodies[s.link].points) == 1 and s.link in group.links:     # the block's number
-                numbers.append((s.link, [p + n * (h / 2 + 0.06 * L), p - n * (h / 2 + 0.09 * L),
+                numbers.insert(0, (s.link, [p + n * (h / 2 + 0.06 * L), p - n * (h / 2 + 0.09 * L),
                                          p + d * (w / 2 + 0.06 * L), p - d * (w / 2 + 0.06 * L)],
-                                [tuple(c) for c in corners]))
+                                [tuple(c) for c in corners], True))
     taken: list = []
     for name, p in letters.items():                  # one letter a point, away from the group's middle
         u = p - centre
@@ -73,8 +73,12 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
         cands += [p + v * 0.11 * L for v in (u, np.array([-u[1], u[0]]), np.array([u[1], -u[0]]))]
         place_text(ax, cands, name, [tuple(p)], taken, fontsize=10, style="italic", ha="center", va="center",
                    zorder=7)
-    for k, cands, named in numbers:
-        place_text(ax, cands, str(k), named, taken, grow=1.5, fontsize=9, ha="center", va="center", zorder=7,
+    joints = [np.asarray(p) for p in letters.values()]
+    for k, cands, named, block in numbers:
+        # a link's number away from the pairs (their letters, a block's own number sit there)
+        if not block:
+            cands = [c for c in cands if all(np.hypot(*(c - j)) > 0.12 * L for j in joints)] or cands
+        place_text(ax, cands, str(k), named, taken, grow=2.0, fontsize=9, ha="center", va="center", zorder=7,
                    bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec="black", lw=0.5))
     ax.set_aspect("equal")
     ax.axis("off")

@@ -42,6 +42,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
     r_hinge = 0.012 * L
     ax.set_aspect("equal")
     pending: list = []          # link numbers: placed after the letters, where they overlap none
+    blocks: dict[str, list] = {}  # a slider's point → its block's outline (what its letter names)
     # links
     for k, b in sorted(linkage.bodies.items()):
         if k == 0:
@@ -58,13 +59,15 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
             d = xy[1] - xy[0]
             n = np.array([-d[1], d[0]]) / (np.hypot(*d) + 1e-300)
             cands = [c + n * f * L for f in (0.035, -0.035, 0.06, -0.06)] + \
-                [xy[0] + d * t + n * f * L for t in (0.3, 0.7) for f in (0.035, -0.035)]
+                [xy[0] + d * t + n * f * L for t in (0.3, 0.7, 0.2, 0.8) for f in (0.035, -0.035, 0.06, -0.06)]
+            # away from the points (their letters, a block and its number sit there)
+            cands = [x for x in cands if min(np.hypot(*(x - q)) for q in pts.values()) > 0.07 * L] or cands
             pending.append((str(k), cands, [tuple(x) for x in xy]))
     # sliders and guides
     for s in linkage.slides:
         k = s.link
         b = linkage.bodies[k]
-        guide_dir = rot(np.array([q[s.guide, 2]]), s.line_dir)[0] if s.guide else np.asarray(s.line_dir)
+        guide_dir = _guide_dir(linkage, q, s)
         gang = math.degrees(math.atan2(guide_dir[1], guide_dir[0]))
         p = pts[s.point]
         if len(b.points) == 1:
@@ -72,10 +75,12 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
             rect = Rectangle((-w / 2, -h / 2), w, h, facecolor="white", edgecolor=color, lw=lw, alpha=alpha, zorder=4)
             rect.set_transform(Affine2D().rotate_deg(gang).translate(p[0], p[1]) + ax.transData)
             ax.add_patch(rect)
+            nrm = np.array([-guide_dir[1], guide_dir[0]])
+            blocks[s.point] = [tuple(p + guide_dir * sx * w / 2 + nrm * sy * h / 2)
+                               for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
             if numbers and alpha == 1:
-                nrm = np.array([-guide_dir[1], guide_dir[0]])
                 cands = [p + v * f * L for f in (0.07, 0.1) for v in (nrm, -nrm, guide_dir, -guide_dir)]
-                pending.append((str(k), cands, [tuple(p)]))
+                pending.insert(0, (str(k), cands, blocks[s.point]))       # a block's number first
         if guides and s.guide == 0:
             a = np.asarray(s.line_point)
             t = np.dot(p - a, guide_dir)
@@ -108,11 +113,19 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
             side = np.array([-d[1], d[0]])
             cands = [p + v * f * L for v in (d, d + side, d - side, side, -side, -d)] + \
                 [p + v * 1.6 * f * L for v in (d, side, -side)]
-            place_text(ax, cands, name, [tuple(p)], taken, fontsize=10, ha="center", va="center",
+            if on_slider:         # beside the block along its guide first: above it is the guide's side
+                g = next(_guide_dir(linkage, q, sl) for sl in linkage.slides if sl.point == name)
+                cands = [p + g * 0.085 * L, p - g * 0.085 * L] + cands
+            place_text(ax, cands, name, blocks.get(name, [tuple(p)]), taken, fontsize=10, ha="center", va="center",
                        style="italic", zorder=7)
     for text, cands, named in pending:
-        place_text(ax, cands, text, named, taken, grow=1.5, fontsize=9, ha="center", va="center", color=color,
+        place_text(ax, cands, text, named, taken, grow=2.0, fontsize=9, ha="center", va="center", color=color,
                    bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec=color, lw=0.5), zorder=6)
+
+
+def _guide_dir(linkage: Linkage, q: np.ndarray, s) -> np.ndarray:
+    """The unit direction of slide ``s``'s guide at position ``q``."""
+    return rot(np.array([q[s.guide, 2]]), s.line_dir)[0] if s.guide else np.asarray(s.line_dir, float)
 
 
 def _fixed_pivot(ax, p, s, color, alpha) -> None:
