@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence
 
 import shapely
 from shapely.geometry import Polygon, box
@@ -84,6 +84,8 @@ def from_letter(key: str, helpers: bool = False) -> Rich:
 
 
 Label = Rich | tuple[Rich, ...]
+#: What a label names: a geometry (sheet mm), a function of the label's box giving it, or None.
+Names = BaseGeometry | Callable[[Polygon], BaseGeometry] | None
 SEPARATOR = ", "
 
 
@@ -123,9 +125,10 @@ def label_name(label: Label) -> str:
 
 
 def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
-              names: BaseGeometry | None = None) -> Polygon:
+              names: Names = None) -> Polygon:
     """Draw ``label`` centred (its base line) at a sheet point; returns its box (registered once).
-    ``names``: what it is the label of (sheet mm), recorded with the handles of its texts."""
+    ``names``: what it is the label of (sheet mm; or a function of the label's box giving it),
+    recorded with the handles of its texts."""
     small = _smaller(height)
     handles: list[str] = []
     w, _, _ = size(label, height)
@@ -146,16 +149,18 @@ def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
             canvas.text_mm((xb, y0 - 0.35 * height), rich.sub, small, register=False)
             handles.append(canvas.last_text_handle)
         x += _one_width(rich, height)
+    poly = rich_box(label, center, height)
+    if callable(names):              # what it names depends on where it went (a leader to its box)
+        names = names(poly)
     if names is not None:
         canvas.annotations.add_label(LabelRecord(label_name(label), tuple(handles), names, canvas.name))
-    poly = rich_box(label, center, height)
     canvas.annotations.add_box(f"{canvas.name}: «{label_name(label)}»", poly)
     return poly
 
 
 def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: float,
                inside: Polygon | None = None, optional: bool = False,
-               names: BaseGeometry | None = None) -> Polygon | None:
+               names: Names = None) -> Polygon | None:
     """Draw ``label`` at the first candidate centre (sheet mm) whose box overlaps no text and
     crosses no line (and lies ``inside``), else at the one with the fewest conflicts; an
     ``optional`` label that would overlap a text (or leave ``inside``) is not drawn."""
@@ -164,7 +169,7 @@ def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: 
 
 def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], label: Label,
                  height: float, inside: Polygon | None = None, optional: bool = False,
-                 names: BaseGeometry | None = None) -> Polygon | None:
+                 names: Names = None) -> Polygon | None:
     """Like :func:`place_rich` over several passes of (candidates, lines it may cross): the first
     candidate of the first pass that overlaps no text, stays ``inside`` and crosses at most that
     many lines wins; otherwise the candidate with the fewest conflicts over all passes."""

@@ -104,14 +104,18 @@ def wittenbauer_figure(res):
     ax_w.plot([0, 0], [ex.L, ex.K], color="tab:red", lw=2.2)
     ax_w.annotate("K", (0, ex.K), xytext=(4, 2), textcoords="offset points", fontsize=10, style="italic")
     ax_w.annotate("L", (0, ex.L), xytext=(4, -9), textcoords="offset points", fontsize=10, style="italic")
-    ax_w.annotate(r"$\psi_{\max}$", (J_max * 0.55, ex.K + J_max * 0.55 * ex.omega_max ** 2 / 2),
-                  xytext=(0, 6), textcoords="offset points", fontsize=9)
-    ax_w.annotate(r"$\psi_{\min}$", (J_max * 0.55, ex.L + J_max * 0.55 * ex.omega_min ** 2 / 2),
-                  xytext=(0, -12), textcoords="offset points", fontsize=9)
     ax_w.set_xlim(0, J_max)
     lo_y = min(float(E.min()), ex.L)
     hi_y = max(float(E.max()), ex.K)
     pad = 0.08 * (hi_y - lo_y)
+    # ψmax, ψmin on their tangents where these are still inside the diagram (a steep tangent leaves
+    # it early: the shaper's)
+    for name, y0, slope, dy, top in ((r"$\psi_{\max}$", ex.K, ex.omega_max ** 2 / 2, 6, hi_y + 0.5 * pad),
+                                     (r"$\psi_{\min}$", ex.L, ex.omega_min ** 2 / 2, -12, lo_y - 0.5 * pad)):
+        j = J_max * 0.55
+        if slope * j + y0 > top if dy > 0 else slope * j + y0 < top:
+            j = 0.8 * (top - y0) / slope if slope else j
+        ax_w.annotate(name, (j, y0 + j * slope), xytext=(0, dy), textcoords="offset points", fontsize=9)
     ax_w.set_ylim(lo_y - pad, hi_y + pad)
     ax_w.set_title(tr("figures.dyn07"), fontsize=10)
     ax_w.tick_params(labelleft=False)

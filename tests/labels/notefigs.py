@@ -24,3 +24,20 @@ def note_figures(project) -> dict:
         for k, fig in assignment_section(project).figures.items():
             out[f"assignment:{k}"] = fig
     return {k: f for k, f in out.items() if hasattr(f, "savefig")}
+
+
+
+#: The groups the checks are reported by, and which figures belong to each (by name prefix).
+GROUPS: dict[str, tuple[str, ...]] = {
+    "schemes": ("linkage:structure_", "assignment:"),
+    "plans": ("linkage:kin_",),
+    "kinetostatics": ("kinetostatics:",),
+    "dynamics": ("dynamics:",),
+    "gears": ("gears:",),
+}
+
+
+def group_of(key: str) -> str:
+    """The group of a figure «section:name» (the crane's and any other: «other»)."""
+    return next((g for g, prefixes in GROUPS.items() if key.startswith(prefixes)), "other")
+

@@ -161,6 +161,7 @@ class FigureText:
     text: str
     box: Polygon            # mm of the figure
     names: BaseGeometry | None
+    drawn: bool = True      # False: an annotation of a point outside its axes (matplotlib leaves it out)
 
 
 def figure_texts(fig) -> list[FigureText]:
@@ -176,6 +177,11 @@ def figure_texts(fig) -> list[FigureText]:
     for item in artists:
         t, ax = item if isinstance(item, tuple) else (item, None)
         if not t.get_visible() or not t.get_text().strip():
+            continue
+        if hasattr(t, "xy") and ax is not None and getattr(t, "xycoords", "data") == "data" \
+                and t.get_annotation_clip() is not False \
+                and not ax.bbox.expanded(1.001, 1.001).contains(*ax.transData.transform(t.xy)):
+            out.append(FigureText(t.get_text(), box(0, 0, 0, 0), None, drawn=False))
             continue
         bb = t.get_window_extent(renderer)
         patch = t.get_bbox_patch()
@@ -199,8 +205,9 @@ def figure_texts(fig) -> list[FigureText]:
 def check_figure(fig, near_mm: float) -> list[Found]:
     """No two texts of a note figure overlap; each text that names something is within ``near_mm``
     of it (figure mm) and no other named point is nearer to it than its own."""
-    texts = figure_texts(fig)
-    found: list[Found] = []
+    found: list[Found] = [Found("label not drawn (what it names is outside the axes)", t.text)
+                          for t in figure_texts(fig) if not t.drawn]
+    texts = [t for t in figure_texts(fig) if t.drawn]
     for i, a in enumerate(texts):
         for b in texts[i + 1:]:
             if overlap(a.box, b.box):
