@@ -19,6 +19,7 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.dynamics.hub import hub_of
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
 from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
 
@@ -395,11 +396,12 @@ def content(project) -> PartContent:
     drv = drive_records(res)
     rows, omegas = method_rows(project, res)
     mot = motion_records(res)
+    hub = hub_of(res.M_drive, 2000.0 * res.flywheel.radius)          # the sketch's bore and keyway (sheet 3's)
     figures = {
         "dyn_work": fig.work_figure(res, labels),
         "dyn_wittenbauer": fig.wittenbauer_figure(res),
         "dyn_omega": fig.omega_figure(res, omegas),
-        "dyn_flywheel": fig.flywheel_figure(res.flywheel),
+        "dyn_flywheel": fig.flywheel_figure(res.flywheel, hub),
     }
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
@@ -411,7 +413,7 @@ def content(project) -> PartContent:
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
         "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
         "J_var": float(res.J_red.max() - res.J_red.min()), "J_mean": float(res.J_red.mean()),
-        "omega": omega, "delta": delta, "shape": res.flywheel.shape,
+        "omega": omega, "delta": delta, "shape": res.flywheel.shape, "hub": hub,
         "index_K": labels[res.graphical.index_K], "index_L": labels[res.graphical.index_L],
         "theta_K": math.degrees(res.exact.theta_K), "theta_L": math.degrees(res.exact.theta_L),
         "J_zero": res.exact.J_fly <= 0,
