@@ -116,7 +116,7 @@ def _section(view: View, rects: list, step: float) -> None:
     from shapely.ops import unary_union
     view.geometry(unary_union([box(*q) for q in rects]), "contour")
     for q in rects:
-        _hatch(view, *q, step)
+        _hatch(view, q[0], q[1], q[2], q[3], step)
 
 
 def _hatch(view: View, x0: float, y0: float, x1: float, y1: float, step: float) -> None:

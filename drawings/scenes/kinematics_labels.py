@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import Callable, Sequence
+from typing import Callable, Sequence, TypeAlias
 
 import shapely
 from shapely.geometry import Polygon, box
@@ -85,7 +85,7 @@ def from_letter(key: str, helpers: bool = False) -> Rich:
 
 Label = Rich | tuple[Rich, ...]
 #: What a label names: a geometry (sheet mm), a function of the label's box giving it, or None.
-Names = BaseGeometry | Callable[[Polygon], BaseGeometry] | None
+Names: TypeAlias = "BaseGeometry | Callable[[Polygon], BaseGeometry] | None"
 SEPARATOR = ", "
 
 
@@ -150,10 +150,9 @@ def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
             handles.append(canvas.last_text_handle)
         x += _one_width(rich, height)
     poly = rich_box(label, center, height)
-    if callable(names):              # what it names depends on where it went (a leader to its box)
-        names = names(poly)
-    if names is not None:
-        canvas.annotations.add_label(LabelRecord(label_name(label), tuple(handles), names, canvas.name))
+    named = names(poly) if callable(names) else names     # a function: it depends on where it went (a leader)
+    if named is not None:
+        canvas.annotations.add_label(LabelRecord(label_name(label), tuple(handles), named, canvas.name))
     canvas.annotations.add_box(f"{canvas.name}: «{label_name(label)}»", poly)
     return poly
 

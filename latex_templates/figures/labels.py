@@ -35,7 +35,7 @@ def _crossings(bb: Any, lines: list) -> int:
     return sum(1 for ln in lines if LineString(ln).intersects(b))
 
 
-def place_text(ax: Any, candidates: Sequence[Sequence[float]], s: str, named: Sequence[Sequence[float]],
+def place_text(ax: Any, candidates: Sequence[Any], s: str, named: Sequence[Any],
                taken: list, grow: float = 1.0, **kw: Any) -> Any:
     """``s`` at the first of ``candidates`` (data coordinates) whose extent overlaps none of ``taken``
     (display boxes, extended by the new one) and crosses no drawn line; else at the one that

@@ -67,7 +67,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
     for s in linkage.slides:
         k = s.link
         b = linkage.bodies[k]
-        guide_dir = _guide_dir(linkage, q, s)
+        guide_dir = _guide_dir(q, s)
         gang = math.degrees(math.atan2(guide_dir[1], guide_dir[0]))
         p = pts[s.point]
         if len(b.points) == 1:
@@ -114,7 +114,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
             cands = [p + v * f * L for v in (d, d + side, d - side, side, -side, -d)] + \
                 [p + v * 1.6 * f * L for v in (d, side, -side)]
             if on_slider:         # beside the block along its guide first: above it is the guide's side
-                g = next(_guide_dir(linkage, q, sl) for sl in linkage.slides if sl.point == name)
+                g = next(_guide_dir(q, sl) for sl in linkage.slides if sl.point == name)
                 cands = [p + g * 0.085 * L, p - g * 0.085 * L] + cands
             place_text(ax, cands, name, blocks.get(name, [tuple(p)]), taken, fontsize=10, ha="center", va="center",
                        style="italic", zorder=7)
@@ -123,7 +123,7 @@ def draw_mechanism(ax, linkage: Linkage, q: np.ndarray, *, labels: bool = True, 
                    bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec=color, lw=0.5), zorder=6)
 
 
-def _guide_dir(linkage: Linkage, q: np.ndarray, s) -> np.ndarray:
+def _guide_dir(q: np.ndarray, s) -> np.ndarray:
     """The unit direction of slide ``s``'s guide at position ``q``."""
     return rot(np.array([q[s.guide, 2]]), s.line_dir)[0] if s.guide else np.asarray(s.line_dir, float)
 

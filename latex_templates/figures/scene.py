@@ -311,7 +311,7 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
             ax.add_patch(MplPolygon([b, base + nrm * head / 6, base - nrm * head / 6], closed=True,
                                     facecolor=colour, edgecolor=colour, lw=0.3, zorder=3))
     texts = {}
-    for lb, c, pl in labels:
+    for lb, c, _pl in labels:
         t = ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
                     style="italic" if lb.role == "point" else "normal",
                     color="tab:blue" if lb.role == "number" else "black", zorder=6)
