@@ -205,23 +205,24 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 t = min((w / 2) / abs(ux) if abs(ux) > 1e-9 else math.inf,
                         (h / 2) / abs(uy) if abs(uy) > 1e-9 else math.inf)
                 cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
-    n_own = len(cands)
+    passes = [(cands, lb.leader)]
     if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
-        cands += _leader_candidates(lb, w, h, gap, (8.0, 11.0, 15.0, 20.0))
-    best = None
-    for rank, c in enumerate(cands):
-        box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
-        if _boxes_hit(box, boxes):
-            continue
-        near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
-                and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
-        hits = sum(1 for s in near if _crosses(box, s))
-        if hits == 0:
-            return c, box, lb.leader or rank >= n_own
-        if best is None or (hits, rank) < best[0]:
-            best = ((hits, rank), c, box, lb.leader or rank >= n_own)
-    if best is not None:
-        return best[1], best[2], best[3]
+        passes.append((_leader_candidates(lb, w, h, gap, (8.0, 11.0, 15.0, 20.0)), True))
+    for group, leader in passes:
+        best = None
+        for rank, c in enumerate(group):
+            box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+            if _boxes_hit(box, boxes):
+                continue
+            near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
+                    and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
+            hits = sum(1 for s in near if _crosses(box, s))
+            if hits == 0:
+                return c, box, leader
+            if best is None or (hits, rank) < best[0]:
+                best = ((hits, rank), c, box)
+        if best is not None:       # beside its entity, crossing the fewest lines, before a leader
+            return best[1], best[2], leader
     c = cands[0]
     return c, (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2), lb.leader
 
