@@ -169,13 +169,14 @@ def descent(text: str, height: float) -> float:
 
 
 def text_box(pos: Vec, text: str, height: float, align: str = "bottom-left",
-             rotation: float = 0.0, pad: float = 0.5) -> Polygon:
-    """The box (sheet mm) of a one-line text anchored at ``pos`` with ``align``, plus ``pad``."""
+             rotation: float = 0.0, pad: float = 0.5, descend: bool = False) -> Polygon:
+    """The box (sheet mm) of a one-line text anchored at ``pos`` with ``align``, plus ``pad``;
+    ``descend``: down to its descenders (a label's place is chosen with them)."""
     ax, ay = _ALIGN_NAMES[align]
     w = style.text_width(text, height)
     x0 = -w * ax / 2.0
     y0 = -height * ay / 2.0
-    depth = descent(text, height)
+    depth = descent(text, height) if descend else 0.0
     poly = box(x0 - pad, y0 - depth - pad, x0 + w + pad, y0 + height + pad)
     if rotation:
         poly = affinity.rotate(poly, rotation, origin=(0, 0))
@@ -336,7 +337,7 @@ class Canvas:
                 t = min(((w / 2 + 0.5) / abs(ux)) if abs(ux) > 1e-9 else math.inf,
                         ((height / 2 + 0.5) / abs(uy)) if abs(uy) > 1e-9 else math.inf)
                 c = (p[0] + ux * (t + dist), p[1] + uy * (t + dist))
-                poly = text_box(c, text, height, "center")
+                poly = text_box(c, text, height, "center", descend=True)
                 own = poly.distance(Point(p))
                 wrong = sum(1 for q in rivals if poly.distance(q) < own)
                 score = (wrong + self.annotations.hits_box(poly), self.annotations.crossings(poly), rank)
