@@ -5,7 +5,7 @@ solver (``kinematics.positions.NEWTON_REL_TOL``, ``kinematics.extremes.ROOT_XTOL
 """
 from __future__ import annotations
 
-__all__ = ["RTOL_EQUAL", "RTOL_ROUNDOFF", "RTOL_RANK", "TINY", "MM_EPS"]
+__all__ = ["RTOL_EQUAL", "RTOL_ROUNDOFF", "RTOL_RANK", "TINY", "MM_EPS", "LABEL_NEAR_MM"]
 
 #: Relative: two quantities equal by construction count as equal (three collinear points of a
 #: link, a check exactly on its limit, a tie between candidates, a ratio on the edge of its band).
@@ -20,3 +20,9 @@ RTOL_RANK = 1e-10
 TINY = 1e-300
 #: Absolute, in sheet millimetres: two coordinates of a drawing this close are the same point.
 MM_EPS = 1e-6
+#: Absolute, in mm of paper (a sheet, or a note figure at its own size): the largest gap between a
+#: label's box and what it names (its point, its vector or link). 1.6 letter heights of a sheet's
+#: 5 mm lettering: a placer that tries the rings round a point at 1.5 and 6.5 mm (Canvas.label)
+#: stays within it; a label farther than this reads as the name of whatever is nearer
+#: (tests/labels checks every sheet and note figure of every example against it).
+LABEL_NEAR_MM = 8.0

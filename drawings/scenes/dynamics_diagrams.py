@@ -253,9 +253,12 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Sce
         v.arc((0.0, y0), r_arc, 0.0, psi, "thin")
         mid = math.radians(psi / 2)
         v.label((r_arc * math.cos(mid), y0 + r_arc * math.sin(mid)), name, 3.5, gap_mm=1.0, prefer_deg=-20.0)
-    for p, name in zip(pts[:-1], labels[:-1]):
-        if name.isdigit():
-            v.label(p, name, 3.5, gap_mm=1.0)
+    nodes = pts[:-1]
+    for p, name in zip(nodes, labels[:-1]):
+        if name.isdigit():           # beside its own node: never nearer to another node (issue 12, «5», «7»)
+            v.label(p, name, 3.5, gap_mm=1.0, others=[q for q in nodes if q != p])
+    v.circle_mm((0.0, K_mm), 0.8, "contour")
+    v.circle_mm((0.0, L_mm), 0.8, "contour")
     v.text((-2.0, K_mm + 1.0), "K", 5.0, "bottom-right")
     v.text((-2.0, L_mm - 1.0), "L", 5.0, "top-right")
     kl = v.dimension((0.0, L_mm), (0.0, K_mm), offset_mm=LEFT_MM + 2.0, decimals=1)

@@ -8,7 +8,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import Point, Polygon, box
+from shapely.geometry import LineString, Point, Polygon, box
+from shapely.geometry import Point as ShapelyPoint
 from shapely.ops import nearest_points
 
 from drawings import style
@@ -115,7 +116,7 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
         p = view.transform(lb.at)
         rl.place_rich(view, rl.around(p, label, letter_height, 45.0), label, letter_height,
-                      inside=inside, optional=small)
+                      inside=inside, optional=small, names=ShapelyPoint(p))
     # names of the components along their arrows
     if names:
         for lb in scene.labels:
@@ -125,7 +126,8 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
             if math.dist(a, b) < 1.0:
                 continue
             rich = rl.from_tex(lb.text)
-            rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside)
+            rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside,
+                            names=LineString([a, b]))
     return drawn
 
 

@@ -9,6 +9,7 @@ from drawings.layout import Rect
 from drawings.scenes import dynamics_diagrams as dd
 from drawings.scenes import dynamics_flywheel as df
 from drawings.sheet import Sheet
+from reportgen.dynamics.hub import hub_of
 from reportgen.project import Project
 from ..words import designation, tr
 
@@ -83,5 +84,6 @@ def draw(project: Project, number: int, count: int) -> Sheet:
         w, h = df.sketch_size(res.flywheel, k, stacked)
         cy = (top + bottom) / 2 if h <= top - bottom else top - h / 2
         sheet.set_scale(df.scale_text(k))                              # the flywheel's sketch
-        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), k, stacked)
+        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), k, stacked,
+                         hub_of(res.M_drive, 2000.0 * res.flywheel.radius))
     return sheet

@@ -6,10 +6,11 @@ from __future__ import annotations
 
 
 import numpy as np
-from matplotlib.patches import Circle, Rectangle
+from matplotlib.patches import Circle, Polygon, Rectangle
 
 from ..parts import tr
 from . import comma, comma_axes, new_figure
+from .labels import names
 
 GRAPH = "tab:blue"        # the graphical construction
 EXACT = "black"
@@ -45,9 +46,11 @@ def omega_figure(res, omegas: dict[str, np.ndarray]):
     return fig
 
 
-def flywheel_figure(fw):
-    """Sketch of the flywheel: the front view and the axial section with R, b (and h, r for a rim)
-    dimensioned in millimetres."""
+def flywheel_figure(fw, hub):
+    """Sketch of the flywheel: the front view with the bore and its keyway, and the axial section
+    through the keyway (the hub's parts of :mod:`reportgen.dynamics.hub`, as sheet 3 draws them),
+    with D, b, the bore d and d + t2 dimensioned in millimetres."""
+    from reportgen.dynamics.hub import bore_outline, section_rects
     R, b = fw.radius * 1000, fw.width * 1000
     r_in = fw.inner_radius * 1000
     fig = new_figure(15.0, 8.5)
@@ -56,21 +59,27 @@ def flywheel_figure(fw):
     ax.add_patch(Circle((0, 0), R, fill=False, lw=1.2))
     if r_in > 0:
         ax.add_patch(Circle((0, 0), r_in, fill=False, lw=1.2))
+        ax.add_patch(Circle((0, 0), hub.hub_d / 2, fill=False, lw=1.2))
+    bore = np.asarray(bore_outline(hub))
+    ax.add_patch(Polygon(bore, closed=True, fill=False, lw=1.0))
     ext = 1.12 * R
     for p, q in (((-ext, 0), (ext, 0)), ((0, -ext), (0, ext))):
         ax.plot(*zip(p, q), color="0.3", lw=0.5, ls="-.")
-    # section, to the right
+    # section through the keyway, to the right
     x0 = 1.6 * R
-    rings = [(-R, R)] if r_in <= 0 else [(r_in, R), (-R, -r_in)]
-    for y0, y1 in rings:
-        ax.add_patch(Rectangle((x0, y0), b, y1 - y0, fill=True, facecolor="white", hatch="///", lw=1.2,
-                               edgecolor="black"))
+    for ax0, ry0, ax1, ry1 in section_rects(R, r_in, b, hub):
+        ax.add_patch(Rectangle((x0 + ax0, ry0), ax1 - ax0, ry1 - ry0, fill=True, facecolor="white", hatch="///",
+                               lw=1.2, edgecolor="black"))
     ax.plot([x0 - 0.12 * R, x0 + b + 0.12 * R], [0, 0], color="0.3", lw=0.5, ls="-.")
     # dimensions
     _dim(ax, (x0 + b + 0.25 * R, -R), (x0 + b + 0.25 * R, R), f"Ø{comma(round(2 * R))}", vertical=True)
     _dim(ax, (x0, R + 0.18 * R), (x0 + b, R + 0.18 * R), comma(round(b)), vertical=False)
+    _dim(ax, (x0 - 0.12 * R, -hub.d / 2), (x0 - 0.12 * R, hub.d / 2 + hub.t2), comma(hub.d + hub.t2), vertical=True)
+    _dim(ax, (-hub.d / 2, -0.3 * R), (hub.d / 2, -0.3 * R), f"Ø{comma(hub.d)}", vertical=False, below=True)
+    for xx in (-hub.d / 2, hub.d / 2):
+        ax.plot([xx, xx], [0, -0.3 * R - 0.03 * R], color="black", lw=0.4)
     if r_in > 0:
-        _dim(ax, (x0 - 0.25 * R, -r_in), (x0 - 0.25 * R, r_in), f"Ø{comma(round(2 * r_in))}", vertical=True)
+        _dim(ax, (x0 - 0.3 * R, -r_in), (x0 - 0.3 * R, r_in), f"Ø{comma(round(2 * r_in))}", vertical=True)
     ax.set_aspect("equal")
     ax.set_xlim(-1.2 * R, x0 + b + 0.7 * R)
     ax.set_ylim(-1.25 * R, 1.45 * R)
@@ -78,11 +87,12 @@ def flywheel_figure(fw):
     return fig
 
 
-def _dim(ax, p, q, text: str, vertical: bool) -> None:
+def _dim(ax, p, q, text: str, vertical: bool, below: bool = False) -> None:
     ax.annotate("", xy=q, xytext=p, arrowprops=dict(arrowstyle="<|-|>", lw=0.6, color="black",
                                                     mutation_scale=8, shrinkA=0, shrinkB=0))
     mx, my = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
     if vertical:
-        ax.text(mx, my, text + " ", rotation=90, ha="right", va="center", fontsize=10)
+        t = ax.text(mx, my, text + " ", rotation=90, ha="right", va="center", fontsize=10)
     else:
-        ax.text(mx, my, text, ha="center", va="bottom", fontsize=10)
+        t = ax.text(mx, my, text, ha="center", va="top" if below else "bottom", fontsize=10)
+    names(t, p, q)

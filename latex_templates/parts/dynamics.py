@@ -19,6 +19,7 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.dynamics.hub import hub_of
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
 from reportgen.scenes.dynamics import MU_J, MU_M, DynamicsScenes
 from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
@@ -412,11 +413,12 @@ def content(project) -> PartContent:
     fig_work = scene_figure(scenes.column_group())
     fig_witt = scene_figure(scenes.wittenbauer_group())
     fig_note = {"dyn_work": scene_caption(project, fig_work, 3), "dyn_wittenbauer": scene_caption(project, fig_witt, 3)}
+    hub = hub_of(res.M_drive, 2000.0 * res.flywheel.radius)          # the sketch's bore and keyway (sheet 3's)
     figures = {
         "dyn_work": fig_work,
         "dyn_wittenbauer": fig_witt,
         "dyn_omega": fig.omega_figure(res, omegas),
-        "dyn_flywheel": fig.flywheel_figure(res.flywheel),
+        "dyn_flywheel": fig.flywheel_figure(res.flywheel, hub),
     }
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
@@ -428,7 +430,7 @@ def content(project) -> PartContent:
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
         "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
         "J_var": float(res.J_red.max() - res.J_red.min()), "J_mean": float(res.J_red.mean()),
-        "omega": omega, "delta": delta, "shape": res.flywheel.shape,
+        "omega": omega, "delta": delta, "shape": res.flywheel.shape, "hub": hub,
         "index_K": labels[int(scenes.wittenbauer.values["index_K"])],
         "index_L": labels[int(scenes.wittenbauer.values["index_L"])], "fig_note": fig_note,
         "fig_w": {k: f"{f.width_cm:.2f}cm" for k, f in (("dyn_work", fig_work), ("dyn_wittenbauer", fig_witt))},
