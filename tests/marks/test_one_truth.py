@@ -16,9 +16,8 @@ import re
 
 import pytest
 
-from conftest import EXAMPLES
 from latex_templates.render import Strings
-from truth_read import (assigned, labelled_values, language, note_scales, pdf_text, position_pairs,
+from truth_read import (EXAMPLES, assigned, labelled_values, language, note_scales, pdf_text, position_pairs,
                         results, sheet_scales, sheet_texts)
 
 pytestmark = pytest.mark.slow

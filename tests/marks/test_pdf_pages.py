@@ -17,7 +17,7 @@ import unicodedata
 
 import pytest
 
-from conftest import EXAMPLES, ROOT
+from truth_read import EXAMPLES, ROOT
 from latex_templates.render import Strings
 
 pytestmark = pytest.mark.slow

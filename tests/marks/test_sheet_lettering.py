@@ -13,7 +13,7 @@ from pathlib import Path
 import ezdxf
 import pytest
 
-from conftest import EXAMPLES, ROOT
+from truth_read import EXAMPLES, ROOT
 from drawings.sheet import Sheet
 from drawings.sheet_font import drawable
 from drawings.style import TEXT_STYLE, TEXT_STYLE_FONT, ensure_sheet_font

@@ -13,6 +13,9 @@ from pathlib import Path
 import ezdxf
 
 ROOT = Path(__file__).resolve().parents[2]
+#: Every example (course projects in ru, uk and en, the crane, the control work): the builds of
+#: issue 12's checks come from ``built`` of tests/conftest.py (one per session).
+EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml"))
 #: a scale's symbol as note and sheets print it: μ and its index (μl, μv, μF, μφ, μM, μλ …)
 SCALE = r"μ[A-Za-zА-Яа-яα-ωΑ-Ω]{1,2}(?![A-Za-zА-Яа-я])"
 
