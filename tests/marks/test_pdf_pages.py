@@ -103,6 +103,14 @@ def test_no_glyph_outside_the_text_block(example, built):
 
 
 @pytest.mark.parametrize("example", EXAMPLES)
+def test_no_page_runs_into_the_stamp(example, built):
+    """LaTeX's own word for a page whose text runs past the text block (into the stamp): an overfull
+    \\vbox of the output routine (seen with longtable after a top float, shaper p. 28)."""
+    log = (built(example) / "latex-build" / "report.log").read_text(encoding="utf-8", errors="replace")
+    assert "Overfull \\vbox" not in log, [ln for ln in log.splitlines() if "Overfull \\vbox" in ln]
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
 def test_no_residue_in_the_pdf_text(example, built):
     text = _pdftext(built(example) / "report.pdf")
     for residue in ("\\%", "??", "\\", "VAR{", "BLOCK{", "{{", "}}", "{%", "%}"):
