@@ -5,8 +5,9 @@
 * the scales results.json records (the groups' μl, the lever's μv, the force plans' μF, the
   diagrams' μφ, μM, μA, μE, μJ of section 3) are the ones note and sheets print;
 * every «position N (φ1 = X°)» of note and sheets names the φ1 of position N in results.json;
-* the flywheel's moments of inertia and the gear pair's numbers in the sheets' tables are results.json's,
-  and the note's formulas print the same numbers.
+* the flywheel's moments of inertia, the gear pair's numbers and the planetary reducer's table on the
+  sheets are results.json's, and the note's formulas print the same numbers;
+* F_ур and M_ур printed by the note are the analytic value or one of the graphical ones it records.
 
 A printed number agrees with an exact one when it is that number rounded to the printed digits.
 """
@@ -17,8 +18,8 @@ import re
 import pytest
 
 from latex_templates.render import Strings
-from truth_read import (EXAMPLES, assigned, labelled_values, language, note_scales, pdf_text, position_pairs,
-                        results, sheet_scales, sheet_texts)
+from truth_read import (EXAMPLES, assigned, labelled_values, language, note_scales, number_re, pdf_text,
+                        position_pairs, printed, results, sheet_scales, sheet_texts, table_rows)
 
 pytestmark = pytest.mark.slow
 
@@ -196,3 +197,32 @@ def test_balancing_force_and_moment_are_the_results(example, built):
         assert any(v.agrees(abs(f)) for f in forces), (v.text, forces)
     for v in shown_m:
         assert any(v.agrees(abs(m)) for m in moments), (v.text, moments)
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_reducer_table_is_the_results(example, built):
+    """The planetary reducer's table on its sheet (wheel, z, d; satellites K; ratio u) is results.json's."""
+    out = built(example)
+    mark = _mark(example)
+    pl = results(out).get("planetary")
+    if not pl:
+        pytest.skip("no planetary reducer in this work")
+    texts = sheet_texts(out / "sheets")
+    rows = [r for entries in texts.values() for r in table_rows(entries)]
+    wheels = {k.replace("′", "'"): (z, d) for (k, d), z in zip(pl["diameters_mm"].items(), pl["z"])}
+    seen = {}
+    for row in rows:
+        cells = [c.strip() for c in row]
+        for i, c in enumerate(cells[:-2]):
+            if c in wheels and all(re.fullmatch(number_re(mark), x) for x in cells[i + 1:i + 3]):
+                seen[c] = (printed(cells[i + 1], mark), printed(cells[i + 2], mark))
+                break
+        if cells[:1] == ["u"] and len(cells) > 1 and re.fullmatch(number_re(mark), cells[1]):
+            assert printed(cells[1], mark).agrees(pl["ratio"]), (cells, pl["ratio"])
+            seen["u"] = cells[1]
+        if cells[:1] == ["K"] and len(cells) > 1 and cells[1].isdigit():
+            assert int(cells[1]) == pl["satellites"], cells
+            seen["K"] = cells[1]
+    assert set(seen) == set(wheels) | {"u", "K"}, seen
+    for k, (z, d) in wheels.items():
+        assert seen[k][0].value == z and seen[k][1].agrees(d), (k, seen[k], z, d)
