@@ -53,6 +53,19 @@ def paper_size(doc: Drawing) -> tuple[float, float]:
     return float(ext.size.x), float(ext.size.y)
 
 
+def _fixed_limits(ax) -> None:
+    """Skip the data-limit bookkeeping of every added artist: the view is set to the paper below
+    (autoscaling off), so the limits are never read, and updating them took half the preview's time
+    (the Bézier extremes of every glyph outline of the text)."""
+    ax._update_patch_limits = _ignore
+    ax._update_line_limits = _ignore
+    ax.update_datalim = _ignore
+
+
+def _ignore(*_args: object, **_kwargs: object) -> None:
+    return None
+
+
 def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.PathLike[str],
                *, dpi: int = 100) -> Path:
     """Render the modelspace of a DXF (path or document) to a PNG on white paper."""
@@ -70,6 +83,7 @@ def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.Path
     try:
         ax = fig.add_axes((0, 0, 1, 1))
         ax.set_axis_off()
+        _fixed_limits(ax)
         msp = doc.modelspace()
         with _preview_lettering(doc):
             ctx = RenderContext(doc)

@@ -3,6 +3,8 @@ project's stages and its boxes (:mod:`.boxes`). The note and the sheets read the
 from __future__ import annotations
 
 from functools import cached_property
+from types import MappingProxyType
+from typing import Mapping
 
 from .plans import plan_scene
 from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
@@ -33,9 +35,21 @@ class Scenes:
 
     @cached_property
     def velocity_plan(self) -> Scene:
-        return plan_scene(self.project.plans[0])
+        """The velocity plan of the analysed position."""
+        return self.velocity_plans[self.project.analysed]
 
     @cached_property
     def acceleration_plan(self) -> Scene:
-        v, a = self.project.plans
-        return plan_scene(a, (set(v.points) - {"p"}) | {"π"})
+        """The acceleration plan of the analysed position."""
+        return self.acceleration_plans[self.project.analysed]
+
+    @cached_property
+    def velocity_plans(self) -> Mapping[int, Scene]:
+        """The velocity plan of every plan position (``project.plan_positions``, in its order)."""
+        return MappingProxyType({j: plan_scene(v) for j, (v, _) in self.project.plans_by_position.items()})
+
+    @cached_property
+    def acceleration_plans(self) -> Mapping[int, Scene]:
+        """The acceleration plan of every plan position (letters of the velocity plan's images)."""
+        return MappingProxyType({j: plan_scene(a, (set(v.points) - {"p"}) | {"π"})
+                                 for j, (v, a) in self.project.plans_by_position.items()})
