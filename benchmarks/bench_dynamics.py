@@ -14,6 +14,7 @@ import numpy as np
 from reportgen.dynamics import EnergyProfile, ProjectCycle, graphical_replica, solve_dynamics, steady_motion
 from reportgen.project import Project
 from reportgen.taskfile import load_task
+from reportgen.scenes.boxes import DEFAULT as DEFAULT_BOXES
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 NAMES = ("press", "conveyor", "crank-slider", "shaper")
@@ -62,7 +63,7 @@ def main() -> None:
         prof = EnergyProfile(cyc, r.theta)
         methods = [("exact", r.exact.J_fly), ("Мерцалов", r.merzalov.J_fly)]
         for n in (8, 12, 24, 48):
-            methods.append((f"graphical {n}", graphical_replica(cyc, r.delta_target, n).J_fly))
+            methods.append((f"graphical {n}", graphical_replica(cyc, r.delta_target, n, layout=DEFAULT_BOXES.diagrams).J_fly))
         for label, J in methods:
             d = steady_motion(cyc, prof, J, r.theta, r.delta_target).delta
             print(f"{name:<14}{label:<16}{J:>14.4f}{J / r.exact.J_fly - 1:>+10.2%}{d:>12.5f}{r.delta_target:>10.3f}")

@@ -6,8 +6,10 @@ size. Both are deterministic for the same DXF.
 """
 from __future__ import annotations
 
+import contextlib
 import os
 from pathlib import Path
+from typing import Iterator
 
 import ezdxf
 from ezdxf.document import Drawing
@@ -19,6 +21,24 @@ def _load(source: str | os.PathLike[str] | Drawing) -> Drawing:
     if isinstance(source, Drawing):
         return source
     return ezdxf.readfile(os.fspath(source))
+
+
+@contextlib.contextmanager
+def _preview_lettering(doc: Drawing) -> Iterator[None]:
+    """Text styles that name osifont name its completed copy while the preview is drawn
+    (:mod:`drawings.sheet_font`: osifont draws «ё», «Э» as a box); the document is restored after."""
+    from .sheet_font import preview_font
+    from .style import TEXT_STYLE_FONT, ensure_sheet_font
+    ensure_sheet_font()
+    font = preview_font()
+    changed = [st for st in doc.styles if st.dxf.get("font", "") == TEXT_STYLE_FONT]
+    for st in changed:
+        st.dxf.font = font
+    try:
+        yield
+    finally:
+        for st in changed:
+            st.dxf.font = TEXT_STYLE_FONT
 
 
 def paper_size(doc: Drawing) -> tuple[float, float]:
@@ -33,6 +53,19 @@ def paper_size(doc: Drawing) -> tuple[float, float]:
     return float(ext.size.x), float(ext.size.y)
 
 
+def _fixed_limits(ax) -> None:
+    """Skip the data-limit bookkeeping of every added artist: the view is set to the paper below
+    (autoscaling off), so the limits are never read, and updating them took half the preview's time
+    (the Bézier extremes of every glyph outline of the text)."""
+    ax._update_patch_limits = _ignore
+    ax._update_line_limits = _ignore
+    ax.update_datalim = _ignore
+
+
+def _ignore(*_args: object, **_kwargs: object) -> None:
+    return None
+
+
 def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.PathLike[str],
                *, dpi: int = 100) -> Path:
     """Render the modelspace of a DXF (path or document) to a PNG on white paper."""
@@ -44,22 +77,22 @@ def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.Path
     from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
     from ezdxf.addons.drawing.properties import LayoutProperties
 
-    from .style import ensure_sheet_font
-    ensure_sheet_font()
     doc = _load(source)
     w, h = paper_size(doc)
     fig = plt.figure(figsize=(w / MM_PER_INCH, h / MM_PER_INCH), dpi=dpi)
     try:
         ax = fig.add_axes((0, 0, 1, 1))
         ax.set_axis_off()
+        _fixed_limits(ax)
         msp = doc.modelspace()
-        ctx = RenderContext(doc)
-        props = LayoutProperties.from_layout(msp)
-        props.set_colors("#FFFFFF")
-        Frontend(ctx, MatplotlibBackend(ax, adjust_figure=False),
-                 config=Configuration(lineweight_scaling=72.0 / MM_PER_INCH,
-                                       min_lineweight=0.5)).draw_layout(
-            msp, finalize=True, layout_properties=props)
+        with _preview_lettering(doc):
+            ctx = RenderContext(doc)
+            props = LayoutProperties.from_layout(msp)
+            props.set_colors("#FFFFFF")
+            Frontend(ctx, MatplotlibBackend(ax, adjust_figure=False),
+                     config=Configuration(lineweight_scaling=72.0 / MM_PER_INCH,
+                                           min_lineweight=0.5)).draw_layout(
+                msp, finalize=True, layout_properties=props)
         lo = doc.header.get("$PLIMMIN", (0.0, 0.0))
         ax.set_xlim(float(lo[0]), float(lo[0]) + w)
         ax.set_ylim(float(lo[1]), float(lo[1]) + h)
@@ -81,7 +114,8 @@ def render_svg(source: str | os.PathLike[str] | Drawing, svg_path: str | os.Path
     backend = svg.SVGBackend()
     props = LayoutProperties.from_layout(msp)
     props.set_colors("#FFFFFF")
-    Frontend(RenderContext(doc), backend).draw_layout(msp, layout_properties=props)
+    with _preview_lettering(doc):
+        Frontend(RenderContext(doc), backend).draw_layout(msp, layout_properties=props)
     page = layout.Page(w, h, layout.Units.mm, margins=layout.Margins.all(0))
     text = backend.get_string(page, settings=layout.Settings(fit_page=True))
     Path(svg_path).write_text(text, encoding="utf-8")

@@ -99,15 +99,32 @@ class Transform:
                    self.at[0] - self.scale * self.origin[0], self.at[1] - self.scale * self.origin[1]])
 
 
+@dataclass(frozen=True)
+class LabelRecord:
+    """A label as drawn on a sheet: its text, the handles of its TEXT entities (a base and its
+    indices), what it names (``anchor``: a point or a line, sheet mm) and the view (canvas) it
+    belongs to. tests/labels reads the texts back from the DXF by these handles and checks that the
+    label stays within :data:`reportgen.tolerances.LABEL_NEAR_MM` of what it names."""
+    text: str
+    handles: tuple[str, ...]
+    anchor: BaseGeometry
+    view: str
+
+
 @dataclass
 class Annotations:
-    """Text boxes and drawn lines of one sheet (sheet mm), for placing labels and checking overlaps."""
+    """Text boxes and drawn lines of one sheet (sheet mm), for placing labels and checking overlaps;
+    ``labels`` what each label names (:class:`LabelRecord`)."""
     boxes: list[tuple[str, Polygon]] = field(default_factory=list)
     _obstacles: list[BaseGeometry] = field(default_factory=list)
     _tree: shapely.STRtree | None = None
+    labels: list[LabelRecord] = field(default_factory=list)
 
     def add_box(self, name: str, poly: Polygon) -> None:
         self.boxes.append((name, poly))
+
+    def add_label(self, record: LabelRecord) -> None:
+        self.labels.append(record)
 
     def add_obstacle(self, geom: BaseGeometry) -> None:
         self._obstacles.append(geom)
@@ -143,14 +160,26 @@ _ALIGN_NAMES = {
 }
 
 
+#: Letters and signs that reach below the base line, by about DESCENT of the cap height.
+DESCENDERS = frozenset("gjpqyрудфцщ(),;[]{}|")
+DESCENT = 0.3
+
+
+def descent(text: str, height: float) -> float:
+    """How far (mm) ``text`` reaches below its base line: its descenders (р, у, (, …), or 0."""
+    return DESCENT * height if any(ch in DESCENDERS for ch in text) else 0.0
+
+
 def text_box(pos: Vec, text: str, height: float, align: str = "bottom-left",
-             rotation: float = 0.0, pad: float = 0.5) -> Polygon:
-    """The box (sheet mm) of a one-line text anchored at ``pos`` with ``align``, plus ``pad``."""
+             rotation: float = 0.0, pad: float = 0.5, descend: bool = False) -> Polygon:
+    """The box (sheet mm) of a one-line text anchored at ``pos`` with ``align``, plus ``pad``;
+    ``descend``: down to its descenders (a label's place is chosen with them)."""
     ax, ay = _ALIGN_NAMES[align]
     w = style.text_width(text, height)
     x0 = -w * ax / 2.0
     y0 = -height * ay / 2.0
-    poly = box(x0 - pad, y0 - pad, x0 + w + pad, y0 + height + pad)
+    depth = descent(text, height) if descend else 0.0
+    poly = box(x0 - pad, y0 - depth - pad, x0 + w + pad, y0 + height + pad)
     if rotation:
         poly = affinity.rotate(poly, rotation, origin=(0, 0))
     return affinity.translate(poly, pos[0], pos[1])
@@ -177,6 +206,8 @@ class Canvas:
         self.transform = transform or Transform()
         self.annotations = annotations if annotations is not None else Annotations()
         self.name = name
+        #: The handle of the last TEXT entity drawn (a label of several texts collects them).
+        self.last_text_handle = ""
 
     # -- plain geometry ------------------------------------------------------------------------
     def _attrs(self, layer: str) -> dict:
@@ -260,30 +291,43 @@ class Canvas:
 
     # -- text ----------------------------------------------------------------------------------
     def text_mm(self, pos: Vec, text: str, height: float = 3.5, align: str = "bottom-left",
-                rotation: float = 0.0, layer: str = "text", register: bool = True) -> Polygon:
-        """A one-line TEXT at a *sheet* point; returns its box. ``align`` e.g. "center"."""
+                rotation: float = 0.0, layer: str = "text", register: bool = True,
+                names: BaseGeometry | None = None) -> Polygon:
+        """A one-line TEXT at a *sheet* point; returns its box. ``align`` e.g. "center";
+        ``names``: what the text is the label of (sheet mm), recorded in :attr:`Annotations.labels`."""
         ent = self.layout.add_text(style.dxf_literal(text), height=height, rotation=rotation, dxfattribs={
             **self._attrs(layer), "style": style.TEXT_STYLE,
             "lineweight": style.text_lineweight(height)})
         ent.set_placement(pos, align=_ALIGN[_ALIGN_NAMES[align]])
+        self.last_text_handle = str(ent.dxf.handle)
+        if names is not None:
+            self.annotations.add_label(LabelRecord(text, (self.last_text_handle,), names, self.name))
         poly = text_box(pos, text, height, align, rotation)
         if register:
             self.annotations.add_box(f"{self.name}: «{text}»", poly)
         return poly
 
     def text(self, pos: Coords, text: str, height: float = 3.5,
-             align: str = "bottom-left", rotation: float = 0.0, layer: str = "text") -> Polygon:
-        """A one-line TEXT at a model point (height in sheet mm)."""
-        return self.text_mm(self.transform(pos), text, height, align, rotation, layer)
+             align: str = "bottom-left", rotation: float = 0.0, layer: str = "text",
+             names: Coords | None = None) -> Polygon:
+        """A one-line TEXT at a model point (height in sheet mm); ``names``: the model point it is
+        the label of."""
+        named = None if names is None else Point(self.transform(names))
+        return self.text_mm(self.transform(pos), text, height, align, rotation, layer, names=named)
 
     def label(self, point: Coords, text: str, height: float = 5.0, gap_mm: float = 1.5,
-              prefer_deg: float = 45.0, layer: str = "text") -> Polygon:
+              prefer_deg: float = 45.0, layer: str = "text", names: BaseGeometry | None = None,
+              others: Sequence[Coords] = ()) -> Polygon:
         """A point label (letter) next to a model point, placed where it overlaps nothing.
 
         Tries 16 directions starting from ``prefer_deg`` and two distances; takes the first box that
         overlaps no other text and crosses no drawn line, else the one with the fewest conflicts.
+        ``names``: what the label names (sheet mm; default the point); ``others``: model points of
+        the same kind (the other numbered points of a curve) — a box nearer to one of them than to
+        its own point would name the wrong one and is taken last.
         """
         p = self.transform(point)
+        rivals = [Point(self.transform(q)) for q in others]
         w = style.text_width(text, height)
         best: tuple[tuple[int, int, int], Vec] | None = None
         order = [prefer_deg + s * k * 22.5 for k in range(9) for s in ((1, -1) if k else (1,))]
@@ -295,8 +339,10 @@ class Canvas:
                 t = min(((w / 2 + 0.5) / abs(ux)) if abs(ux) > ABS_ZERO else math.inf,
                         ((height / 2 + 0.5) / abs(uy)) if abs(uy) > ABS_ZERO else math.inf)
                 c = (p[0] + ux * (t + dist), p[1] + uy * (t + dist))
-                poly = text_box(c, text, height, "center")
-                score = (self.annotations.hits_box(poly), self.annotations.crossings(poly), rank)
+                poly = text_box(c, text, height, "center", descend=True)
+                own = poly.distance(Point(p))
+                wrong = sum(1 for q in rivals if poly.distance(q) < own)
+                score = (wrong + self.annotations.hits_box(poly), self.annotations.crossings(poly), rank)
                 rank += 1
                 if best is None or score < best[0]:
                     best = (score, c)
@@ -305,7 +351,8 @@ class Canvas:
             if best is not None and best[0][:2] == (0, 0):
                 break
         assert best is not None
-        return self.text_mm(best[1], text, height, "center", layer=layer)
+        return self.text_mm(best[1], text, height, "center", layer=layer,
+                            names=Point(p) if names is None else names)
 
     # -- vectors -------------------------------------------------------------------------------
     def arrowhead_mm(self, tip: Vec, direction: Vec, length: float = 5.0, width: float = 1.7,
@@ -341,7 +388,8 @@ class Canvas:
             self._sheet_polyline([a, shaft_end], layer)
         self.arrowhead_mm(b, (ux, uy), head, head / 3.0, layer)
         if label:
-            self.label(end, label, label_height, prefer_deg=math.degrees(math.atan2(uy, ux)))
+            self.label(end, label, label_height, prefer_deg=math.degrees(math.atan2(uy, ux)),
+                       names=LineString([a, b]))
 
     # -- dimensions ----------------------------------------------------------------------------
     def dimension(self, p1: Coords, p2: Coords, offset_mm: float = 10.0,

@@ -207,6 +207,10 @@ class Sheet:
         return cls(A1, TitleBlock.from_document(document, title=title, code=code, number=number,
                                                 count=count, scale=scale, letter=letter))
 
+    #: «Масштаб» of a sheet whose views are schemes: ГОСТ 2.701 (п. 4.1.1) draws schemes without
+    #: scale, so the cell says so with a dash instead of staying empty (or naming a false ratio).
+    NO_SCALE = "—"
+
     def set_scale(self, label: str) -> None:
         """Fill «Масштаб» of the title block with the main view's scale (ГОСТ 2.104 graph 6,
         ГОСТ 2.109: the other views' scales are written at their titles); once per sheet."""

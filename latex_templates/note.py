@@ -178,27 +178,15 @@ class _Namespace:
         return self.__getattr__(name)
 
 
-def _release(fig: Any) -> None:
-    """Let pyplot forget a figure once it is saved (its memory is freed; saving again still works)."""
-    import sys
-    plt = sys.modules.get("matplotlib.pyplot")
-    if plt is not None:
-        try:
-            plt.close(fig)
-        except (TypeError, ValueError):
-            pass
-
-
 def _place_figure(obj: Any, fig_dir: Path, stem: str, section_key: str, name: str) -> FigureRef:
     """Save a matplotlib figure as PDF (no timestamp), or copy a file; return its reference."""
     fig_dir.mkdir(parents=True, exist_ok=True)
     safe = re.sub(r"[^A-Za-z0-9-]", "-", stem)
     if hasattr(obj, "savefig"):
+        from .figures.saving import place
+
         target = fig_dir / f"{safe}.pdf"
-        # a scene's figure keeps its exact size (it is drawn at a true scale); others are cropped
-        obj.savefig(target, format="pdf", bbox_inches=None if getattr(obj, "reportgen_exact", False) else "tight",
-                    metadata={"CreationDate": None, "ModDate": None, "Producer": None})
-        _release(obj)
+        place(obj, target)      # saved now, or queued by the build (latex_templates/figures/saving.py)
     else:
         src = Path(obj)
         if not src.is_file():

@@ -465,9 +465,10 @@ class CalcParts:
 LINE_WIDTH = 45
 
 
-def break_sum(source: str, width: int = LINE_WIDTH) -> list[str]:
+def break_sum(source: str, width: int = LINE_WIDTH, tail: int = 0) -> list[str]:
     """Break a LaTeX expression before top-level `` + `` / `` - `` (outside braces and
-    \\left…\\right), greedily, so that each line shows at most about ``width`` characters."""
+    \\left…\\right), greedily, so that each line shows at most about ``width`` characters and
+    the last one leaves room for ``tail`` more (the `` = result`` the formula ends with)."""
     cuts: list[int] = []
     depth = 0
     i = 0
@@ -490,13 +491,21 @@ def break_sum(source: str, width: int = LINE_WIDTH) -> list[str]:
         i += 1
     bounds = [0] + cuts + [len(source)]
     terms = [source[a:b].strip() for a, b in zip(bounds[:-1], bounds[1:])]
-    lines: list[str] = []
+    groups = _pack(terms, width)
+    if tail and len(groups[-1]) > 1 and visible_width(" ".join(groups[-1])) + tail > width:
+        groups[-1:] = _pack(groups[-1], max(width - tail, 1))
+    return [" ".join(g) for g in groups]
+
+
+def _pack(terms: list[str], width: int) -> list[list[str]]:
+    """Terms grouped greedily into lines of at most about ``width`` visible characters."""
+    groups: list[list[str]] = []
     for term in terms:
-        if lines and visible_width(lines[-1] + term) <= width:
-            lines[-1] = f"{lines[-1]} {term}"
+        if groups and visible_width(" ".join(groups[-1] + [term])) <= width:
+            groups[-1].append(term)
         else:
-            lines.append(term)
-    return lines
+            groups.append([term])
+    return groups
 
 
 def calc_parts(rec: CalcRecord) -> CalcParts:
@@ -506,12 +515,14 @@ def calc_parts(rec: CalcRecord) -> CalcParts:
     result_number = rec.result_number_latex()
     show_symbolic = symbolic != substituted
     show_substituted = substituted != result_number
-    width = visible_width(" ".join([rec.symbol, symbolic if show_symbolic else "",
-                                    substituted if show_substituted else "", rec.result_latex()]))
+    # the line as printed: symbol = symbolic = substitution = result (each «=» a character)
+    width = visible_width(" = ".join([rec.symbol, *([symbolic] if show_symbolic else []),
+                                      *([substituted] if show_substituted else []), rec.result_latex()]))
     wide = width > WIDE_FORMULA and show_symbolic and show_substituted
     lines: tuple[Tex, ...] = ()
-    if wide and visible_width(substituted) > LINE_WIDTH:
-        lines = tuple(Tex(p) for p in break_sum(substituted))
+    tail = visible_width("= " + rec.result_latex())
+    if wide and visible_width(substituted) + tail > LINE_WIDTH:
+        lines = tuple(Tex(p) for p in break_sum(substituted, tail=tail))
     return CalcParts(
         symbol=Tex(rec.symbol),
         symbolic=Tex(symbolic) if show_symbolic else None,

@@ -23,6 +23,8 @@ from .tolerances import TINY
 
 #: Length of the crank-angle axis for one turn, mm (seed 000 uses 192–240 mm).
 AXIS_MM = 240.0
+#: Intervals of the chord replica over one turn (sheet 1 and section 1 draw the same).
+INTERVALS = 24
 #: Pole distances a student picks from, mm.
 POLE_CHOICES = (10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0)
 #: The largest ordinate of a diagram is about this, mm.

@@ -33,7 +33,8 @@ CYCLE_POINTS = 361
 
 #: The stages of a project: what a part of the note or a sheet declares in its ``NEEDS``.
 STAGES = frozenset({"linkage", "structure", "model", "strokes", "phi", "kinematics", "analysed", "plans",
-                    "scenes", "kinetostatics", "balancing_cycle", "balancing_cycle_dense", "resistance",
+                    "plan_positions", "plans_by_position", "output_diagrams", "scenes", "kinetostatics",
+                    "balancing_cycle", "balancing_cycle_dense", "resistance",
                     "gears", "planetary", "dynamics", "crane"})
 
 
@@ -160,11 +161,50 @@ class Project:
     @cached_property
     def analysed(self) -> int:
         """The position analysed in detail (plans, kinetostatics): ``[analysis] force_position`` if
-        it is a position number, else 2 (clipped to the positions)."""
-        fp = self.task.analysis.force_position
+        it is a position number, else the first of ``[analysis] plan_positions`` if given, else 2
+        (clipped to the positions)."""
+        a = self.task.analysis
+        fp = a.force_position
         n = len(self.phi)
-        i = fp if isinstance(fp, int) and not isinstance(fp, bool) else 2
+        if isinstance(fp, int) and not isinstance(fp, bool):
+            i = fp
+        else:
+            i = a.plan_positions[0] if a.plan_positions else 2
         return min(max(i, 0), n - 1)
+
+    @cached_property
+    def plan_positions(self) -> tuple[int, ...]:
+        """The positions whose velocity and acceleration plans are drawn in full, the analysed one
+        first: ``[analysis] plan_positions`` (those within the positions), else the default rule of
+        :mod:`reportgen.plan_positions` (one of the working and one of the idle stroke)."""
+        from .plan_positions import default_plan_positions
+        i, n = self.analysed, len(self.phi)
+        given = self.task.analysis.plan_positions
+        if given is None:
+            strokes = self.strokes if self.task.document.kind != "control-work" else None
+            sgn = 1.0 if self.model.omega >= 0 else -1.0
+            return default_plan_positions([float(x) for x in self.phi], strokes, sgn, i)
+        return (i, *sorted(j for j in set(given) if j != i and 0 <= j < n))
+
+    @cached_property
+    def plans_by_position(self):
+        """The velocity and acceleration plans of every plan position (position → (Plan, Plan)): the
+        analysed one is ``plans``; the others at the scales of :func:`reportgen.plans.build_plans`,
+        coarser where a point would stand beyond ``boxes.other_plan_mm`` from the pole."""
+        from types import MappingProxyType
+        from .plans import build_plans, round_scale
+        out = {}
+        for j in self.plan_positions:
+            if j == self.analysed:
+                out[j] = self.plans
+                continue
+            v, a = build_plans(self.linkage, self.structure, self.kinematics, j)
+            far = [max(math.hypot(*pt) for pt in plan.points.values()) * plan.scale for plan in (v, a)]
+            mu = [max(plan.scale, round_scale(f, self.boxes.other_plan_mm)) for plan, f in zip((v, a), far)]
+            if mu != [v.scale, a.scale]:
+                v, a = build_plans(self.linkage, self.structure, self.kinematics, j, mu_v=mu[0], mu_a=mu[1])
+            out[j] = (v, a)
+        return MappingProxyType(out)
 
     @cached_property
     def plans(self):
@@ -217,6 +257,15 @@ class Project:
             return None
         from .crane import crane_calc
         return crane_calc(self.task.crane)
+
+    @cached_property
+    def output_diagrams(self):
+        """The s–v–a diagrams of the output (reportgen.diagrams.Diagrams) from position 0, with the
+        chord replica at ``diagrams.INTERVALS``; None if the output has no extreme positions."""
+        if self.strokes is None:
+            return None
+        from .diagrams import INTERVALS, build_diagrams
+        return build_diagrams(self.model, self.strokes, float(self.phi[0]), n=INTERVALS)
 
     @cached_property
     def dynamics(self):

@@ -63,6 +63,22 @@ def kinematics_block(kin: KinematicsResult, strokes: Strokes | None = None) -> d
     return block
 
 
+def plans_block(project: Project) -> list[dict]:
+    """The plans drawn in full (``[analysis] plan_positions``): by plan position, the analysed one
+    first — its index in ``phi_deg``, crank angle, stroke and the scales μv, μa the note and sheet 1
+    print."""
+    from .plan_positions import stroke_of
+    kin = project.kinematics
+    strokes = project.strokes if project.full_cycle else None
+    sgn = 1.0 if project.model.omega >= 0 else -1.0
+    out = []
+    for j, (v, a) in project.plans_by_position.items():
+        out.append({"position": j, "phi_deg": float(np.mod(kin.phi_deg[j], 360.0)),
+                    "stroke": stroke_of(float(kin.phi[j]), strokes, sgn),
+                    "velocity_scale": v.scale, "acceleration_scale": a.scale})
+    return out
+
+
 ALL_SECTIONS = ("structure", "kinematics", "kinetostatics", "dynamics", "gears", "planetary", "crane")
 
 
@@ -76,6 +92,7 @@ def build_results(project: Project, sections: tuple[str, ...] = ALL_SECTIONS,
             out["structure"] = project.structure.to_dict()
         if "kinematics" in sections:
             out["kinematics"] = kinematics_block(project.kinematics, project.strokes)
+            out["kinematics"]["plans"] = plans_block(project)
         if "kinetostatics" in sections:
             from .kinetostatics.results import kinetostatics_block, kinetostatics_of
             out["kinetostatics"] = kinetostatics_block(kinetostatics_of(project, force_at_deg), project)

@@ -149,6 +149,8 @@ class Analysis:
     positions: int = 8
     start: Literal["extreme"] | float = "extreme"   # or a crank angle, deg
     force_position: int | Literal["max-load"] = 2
+    #: positions whose plans are drawn in full; None: the rule of ``Project.plan_positions``
+    plan_positions: tuple[int, ...] | None = None
 
 
 @dataclass(frozen=True)

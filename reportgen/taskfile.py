@@ -617,7 +617,27 @@ def _analysis(value: Any, path: str, control: bool = False) -> Analysis:
     force_position = t.get("force_position", fp_spec, SECTION["analysis"].default("force_position"))
     if isinstance(force_position, int) and force_position >= positions:  # the default with few positions
         raise TaskError(t.at("force_position"), f"got {force_position}", fp_spec.expected)
-    return Analysis(positions=positions, start=start, force_position=force_position)
+    plan_positions = _plan_positions(t, positions, force_position)
+    return Analysis(positions=positions, start=start, force_position=force_position,
+                    plan_positions=plan_positions)
+
+
+def _plan_positions(t: Table, positions: int, force_position: int | str) -> tuple[int, ...] | None:
+    """``[analysis] plan_positions``: 1–3 distinct indices below ``positions`` that hold the position
+    analysed in detail when ``force_position`` names one (its acceleration plan gives the inertia
+    forces of the kinetostatics); None when left out (the default rule of ``Project.plan_positions``)."""
+    if "plan_positions" not in t:
+        return None
+    spec = Array(Int(ge=0, le=positions - 1, what=f"a position index 0…{positions - 1}"), 1, 3,
+                 what=f"an array of 1 to 3 distinct position indices 0…{positions - 1}")
+    value = t.get("plan_positions", spec)
+    if len(set(value)) != len(value):
+        raise TaskError(t.at("plan_positions"), f"got {list(value)} (a position twice)", spec.expected)
+    if isinstance(force_position, int) and force_position not in value:
+        raise TaskError(t.at("plan_positions"), f"got {list(value)}, without force_position = {force_position}",
+                        f"positions that hold {force_position} (the kinetostatics uses its acceleration "
+                        "plan), or force_position set to one of them")
+    return tuple(value)
 
 
 def _dynamics(value: Any, path: str) -> Dynamics:

@@ -119,6 +119,10 @@ POSITIONS = Int(ge=1, le=360)
 COURSE_POSITIONS = Int(ge=3, le=360)
 #: ``force_position`` as documented; the loader narrows the index to ``positions - 1``.
 FORCE_POSITION = OneOf(Word("max-load"), Int(ge=0, le=359, what="a position index"))
+#: ``plan_positions`` as documented; the loader narrows the indices to ``positions - 1``, asks
+#: them distinct and holding the kinetostatics position (docs/task-format-notes.md).
+PLAN_POSITIONS = Array(Int(ge=0, le=359, what="a position index"), 1, 3,
+                       what="an array of 1 to 3 distinct position indices")
 TEETH = Int(ge=5, le=1000, what="a number of teeth: an integer")
 SHIFT = OneOf(Word("auto"), Number(ge=-3, le=3))
 GEAR_MODULE = Number(gt=0, le=1000, unit="mm")
@@ -296,6 +300,11 @@ SECTIONS: tuple[Section, ...] = (
                     "crank angle", "extreme", _dflt(Analysis, "start")),
                 Key("force_position", FORCE_POSITION, "the position analysed on the kinetostatics sheet: "
                     "an index below `positions`, or \"max-load\"", 2, _dflt(Analysis, "force_position")),
+                Key("plan_positions", PLAN_POSITIONS, "the positions whose velocity and acceleration "
+                    "plans the note (section 1) and sheet 1 draw in full; they must hold the position "
+                    "analysed in detail (`force_position` when it is an index)", [2, 6], OPTIONAL,
+                    "that position and, when the output has extreme positions, the position of the other "
+                    "stroke nearest the middle of that stroke (one in the working, one in the idle stroke)"),
             )),
     Section("control_work", "the control work", "The assignment of a control work (course manual of seed "
             "001, §7–8; docs/control-work.md): `reportgen new --table T --variant V` writes it.", (

@@ -16,7 +16,7 @@ __all__ = [
     # absolute, in the quantity's SI unit
     "ABS_ZERO", "ABS_ROUNDOFF", "WHOLE_EPS", "ANGLE_READ_EPS", "TINY",
     # absolute, on paper
-    "MM_EPS", "MM_ROUNDOFF", "AREA_EPS_MM2", "BLANK_INK",
+    "MM_EPS", "MM_ROUNDOFF", "AREA_EPS_MM2", "BLANK_INK", "LABEL_NEAR_MM",
     # stopping rules of the solvers
     "BRENT_XTOL", "BRENT_RTOL", "EXTREME_XTOL", "BRACKET_NODE_EPS", "ROOT_XTOL", "CONSTRUCTION_TOL",
     "NEWTON_REL_TOL", "EDGE_ANGLE_TOL", "MEAN_SPEED_XREL", "MEAN_SPEED_RTOL", "MEAN_SPEED_REFINE",
@@ -84,6 +84,13 @@ box on an edge, a view against its neighbour), they do not overlap."""
 BLANK_INK = 1e-4
 """Share of inked pixels in a rendered sheet below which it is blank: a drawn sheet has its frame and
 title block, far more ink than this."""
+
+LABEL_NEAR_MM = 8.0
+"""Absolute, in mm of paper (a sheet, or a note figure at its own size): the largest gap between a
+label's box and what it names (its point, its vector or link). 1.6 letter heights of a sheet's 5 mm
+lettering: a placer that tries the rings round a point at 1.5 and 6.5 mm (Canvas.label) stays within
+it; a label farther than this reads as the name of whatever is nearer (tests/labels checks every
+sheet and note figure of every example against it)."""
 
 # ----------------------------------------------------------------------- stopping rules of the solvers
 BRENT_XTOL = 2e-12

@@ -21,6 +21,9 @@ from drawings.layout import LAYOUT_LIMIT, Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.errors import BuildError
+from reportgen.scenes import dynamics as ds
+from reportgen.scenes.scene import Polyline, Scene, Segment
+from .render import draw_entities
 from ..words import tr
 
 #: Room around a diagram: above (title, scale), below (position numbers), mm.
@@ -40,8 +43,6 @@ J_BOTTOM_MM = 16.0
 #: Radius of the arcs marking ψmax, ψmin at K and L (at least ARC_MIN_MM), mm.
 ARC_MM = 22.0
 ARC_MIN_MM = 10.0
-#: The largest |ω − ω_m| (or the band) of ω(φ) is at most this high, mm (μω is round).
-OMEGA_MM = 36.0
 
 
 @dataclass(frozen=True)
@@ -91,6 +92,12 @@ def spans(g, labels: list[str] | None = None) -> dict[str, Span]:
             "W": Span.of(g.e_mm, tangents, _tangent_ends(g))}
 
 
+def _construction(scene: Scene):
+    """The scene's entities but its axes and break lines (the sheet draws its own, with arrows,
+    ticks and the breaks' names)."""
+    return [e for e in scene.entities if not e.id.startswith(("axis:", "break:"))]
+
+
 def _tangent_ends(g) -> np.ndarray:
     """Ordinates of the two tangents at the right end of the J axis."""
     x = _j_length(g)
@@ -100,7 +107,7 @@ def _tangent_ends(g) -> np.ndarray:
 
 def _j_length(g) -> float:
     """Length of the drawn tangents and of the J axis up to its arrow, mm."""
-    return float(np.max(g.j_mm)) + 12.0
+    return ds.j_length(g)
 
 
 def layout(g, labels: list[str], x0: float, y_top: float, y_bottom: float, omega_h: float = 0.0) -> Layout:
@@ -174,24 +181,17 @@ def _break_lines(view: View, g, span: Span, labels: list[str]) -> None:
         view.text((float(x), -span.down - 7.0), name, 3.5, "middle-right", rotation=90.0)
 
 
-def draw_moment(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
-    """M_red(φ): the points, the curve through them, the steps of the mid ordinates and the pole."""
+def draw_moment(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -> View:
+    """M_red(φ) (``scene``, :func:`reportgen.scenes.dynamics.moment_scene`): the points, the curve
+    through them, the steps of the mid ordinates carried to the M axis and joined to the pole."""
     sp = spans(g, labels)["M"]
     v = _view(sheet, "moment", lay.moment, lay.o_moment)
-    _title(v, tr("sheets.dd01"),
-           tr("sheets.dd02", v1=format_significant(g.mu_M, 4), v2=format_significant(g.mu_phi, 4)))
+    _title(v, tr("sheets.dd01"), tr("sheets.dd02", v1=format_significant(scene.scale(ds.MU_M).value, 4),
+                                    v2=format_significant(scene.scale(ds.MU_PHI).value, 4)))
     _phi_axes(v, g, sp, tr("sheets.dd03"), labels, numbers=True)
     _break_lines(v, g, sp, labels)
-    pts = list(zip(map(float, g.x), map(float, g.M_mm)))
-    v.polyline(pts, "contour")
-    for p in pts:
-        v.circle_mm(p, 0.6, "contour")
-    # steps: the mid ordinate over each interval, carried to the M axis and joined to the pole
-    pole = (-float(g.H), 0.0)
-    for a, b, y in zip(g.x[:-1], g.x[1:], g.mid_mm):
-        v.line((float(a), float(y)), (float(b), float(y)), "thin")
-        v.line((0.0, float(y)), pole, "construction")
-    v.circle_mm(pole, 0.8, "contour")
+    draw_entities(v, _construction(scene))
+    pole = scene.points["P"]
     v.text((pole[0], 2.0), "P", 5.0, "bottom-center")
     y_dim = -sp.down - 7.0
     v.dimension((pole[0], y_dim), (0.0, y_dim), offset_mm=0.0, text=f"H = {format_number(g.H, 0)}")
@@ -199,78 +199,73 @@ def draw_moment(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
     return v
 
 
-def _nodes_polyline(v: View, xs, ys) -> list[tuple[float, float]]:
-    """The curve through the positions' nodes (mm): a polyline with a small circle at every node."""
-    pts = list(zip(map(float, xs), map(float, ys)))
-    v.polyline(pts, "contour")
-    for p in pts:
-        v.circle_mm(p, 0.6, "contour")
-    return pts
-
-
-def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+def draw_work(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -> View:
     """A_с by chords and the straight line of A_дв = −A_с(2π)·φ/2π (from the origin to the end of
     A_с mirrored: the note's convention ΔE = A_дв + A_с)."""
     sp = spans(g)["A"]
     v = _view(sheet, "work", lay.work, lay.o_work)
-    _title(v, tr("sheets.dd04"),
-           tr("sheets.dd05", v1=format_significant(g.mu_A, 4)))
+    _title(v, tr("sheets.dd04"), tr("sheets.dd05", v1=format_significant(scene.scale(ds.MU_A).value, 4)))
     _phi_axes(v, g, sp, "A", labels, numbers=False)
-    pts = _nodes_polyline(v, g.x, g.a_mm)
-    end = (float(g.x[-1]), float(g.drive_mm[-1]))
-    v.line((0.0, 0.0), end, "contour")
-    v.line(pts[-1], end, "thin")               # the end ordinate of A_с carried over with its sign changed
+    draw_entities(v, _construction(scene))
+    curve = scene.entity("curve")
+    assert isinstance(curve, Polyline)
+    pts = list(curve.points)
+    drive = scene.entity("drive")
+    assert isinstance(drive, Segment)
+    end = drive.b
     i_mid = len(pts) // 2
     v.label(pts[i_mid], tr("sheets.dd06"), 5.0, prefer_deg=-60.0)
     v.label((end[0] * 0.5, end[1] * 0.5), tr("sheets.dd07"), 5.0, prefer_deg=120.0)
     return v
 
 
-def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -> View:
     """ΔE(φ) = A_дв + A_с at μE, by subtracting the line from the chords."""
     sp = spans(g)["E"]
     v = _view(sheet, "energy", lay.energy, lay.o_energy)
     k = tr("sheets.dd08", v1=g.enlargement) if g.enlargement > 1 else ""
-    _title(v, tr("sheets.dd09"),
-           tr("sheets.dd10", v1=format_significant(g.mu_E, 4), k=k))
+    _title(v, tr("sheets.dd09"), tr("sheets.dd10", v1=format_significant(scene.scale(ds.MU_E).value, 4), k=k))
     _phi_axes(v, g, sp, "ΔE", labels, numbers=True)
-    _nodes_polyline(v, g.x, g.e_mm)
+    draw_entities(v, _construction(scene))
     return v
 
 
-def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str]) -> tuple[View, float]:
-    """ΔE(J) through the positions, the tangents at ψmax, ψmin, K, L and the dimension KL (its value
-    is returned: the distance between K and L measured on the sheet, mm)."""
+def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -> tuple[View, float]:
+    """ΔE(J) through the positions, the tangents at ψmax, ψmin, K, L (``scene``,
+    :func:`reportgen.scenes.dynamics.wittenbauer_scene`) and the dimension KL (its value is returned:
+    the distance between K and L measured on the sheet, mm)."""
     sp = spans(g)["W"]
     v = _view(sheet, "wittenbauer", lay.wittenbauer, lay.o_wittenbauer)
-    _title(v, tr("sheets.dd11"), tr("sheets.dd12", v1=format_significant(g.mu_E, 4), v2=format_significant(g.mu_J, 4)))
-    x_len = _j_length(g)
+    _title(v, tr("sheets.dd11"), tr("sheets.dd12", v1=format_significant(scene.scale(ds.MU_E).value, 4),
+                                    v2=format_significant(scene.scale(ds.MU_J).value, 4)))
+    x_len = scene.values["j_length"]
     v.axes((0.0, 0.0), x_len + RIGHT_MM - 6.0, sp.up + 4.0, sp.down, x_label="J", y_label="ΔE")
-    pts = list(zip(map(float, g.j_mm), map(float, g.e_mm)))
-    v.polyline(pts, "contour")
-    for p, _name in zip(pts[:-1], labels[:-1]):
-        v.circle_mm(p, 0.6, "contour")
+    # the segment KL is the dimension's (below); the points K, L are drawn with their letters
+    draw_entities(v, [e for e in _construction(scene) if e.id != "KL"])
+    curve = scene.entity("curve")
+    assert isinstance(curve, Polyline)
+    pts = list(curve.points)
+    K_mm, L_mm = scene.values["K_mm"], scene.values["L_mm"]
     # the arcs of ψ stop short of the curve where it comes close to the ΔE axis (shaper)
     r_arc = min(ARC_MM, max(ARC_MIN_MM, 0.6 * float(np.min(g.j_mm))))
-    for y0, psi, name in ((g.K_mm, g.psi_max_deg, "ψmax"), (g.L_mm, g.psi_min_deg, "ψmin")):
-        t = math.tan(math.radians(psi))
-        v.line((0.0, y0), (x_len, y0 + x_len * t), "contour")
+    for y0, psi, name in ((K_mm, scene.values["psi_max_deg"], "ψmax"), (L_mm, scene.values["psi_min_deg"], "ψmin")):
         v.line((0.0, y0), (r_arc + 4.0, y0), "thin")
         v.arc((0.0, y0), r_arc, 0.0, psi, "thin")
         mid = math.radians(psi / 2)
         v.label((r_arc * math.cos(mid), y0 + r_arc * math.sin(mid)), name, 3.5, gap_mm=1.0, prefer_deg=-20.0)
-    for p, name in zip(pts[:-1], labels[:-1]):
-        if name.isdigit():
-            v.label(p, name, 3.5, gap_mm=1.0)
-    v.circle_mm((0.0, g.K_mm), 0.8, "contour")
-    v.circle_mm((0.0, g.L_mm), 0.8, "contour")
-    v.text((-2.0, g.K_mm + 1.0), "K", 5.0, "bottom-right")
-    v.text((-2.0, g.L_mm - 1.0), "L", 5.0, "top-right")
-    kl = v.dimension((0.0, g.L_mm), (0.0, g.K_mm), offset_mm=LEFT_MM + 2.0, decimals=1)
+    nodes = pts[:-1]
+    for p, name in zip(nodes, labels[:-1]):
+        if name.isdigit():           # beside its own node: never nearer to another node (issue 12, «5», «7»)
+            v.label(p, name, 3.5, gap_mm=1.0, others=[q for q in nodes if q != p])
+    v.circle_mm((0.0, K_mm), 0.8, "contour")
+    v.circle_mm((0.0, L_mm), 0.8, "contour")
+    v.text((-2.0, K_mm + 1.0), "K", 5.0, "bottom-right")
+    v.text((-2.0, L_mm - 1.0), "L", 5.0, "top-right")
+    kl = v.dimension((0.0, L_mm), (0.0, K_mm), offset_mm=LEFT_MM + 2.0, decimals=1)
     return v, kl
 
 
-def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
+def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -> View:
     """J_red(φ) turned: J to the right (the Wittenbauer diagram's J axis), φ downwards."""
     v = _view(sheet, "inertia", lay.inertia, lay.o_inertia)
     phi_len = float(g.x[-1])
@@ -287,46 +282,39 @@ def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str]) -> View:
         v.line((-1.5, y), (1.5, y), "thin")
         if name.isdigit():
             v.text((-2.5, y), name, 3.5, "middle-right")
-    pts = [(float(j), -float(x)) for j, x in zip(g.j_mm, g.x)]
-    v.polyline(pts, "contour")
-    for p in pts:
-        v.circle_mm(p, 0.6, "contour")
+    draw_entities(v, [e for e in _construction(scene) if not e.id.startswith("tick:")])
     r = v.rect
-    v.text_mm((r.x0 + 4.0, r.y0 + 2.0), tr("sheets.dd13", v1=format_significant(g.mu_J, 4)), 3.5, "bottom-left")
+    v.text_mm((r.x0 + 4.0, r.y0 + 2.0), tr("sheets.dd13", v1=format_significant(scene.scale(ds.MU_J).value, 4)),
+              3.5, "bottom-left")
     return v
 
 
-def omega_span(res) -> tuple[float, Span]:
-    """μω (rad/s per mm, round) and the span of ω − ω_m on the sheet (band included)."""
-    from reportgen.dynamics.graphical import nice_ceil
-
-    w = np.asarray(res.motion.omega) - res.omega_m
-    lo, hi = (b - res.omega_m for b in res.motion.band)
-    mu = nice_ceil(max(float(np.abs(w).max()), hi, -lo) / OMEGA_MM)
-    return mu, Span.of(w / mu, np.array([lo, hi]) / mu)
+def omega_span(scene: Scene) -> Span:
+    """The span of ω − ω_m on the sheet (band included), from the scene of ω(φ)."""
+    curve = scene.entity("curve")
+    assert isinstance(curve, Polyline)
+    band = [scene.entity(k) for k in ("band:max", "band:min")]
+    return Span.of([p[1] for p in curve.points], [b.a[1] for b in band if isinstance(b, Segment)])
 
 
-def omega_height(res) -> float:
-    return omega_span(res)[1].height
+def omega_height(scene: Scene) -> float:
+    return omega_span(scene).height
 
 
-def draw_omega(sheet: Sheet, rect: Rect, res, g) -> View:
-    """ω(φ) of the steady motion with the flywheel: the φ axis at ω_m, the band ω_m(1 ± δ/2)."""
-    mu, sp = omega_span(res)
+def draw_omega(sheet: Sheet, rect: Rect, scene: Scene, g) -> View:
+    """ω(φ) of the steady motion with the flywheel (``scene``,
+    :func:`reportgen.scenes.dynamics.omega_scene`): the φ axis at ω_m, the band ω_m(1 ± δ/2)."""
+    sp = omega_span(scene)
+    mu = scene.scale(ds.MU_OMEGA).value
+    w_m, w_max, w_min = (scene.values[k] for k in ("omega_m", "omega_max", "omega_min"))
     left = g.H + LEFT_MM + 8.0
     v = _view(sheet, "omega", rect, (rect.x0 + left, rect.y1 - TOP_MM - sp.up))
-    _title(v, tr("sheets.dd14"),
-           tr("sheets.dd15", v1=format_significant(mu, 4), v2=format_significant(res.omega_m, 4)))
-    lo, hi = res.motion.band
-    ticks = [((hi - res.omega_m) / mu, format_significant(hi, 4)), ((lo - res.omega_m) / mu, format_significant(lo, 4))]
+    _title(v, tr("sheets.dd14"), tr("sheets.dd15", v1=format_significant(mu, 4), v2=format_significant(w_m, 4)))
+    ticks = [((w_max - w_m) / mu, format_significant(w_max, 4)), ((w_min - w_m) / mu, format_significant(w_min, 4))]
     view_len = float(g.x[-1])
     v.axes((0.0, 0.0), view_len + RIGHT_MM - 6.0, sp.up + 4.0, sp.down, x_label="φ", y_label="ω",
            x_ticks=[(float(x), "") for x in g.x], y_ticks=ticks)
-    for y in (ticks[0][0], ticks[1][0]):
-        v.line((0.0, y), (view_len, y), "hidden")
-    x = np.append(np.asarray(res.theta), 2 * math.pi) / g.mu_phi
-    w = np.append(np.asarray(res.motion.omega), res.motion.omega[0])
-    v.curve(x, (w - res.omega_m) / mu, "contour")
+    draw_entities(v, _construction(scene))
     v.text((view_len + 1.5, ticks[0][0]), "ωmax", 3.5, "middle-left")
     v.text((view_len + 1.5, ticks[1][0]), "ωmin", 3.5, "middle-left")
     return v

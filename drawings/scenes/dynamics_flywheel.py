@@ -7,6 +7,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen import gost_scales
+from reportgen.dynamics.hub import Hub, bore_outline, hub_of, section_rects
 from reportgen.tolerances import MM_ROUNDOFF
 from ..words import tr
 
@@ -45,11 +46,19 @@ def sketch_fit(fw, width: float, height: float) -> tuple[float, bool]:
     return candidates[-1], False
 
 
-def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False) -> View:
-    """Front view (circles and centre lines) and the axial section (hatched) of the disk or rim, the
+def sketch_scale(fw, width: float, height: float) -> float:
+    """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` (either arrangement)."""
+    return sketch_fit(fw, width, height)[0]
+
+
+def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False, hub: Hub | None = None) -> View:
+    """Front view (circles, the bore with its keyway, centre lines) and the axial section through
+    the keyway (hatched) of the disk or rim with its hub (:mod:`reportgen.dynamics.hub`), the
     section right of the front view or (``stacked``) under it; dimensions in real mm (the view's
     model units are real mm)."""
     R, r, b = 1000 * fw.radius, 1000 * fw.inner_radius, 1000 * fw.width
+    if hub is None:
+        hub = hub_of(0.0, 2 * R)
     cx = rect.x0 + PAD_MM + R * k
     cy = rect.y0 + PAD_MM + R * k + ((b * k + BETWEEN_MM) if stacked else 0.0)
     view = sheet.place_view("flywheel", rect, Transform(k, (0.0, 0.0), (cx, cy)))
@@ -57,35 +66,58 @@ def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False)
     view.circle((0.0, 0.0), R, "contour")
     if r > 0:
         view.circle((0.0, 0.0), r, "contour")
+        view.circle((0.0, 0.0), hub.hub_d / 2, "contour")
+    # the keyway where the section cuts it: up (section beside), to the right (section under)
+    bore = bore_outline(hub)
+    view.polyline([(y, -x) for x, y in bore] if stacked else bore, "contour", closed=True)
     ext = R + 6.0 / k
     view.line((-ext, 0.0), (ext, 0.0), "axis")
     view.line((0.0, -ext), (0.0, ext), "axis")
+    # the bore's diameter under it, the keyway's width beside the slot
+    view.dimension((-hub.d / 2, 0.0), (hub.d / 2, 0.0), offset_mm=-(hub.d / 2 * k + 8.0), decimals=0,
+                   text=f"Ø{format_number(hub.d, 0)}")
+    slot = hub.d / 2 + hub.t2
     if stacked:
-        # the section as the view from above: the axis vertical, the rings left and right of it
+        view.dimension((slot, hub.key_b / 2), (slot, -hub.key_b / 2), offset_mm=8.0,
+                       decimals=0, text=format_number(hub.key_b, 0))
+    else:
+        view.dimension((-hub.key_b / 2, slot), (hub.key_b / 2, slot), offset_mm=8.0,
+                       decimals=0, text=format_number(hub.key_b, 0))
+    rects = section_rects(R, r, b, hub)
+    if stacked:
+        # the section as the view from above: the axis vertical, the radial sizes along x
         y1 = -R - BETWEEN_MM / k
         y0 = y1 - b
-        rings = [(-R, R)] if r <= 0 else [(r, R), (-R, -r)]
-        for x0, x1 in rings:
-            view.polyline([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], "contour", closed=True)
-            _hatch(view, x0, y0, x1, y1, HATCH_MM / k)
+        placed = [(ry0, y0 + ax0, ry1, y0 + ax1) for ax0, ry0, ax1, ry1 in rects]
+        _section(view, placed, HATCH_MM / k)
         view.line((0.0, y1 + 6.0 / k), (0.0, y0 - 6.0 / k), "axis")
         view.dimension((-R, y0), (R, y0), offset_mm=-DIAMETER_MM, decimals=0, text=f"Ø{format_number(2 * R, 0)}")
         view.dimension((R, y0), (R, y1), offset_mm=-8.0, decimals=0)
+        view.dimension((-hub.d / 2, y1), (slot, y1), offset_mm=10.0, decimals=0,
+                       text=format_number(hub.d + hub.t2, 1))
         if r > 0:
-            view.dimension((-r, y1), (r, y1), offset_mm=10.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")
+            view.dimension((-r, y1), (r, y1), offset_mm=18.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")
         return view
     # the section, right of the front view
     x0 = R + BETWEEN_MM / k
-    rings = [(-R, R)] if r <= 0 else [(r, R), (-R, -r)]
-    for y0, y1 in rings:
-        view.polyline([(x0, y0), (x0 + b, y0), (x0 + b, y1), (x0, y1)], "contour", closed=True)
-        _hatch(view, x0, y0, x0 + b, y1, HATCH_MM / k)
+    placed = [(x0 + ax0, ry0, x0 + ax1, ry1) for ax0, ry0, ax1, ry1 in rects]
+    _section(view, placed, HATCH_MM / k)
     view.line((x0 - 6.0 / k, 0.0), (x0 + b + 6.0 / k, 0.0), "axis")
     view.dimension((x0 + b, -R), (x0 + b, R), offset_mm=-DIAMETER_MM, decimals=0, text=f"Ø{format_number(2 * R, 0)}")
     view.dimension((x0, R), (x0 + b, R), offset_mm=8.0, decimals=0)
+    view.dimension((x0, -hub.d / 2), (x0, slot), offset_mm=10.0, decimals=0, text=format_number(hub.d + hub.t2, 1))
     if r > 0:
-        view.dimension((x0, -r), (x0, r), offset_mm=10.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")
+        view.dimension((x0, -r), (x0, r), offset_mm=18.0, decimals=0, text=f"Ø{format_number(2 * r, 0)}")
     return view
+
+
+def _section(view: View, rects: list, step: float) -> None:
+    """Solid parts of a section (rectangles, model units): their joint outline and the hatching."""
+    from shapely.geometry import box
+    from shapely.ops import unary_union
+    view.geometry(unary_union([box(*q) for q in rects]), "contour")
+    for q in rects:
+        _hatch(view, q[0], q[1], q[2], q[3], step)
 
 
 def _hatch(view: View, x0: float, y0: float, x1: float, y1: float, step: float) -> None:

@@ -6,19 +6,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
 
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
 from reportgen.diagrams import Diagrams
-from reportgen.tolerances import MM_EPS, MM_ROUNDOFF
+from reportgen.scenes import output_diagrams as od
+from reportgen.scenes.scene import Scene
+from reportgen.tolerances import MM_ROUNDOFF
+from .render import draw_entities
 from ..words import tr, unit
 
-#: Space above a diagram's largest ordinate (title, dimensions) and between diagrams, mm.
-TOP_MM = 32.0
-GAP_MM = 8.0
-RIGHT_MM = 28.0
+#: Room right of the φ axis (its arrow and name), mm.
+RIGHT_MM = od.RIGHT_MM
 
 
 @dataclass(frozen=True)
@@ -43,107 +43,42 @@ def names(d: Diagrams) -> Names:
                  (tr("sheets.kd07"), tr("sheets.kd08"), tr("sheets.kd09")))
 
 
-def _x_nodes(d: Diagrams) -> np.ndarray:
-    return np.asarray(d.nodes) / d.mu_phi
-
-
-def _dense_x(d: Diagrams) -> np.ndarray:
-    return np.asarray(d.dense_offset) / d.mu_phi
-
-
-def _v_steps(d: Diagrams) -> list[tuple[float, float, float]]:
-    """(x0, x1, y) of the velocity steps: over each interval."""
-    x = _x_nodes(d)
-    return [(float(x[i]), float(x[i + 1]), float(d.v_chord_mm[i])) for i in range(d.n)]
-
-
-def _a_steps(d: Diagrams) -> list[tuple[float, float, float]]:
-    """(x0, x1, y) of the acceleration steps: between the middles of the velocity steps; the last
-    one wraps round to the start of the axis (the motion is periodic)."""
-    x = _x_nodes(d)
-    dx = d.axis_mm / d.n
-    out = []
-    for j in range(d.n):
-        x0, x1 = float(x[j] + dx / 2), float(x[j] + 3 * dx / 2)
-        if x1 <= d.axis_mm + MM_ROUNDOFF:
-            out.append((x0, x1, float(d.a_chord_mm[j])))
-        else:
-            out.append((x0, d.axis_mm, float(d.a_chord_mm[j])))
-            out.append((0.0, x1 - d.axis_mm, float(d.a_chord_mm[j])))
-    return out
-
-
-def _ranges(d: Diagrams) -> list[tuple[float, float]]:
-    """(up, down) ordinates in mm of the three diagrams (both ≥ 0)."""
-    s = np.concatenate([np.asarray(d.s) / d.mu_s, d.s_nodes_mm])
-    v = np.concatenate([np.asarray(d.v) / d.mu_v, d.v_chord_mm])
-    a = np.concatenate([np.asarray(d.a) / d.mu_a, d.a_chord_mm])
-    return [(max(float(arr.max()), 10.0) + 4.0, max(-float(arr.min()), 0.0) + 4.0) for arr in (s, v, a)]
-
-
 def size(d: Diagrams) -> tuple[float, float]:
-    left = max(d.H1, d.H2) + 22.0
-    w = left + d.axis_mm + RIGHT_MM + 6.0
-    h = sum(up + down + TOP_MM + GAP_MM for up, down in _ranges(d)) + 6.0
-    return w, h
+    return od.size(d)
 
 
-def add_diagrams_view(sheet: Sheet, d: Diagrams, positions: int, start_deg: float, working_deg: float,
+def add_diagrams_view(sheet: Sheet, d: Diagrams, scene: Scene, positions: int, start_deg: float, working_deg: float,
                       preferred: str) -> View:
     w, h = size(d)
     view = sheet.add_view("diagrams", w, h, preferred=preferred)
-    draw_diagrams(view, d, positions, start_deg, working_deg)
+    draw_diagrams(view, d, scene, positions, start_deg, working_deg)
     return view
 
 
-def draw_diagrams(view: View, d: Diagrams, positions: int, start_deg: float, working_deg: float) -> None:
-    """The three diagrams; the working stroke starts ``start_deg`` after position 0 and lasts
-    ``working_deg`` of the crank."""
+def draw_diagrams(view: View, d: Diagrams, scene: Scene, positions: int, start_deg: float, working_deg: float) -> None:
+    """The three diagrams of ``scene`` (:func:`reportgen.scenes.output_diagrams.output_diagrams_scene`,
+    in this view's mm) with the sheet's axes, titles, position numbers, pole letters and dimensions;
+    the working stroke starts ``start_deg`` after position 0 and lasts ``working_deg`` of the crank."""
     nm = names(d)
-    left = max(d.H1, d.H2) + 22.0
-    ranges = _ranges(d)
-    x0 = left                                  # view coordinates: mm from its lower-left corner
-    top = view.rect.height - 2.0
-    origins = []
-    for up, down in ranges:
-        oy = top - TOP_MM - up
-        origins.append((x0, oy))
-        top = oy - down - GAP_MM
-    xs = _x_nodes(d)
-    dense_x = _dense_x(d)
+    ranges = od.ranges(d)
+    draw_entities(view, [e for e in scene.entities if ":axis:" not in e.id and not e.id.endswith(":pole")])
+    sc = [scene.scale(sym) for sym in nm.symbols]
     # ---- s(φ)
-    o = origins[0]
+    o = scene.points["o_s"]
     _axes(view, o, d, ranges[0], nm.s, numbered=True, positions=positions)
-    view.curve(o[0] + dense_x, o[1] + np.asarray(d.s) / d.mu_s, "thin")
-    view.polyline([(o[0] + x, o[1] + y) for x, y in zip(xs, d.s_nodes_mm)], "contour")
-    for x, y in zip(xs, d.s_nodes_mm):
-        view.circle_mm((o[0] + x, o[1] + y), 0.7, "contour")
     ytop = o[1] + ranges[0][0] + 12.0                # above the arrow of the y axis
     _strokes(view, o, d.axis_mm, ytop, start_deg, working_deg)
-    _title(view, o, ranges[0], f"{nm.titles[0]}, {nm.symbols[0]} = {format_significant(d.mu_s, 4)} {nm.mu_s}")
+    _title(view, o, ranges[0], f"{nm.titles[0]}, {nm.symbols[0]} = {format_significant(sc[0].value, 4)} {nm.mu_s}")
     # ---- v(φ)
-    o = origins[1]
+    o = scene.points["o_v"]
     _axes(view, o, d, ranges[1], nm.v, numbered=False, positions=positions)
-    _pole(view, o, d.H1, d.v_chord_mm, "P", "1")
-    view.curve(o[0] + dense_x, o[1] + np.asarray(d.v) / d.mu_v, "thin")
-    steps = _v_steps(d)
-    _steps(view, o, steps)
-    mids = [((a + b) / 2, y) for a, b, y in steps]
-    ends = [(0.0, (mids[0][1] + mids[-1][1]) / 2)] + mids + [(d.axis_mm, (mids[0][1] + mids[-1][1]) / 2)]
-    view.polyline([(o[0] + x, o[1] + y) for x, y in ends], "contour")
-    _title(view, o, ranges[1], f"{nm.titles[1]}, {nm.symbols[1]} = {format_significant(d.mu_v, 4)} {nm.mu_v}")
+    _pole(view, o, scene.values["H1"], d.v_chord_mm, "P", "1")
+    _title(view, o, ranges[1], f"{nm.titles[1]}, {nm.symbols[1]} = {format_significant(sc[1].value, 4)} {nm.mu_v}")
     # ---- a(φ)
-    o = origins[2]
+    o = scene.points["o_a"]
     _axes(view, o, d, ranges[2], nm.a, numbered=False, positions=positions)
-    _pole(view, o, d.H2, d.a_chord_mm, "P", "2")
-    view.curve(o[0] + dense_x, o[1] + np.asarray(d.a) / d.mu_a, "thin")
-    a_steps = _a_steps(d)
-    _steps(view, o, a_steps)
-    pts = sorted(((a + b) / 2 if b - a > d.axis_mm / d.n / 2 else (a if a > 0 else b), y)
-                 for a, b, y in a_steps if b - a > d.axis_mm / d.n / 2)
-    pts = [(0.0, d.a_chord_mm[-1])] + pts + [(d.axis_mm, d.a_chord_mm[-1])]
-    view.polyline([(o[0] + x, o[1] + y) for x, y in pts], "contour")
-    _title(view, o, ranges[2], f"{nm.titles[2]}, {nm.symbols[2]} = {format_significant(d.mu_a, 4)} {nm.mu_a}")
+    _pole(view, o, scene.values["H2"], d.a_chord_mm, "P", "2")
+    _title(view, o, ranges[2], f"{nm.titles[2]}, {nm.symbols[2]} = {format_significant(sc[2].value, 4)} {nm.mu_a}")
 
 
 def _spans(a: float, b: float, length: float) -> list[tuple[float, float]]:
@@ -168,12 +103,12 @@ def _strokes(view: View, o: tuple[float, float], length: float, y: float, start_
 
 
 def _title(view: View, o: tuple[float, float], rng: tuple[float, float], text: str) -> None:
-    view.text((o[0] + 30.0, o[1] + rng[0] + TOP_MM - 7.0), text, 5.0, "bottom-left")
+    view.text((o[0] + 30.0, o[1] + rng[0] + od.TOP_MM - 7.0), text, 5.0, "bottom-left")
 
 
 def _axes(view: View, o: tuple[float, float], d: Diagrams, rng: tuple[float, float], y_label: str,
           numbered: bool, positions: int) -> None:
-    ticks = [(float(x), "") for x in _x_nodes(d)]
+    ticks = [(float(x), "") for x in od.x_nodes(d)]
     view.axes(o, d.axis_mm + RIGHT_MM - 6.0, rng[0] + 10.0, rng[1], x_label="φ", y_label=y_label,
               x_ticks=ticks)
     if numbered:
@@ -188,9 +123,7 @@ def _pole(view: View, o: tuple[float, float], H: float, ordinates, name: str, in
     """The pole at H left of the origin, its rays to the ordinates on the y axis, its letter and
     the dimension H."""
     p = (o[0] - H, o[1])
-    for y in sorted(set(float(v) for v in ordinates)):
-        view.line(p, (o[0], o[1] + y), "construction")
-    view.circle_mm(p, 0.8, "contour")
+    view.circle_mm(p, od.POLE_MM, "contour")           # its rays are the scene's
     rich = rl.Rich(name, "", index)
     sp = view.transform(p)
     rl.place_rich(view, rl.around(sp, rich, 5.0, 180.0), rich, 5.0)
@@ -199,13 +132,3 @@ def _pole(view: View, o: tuple[float, float], H: float, ordinates, name: str, in
     view.dimension((p[0], y), (o[0], y), offset_mm=-4.0,
                    text=f"H{index} = {format_number(H, 1)}")
     view.line(p, (p[0], y - 4.0), "thin")
-
-
-def _steps(view: View, o: tuple[float, float], steps: list[tuple[float, float, float]]) -> None:
-    """The steps of a replica: horizontal segments and the verticals joining them."""
-    prev = None
-    for a, b, y in sorted(steps):
-        if prev is not None and abs(prev[0] - a) < MM_EPS:
-            view.line((o[0] + a, o[1] + prev[1]), (o[0] + a, o[1] + y), "thin")
-        view.line((o[0] + a, o[1] + y), (o[0] + b, o[1] + y), "thin")
-        prev = (b, y)

@@ -6,13 +6,14 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence, TypeAlias
 
 import shapely
 from shapely.geometry import Polygon, box
+from shapely.geometry.base import BaseGeometry
 
 from drawings import style
-from drawings.primitives import Canvas
+from drawings.primitives import Canvas, LabelRecord, descent
 
 from reportgen.geometry import Vec2 as Vec
 from reportgen.tolerances import ABS_ZERO, AREA_EPS_MM2, MM_ROUNDOFF
@@ -84,6 +85,8 @@ def from_letter(key: str, helpers: bool = False) -> Rich:
 
 
 Label = Rich | tuple[Rich, ...]
+#: What a label names: a geometry (sheet mm), a function of the label's box giving it, or None.
+Names: TypeAlias = "BaseGeometry | Callable[[Polygon], BaseGeometry] | None"
 SEPARATOR = ", "
 
 
@@ -104,7 +107,8 @@ def size(label: Label, height: float) -> tuple[float, float, float]:
     small = _smaller(height)
     w = sum(_one_width(r, height) for r in items)
     w += style.text_width(SEPARATOR, height) * (len(items) - 1)
-    depth = 0.35 * height if any(r.sub for r in items) else 0.0
+    depth = max(0.35 * height if any(r.sub for r in items) else 0.0,
+                descent("".join(r.base for r in items), height))
     rise = max(0.0, 0.45 * height + small - height) if any(r.sup for r in items) else 0.0
     return w, depth, rise
 
@@ -121,38 +125,51 @@ def label_name(label: Label) -> str:
                           for r in _items(label))
 
 
-def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float) -> Polygon:
-    """Draw ``label`` centred (its base line) at a sheet point; returns its box (registered once)."""
+def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
+              names: Names = None) -> Polygon:
+    """Draw ``label`` centred (its base line) at a sheet point; returns its box (registered once).
+    ``names``: what it is the label of (sheet mm; or a function of the label's box giving it),
+    recorded with the handles of its texts."""
     small = _smaller(height)
+    handles: list[str] = []
     w, _, _ = size(label, height)
     x = center[0] - w / 2
     y0 = center[1] - height / 2
     for k, rich in enumerate(_items(label)):
         if k:
             canvas.text_mm((x, y0), SEPARATOR.strip(), height, register=False)
+            handles.append(canvas.last_text_handle)
             x += style.text_width(SEPARATOR, height)
         canvas.text_mm((x, y0), rich.base, height, register=False)
+        handles.append(canvas.last_text_handle)
         xb = x + style.text_width(rich.base, height)
         if rich.sup:
             canvas.text_mm((xb, y0 + 0.45 * height), rich.sup, small, register=False)
+            handles.append(canvas.last_text_handle)
         if rich.sub:
             canvas.text_mm((xb, y0 - 0.35 * height), rich.sub, small, register=False)
+            handles.append(canvas.last_text_handle)
         x += _one_width(rich, height)
     poly = rich_box(label, center, height)
+    named = names(poly) if callable(names) else names     # a function: it depends on where it went (a leader)
+    if named is not None:
+        canvas.annotations.add_label(LabelRecord(label_name(label), tuple(handles), named, canvas.name))
     canvas.annotations.add_box(f"{canvas.name}: «{label_name(label)}»", poly)
     return poly
 
 
 def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: float,
-               inside: Polygon | None = None, optional: bool = False) -> Polygon | None:
+               inside: Polygon | None = None, optional: bool = False,
+               names: Names = None) -> Polygon | None:
     """Draw ``label`` at the first candidate centre (sheet mm) whose box overlaps no text and
     crosses no line (and lies ``inside``), else at the one with the fewest conflicts; an
     ``optional`` label that would overlap a text (or leave ``inside``) is not drawn."""
-    return place_passes(canvas, [(candidates, 0)], label, height, inside, optional)
+    return place_passes(canvas, [(candidates, 0)], label, height, inside, optional, names)
 
 
 def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], label: Label,
-                 height: float, inside: Polygon | None = None, optional: bool = False) -> Polygon | None:
+                 height: float, inside: Polygon | None = None, optional: bool = False,
+                 names: Names = None) -> Polygon | None:
     """Like :func:`place_rich` over several passes of (candidates, lines it may cross): the first
     candidate of the first pass that overlaps no text, stays ``inside`` and crosses at most that
     many lines wins; otherwise the candidate with the fewest conflicts over all passes."""
@@ -173,14 +190,14 @@ def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], la
             h = hits(poly)
             crossings = canvas.annotations.crossings(poly) if out == 0 and h == 0 else 99
             if out == 0 and h == 0 and crossings <= tolerate:
-                return draw_rich(canvas, c, label, height)
+                return draw_rich(canvas, c, label, height, names)
             score = (out, h, crossings, rank)
             rank += 1
             if best is None or score < best[0]:
                 best = (score, c)
     if best is None or (optional and best[0][:2] != (0, 0)):
         return None
-    return draw_rich(canvas, best[1], label, height)
+    return draw_rich(canvas, best[1], label, height, names)
 
 
 def around(p: Vec, rich: Label, height: float, prefer_deg: float = 45.0,

@@ -8,12 +8,15 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import Polygon, box
+from shapely.geometry import LineString, Point, Polygon, box
+from shapely.geometry import Point as ShapelyPoint
+from shapely.ops import nearest_points
 
 from drawings import style
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
+from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
 from reportgen.plans import Plan
@@ -90,14 +93,16 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
     drawn = [Drawn(e.id, e.a, e.b) for e in arrows]
     # letters at the points
     inside = label_region(view, small)
-    for lb in scene.labels:
+    if small:
+        place_small_letters(view, scene, helper, letter_height, inside)
+    for lb in scene.labels if not small else ():
         if lb.role != "point":
             continue
         keys = lb.anchor.split(":", 1)[1].split(",")
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
         p = view.transform(lb.at)
         rl.place_rich(view, rl.around(p, label, letter_height, 45.0), label, letter_height,
-                      inside=inside, optional=small)
+                      inside=inside, optional=small, names=ShapelyPoint(p))
     # names of the components along their arrows
     if names:
         for lb in scene.labels:
@@ -107,7 +112,8 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
             if math.dist(a, b) < 1.0:
                 continue
             rich = rl.from_tex(lb.text)
-            rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside)
+            rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside,
+                            names=LineString([a, b]))
     return drawn
 
 
@@ -126,6 +132,60 @@ def place_plan_view(sheet: Sheet, name: str, plan: Plan, image_keys: set[str], t
     oy = origin[1] - (rect.height - h) / 2
     view = sheet.place_view(name, rect, Transform(1.0, (ox, oy), (rect.x0, rect.y0)))
     return view, draw_plan(view, plan, image_keys, title)
+
+
+#: The small plans: points closer than this on paper share one label (mm; letters 3,5 mm high
+#: cannot tell them apart), a label is "at" its point within ``SMALL_NEAR_MM`` of it, farther
+#: ones (up to ``SMALL_FAR_MM``) get a thin leader from the point to the label.
+SMALL_CLUSTER_MM, SMALL_NEAR_MM, SMALL_FAR_MM = 2.5, 3.0, 18.0
+#: A cluster of more letters is labelled in pieces of this many (each placed on its own).
+SMALL_LETTERS = 4
+
+
+def letter_clusters(scene: Scene, view: View) -> list[tuple[tuple[float, float], list[str]]]:
+    """The point labels of a small plan merged where their points are within ``SMALL_CLUSTER_MM``
+    on paper (single linkage, in the scene's order): (sheet point of the first, plan letters)."""
+    items = [(view.transform(lb.at), lb.anchor.split(":", 1)[1].split(",")) for lb in scene.labels
+             if lb.role == "point"]
+    parent = list(range(len(items)))
+
+    def root(k: int) -> int:
+        while parent[k] != k:
+            k = parent[k]
+        return k
+    for a in range(len(items)):
+        for b in range(a + 1, len(items)):
+            if math.dist(items[a][0], items[b][0]) < SMALL_CLUSTER_MM:
+                parent[root(b)] = root(a)
+    out: dict[int, tuple[tuple[float, float], list[str]]] = {}
+    for k, (p, keys) in enumerate(items):
+        r = root(k)
+        if r in out:
+            out[r][1].extend(keys)
+        else:
+            out[r] = (vec2(p), list(keys))
+    return list(out.values())
+
+
+def place_small_letters(view: View, scene: Scene, helper: set[str], height: float, inside: Polygon) -> None:
+    """Letters of a small plan: each cluster of points (:func:`letter_clusters`, in pieces of
+    ``SMALL_LETTERS``) labelled beside
+    it (within ``SMALL_NEAR_MM``) where that overlaps no text and crosses no line; else farther
+    (up to ``SMALL_FAR_MM``) with a thin leader from the point; else beside it crossing one line;
+    a label that would overlap a text or leave the cell is left out (the analysed positions'
+    plans carry every letter)."""
+    chunks = [(p, keys[n:n + SMALL_LETTERS]) for p, keys in letter_clusters(scene, view)
+              for n in range(0, len(keys), SMALL_LETTERS)]
+    for p, keys in chunks:
+        label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
+        near = rl.around(p, label, height, 45.0, gaps=(0.8, 1.6))
+        far = rl.around(p, label, height, 45.0, gaps=(4.0, 7.0, 10.0, 14.0, 18.0))
+        poly = rl.place_passes(view, [(near, 0), (far, 0), (near, 1), (far, 1), (far, 3)], label, height, inside=inside,
+                               optional=True)
+        if poly is None or poly.exterior.distance(Point(p)) <= SMALL_NEAR_MM:
+            continue
+        q = nearest_points(poly.exterior, Point(p))[0]
+        view.line(view.transform.inverse(p), view.transform.inverse((q.x, q.y)), "thin")
 
 
 #: Title and caption strips of the small plans' view, mm.

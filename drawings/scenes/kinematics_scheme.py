@@ -7,7 +7,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from shapely.geometry import Polygon
+from shapely.geometry import LineString, MultiLineString, Polygon
+from shapely.geometry import Point as ShapelyPoint
 
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import View
@@ -165,7 +166,8 @@ def _draw_letters(view: View, scene: Scene, k: float) -> None:
         p = view.transform((lb.at[0] / k, lb.at[1] / k))
         rich = rl.from_tex(lb.text)
         prefer = 90.0 if lb.text.startswith("S_") else math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
-        rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0, inside=_inside(view))
+        rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0, inside=_inside(view),
+                      names=ShapelyPoint(p))
 
 
 def _draw_numbers(view: View, project: Project, scene: Scene, k: float) -> None:
@@ -186,7 +188,7 @@ def _draw_numbers(view: View, project: Project, scene: Scene, k: float) -> None:
         cands = rl.around(p, rich, 3.5, ang, gaps=(1.0, 2.5, 4.5))
         r = math.dist(p, o)
         cands = [q for q in cands if math.dist(q, o) > r] or cands
-        rl.place_rich(view, cands, rich, 3.5, inside=_inside(view))
+        rl.place_rich(view, cands, rich, 3.5, inside=_inside(view), names=ShapelyPoint(p))
 
 
 def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i: int) -> list[tuple[float, float]]:
@@ -254,6 +256,15 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData) -> None:
             continue
         c = best[1]
         view.circle_mm(view.transform.inverse(c), r, "thin")
-        view.text_mm(c, str(k), h, "center", register=False)
+        view.text_mm(c, str(k), h, "center", register=False, names=_link_lines(view, project, data, k))
         ann.add_box(f"{view.name}: «{k}»", Polygon([(c[0] - r, c[1] - r), (c[0] + r, c[1] - r),
                                                    (c[0] + r, c[1] + r), (c[0] - r, c[1] + r)]))
+
+
+def _link_lines(view: View, project: Project, data: SchemeData, k: int):
+    """Link ``k`` of the analysed position as sheet lines (its outline; a slider: its point)."""
+    pts = {n: view.transform(tuple(p)) for n, p in _pts(data.kin, data.analysed).items()}
+    names = project.linkage.bodies[k].points
+    if len(names) < 2:
+        return ShapelyPoint(pts[names[0]]).buffer(BLOCK_MM[1] / 2)       # its block
+    return MultiLineString([LineString([pts[a], pts[b]]) for a, b in _link_outline(names)])

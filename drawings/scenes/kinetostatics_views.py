@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-from shapely.geometry import Point
+from shapely.geometry import LineString, Point
 
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
@@ -171,13 +171,13 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
             if lb.leader:
                 mid = view.transform(lb.at)
                 normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
-                box = rl.place_passes(view, [(rl.around(mid, rich, POLY_LABEL_MM, normal, gaps=(6.0, 9.0, 13.0)), 0)],
-                                      rich, POLY_LABEL_MM, inside=inside)
+                box = rl.place_passes(view, [(rl.around(mid, rich, POLY_LABEL_MM, normal, gaps=(5.0, 6.0)), 0)],
+                                      rich, POLY_LABEL_MM, inside=inside, names=LineString([a, b]))
                 if box is not None:
                     near = box.exterior.interpolate(box.exterior.project(Point(mid)))
                     view.layout.add_line((near.x, near.y), mid, dxfattribs={"layer": "thin"})
             else:
-                rl.place_passes(view, rl.along_passes(a, b, rich, POLY_LABEL_MM), rich, POLY_LABEL_MM, inside=inside)
+                place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside)
         view.title(title)
         mu = scene.scale()
         view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
@@ -189,6 +189,58 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
 def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:
     """:func:`polygon_panel` packed near ``preferred`` and drawn."""
     return polygon_panel(name, title, polygon).place(sheet, preferred)
+
+
+def near_passes(a, b, rich, height: float) -> list[tuple[list, int]]:
+    """Passes for the name of the vector a→b (sheet mm) that keep it its own: beside it crossing no
+    line, then crossing one, round its middle no farther than LABEL_NEAR_MM, then beside it crossing
+    more lines — a name is never carried off to where it would read as another vector's."""
+    from drawings import style
+    from reportgen.tolerances import LABEL_NEAR_MM
+    near = rl.along(a, b, rich, height)
+    middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
+    far = rl.around(middle, rich, height, normal, gaps=(3.0, 4.5, 6.0))
+    line = LineString([a, b])
+
+    def close(cands: list) -> list:
+        """Those whose text (its box without the width margin: where the letters may end) stays
+        near the vector — a wide name beside a short vector must not hang off its end."""
+        from shapely import affinity
+        out = []
+        for c in cands:
+            b = rl.rich_box(rich, c, height, pad=0.0)          # its texts start at its left edge
+            text = affinity.scale(b, 1.0 / style.WIDTH_MARGIN, 1.0, origin=(b.bounds[0], c[1]))
+            if text.distance(line) < LABEL_NEAR_MM - 0.5:
+                out.append(c)
+        return out
+    near, far = close(near), close(far)
+    return [(near, 0), (near, 1), (far, 0), (far, 1), (near, 2), (near, 99)]
+
+
+def place_vector_name(view: View, a, b, rich, height: float, inside) -> None:
+    """The name of the vector a→b (sheet mm) beside it (:func:`near_passes`) where it overlaps no
+    text; where every spot beside it is taken, farther out on a thin leader to the vector's middle
+    (the leader is part of what ties it to its vector); else beside it, overlapping the fewest."""
+    line = LineString([a, b])
+    if rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, optional=True,
+                       names=line) is not None:
+        return
+    mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
+    leader: list = []
+
+    def named(box):
+        near = box.exterior.interpolate(box.exterior.project(Point(mid)))
+        leader.append((near.x, near.y))
+        return line.union(LineString([(near.x, near.y), mid]))
+
+    if rl.place_passes(view, [(rl.around(mid, rich, height, normal, gaps=(9.0, 12.0, 16.0, 20.0)), 0),
+                              (rl.around(mid, rich, height, normal, gaps=(9.0, 12.0, 16.0, 20.0)), 1)],
+                       rich, height, inside=inside, optional=True, names=named) is not None:
+        view.layout.add_line(leader[0], mid, dxfattribs={"layer": "thin"})
+        return
+    rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, names=line)
 
 
 def place_label(view: View, anchors: list[np.ndarray], text: str, height: float) -> None:
@@ -207,7 +259,7 @@ def place_label(view: View, anchors: list[np.ndarray], text: str, height: float)
                 if not view.rect.polygon().contains(box):
                     continue
                 if view.annotations.hits_box(box) == 0 and view.annotations.crossings(box) == 0:
-                    view.text_mm(c, text, height, "center")
+                    view.text_mm(c, text, height, "center", names=Point(p))
                     return
     view.label(anchors[0], text, height)
 
@@ -245,7 +297,7 @@ def lever_panel(name: str, scene: Scene) -> Panel:
                 continue            # the arms are numbered by the note's equations (h1, h2, … of section 2)
             rich = rl.Rich(plain(ident)) if kind == "force" else rl.from_tex(lb.text)
             a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            rl.place_passes(view, rl.along_passes(a, b, rich, POLY_LABEL_MM), rich, POLY_LABEL_MM, inside=inside)
+            place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside)
         _title_and_scales(view, lever_title(), tr("sheets.kv06", v1=format_significant(scene.scale('μv').value, 4)),
                           tr("sheets.kv07", v1=format_significant(scene.scale('μF').value, 4)))
         view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), lever_subtitle(), 3.5, "bottom-center")

@@ -9,8 +9,9 @@ from __future__ import annotations
 import math
 from reportgen.gears.meshing import GOST_SCALES, MeshingPicture
 
-from reportgen.scenes.meshing import (PADDING, WINDOW_H, WINDOW_W, DrawingScale, ab_on_sheet,  # noqa: F401
-                                     meshing_scale, model_bounds)
+from reportgen.scenes.meshing import (CAPTION, PADDING, VIEW_H, VIEW_W, WINDOW_H, WINDOW_W,  # noqa: F401
+                                     DrawingScale, ab_on_sheet, label_room, meshing_marks,
+                                     meshing_scale, model_bounds, model_centre)
 from ..words import decimal_mark, tr
 
 
@@ -19,27 +20,24 @@ CIRCLE_LAYERS = {"pitch": "axis", "base": "thin", "working": "hidden", "tip": "t
 
 
 def draw_meshing(sheet, pair, pic: MeshingPicture, rect) -> DrawingScale:
-    """The meshing picture in ``rect`` (a :class:`drawings.layout.Rect`) at its ГОСТ scale:
-    bold teeth, circles as arcs clipped to the view (pitch dash-dot, working dashed, others thin),
-    the line of centres, N1N2, the tangent at P, ab with its zones, point labels and dimensions."""
+    """The meshing picture in ``rect`` (a :class:`drawings.layout.Rect` of VIEW_W × VIEW_H) at its
+    ГОСТ scale: bold teeth, circles as arcs through the meshing zone (pitch dash-dot, working dashed,
+    others thin), the line of centres, N1N2, the tangent at P, ab with its zones, and the
+    designations placed by :func:`reportgen.scenes.meshing.meshing_marks` (the note draws the same)."""
     from shapely.geometry import LineString, Point as SPoint, box
 
     from drawings.primitives import Transform
 
     g = pair.geometry
-    scale = meshing_scale(pair, pic, (rect.width - 2 * PADDING, rect.height - 2 * PADDING - 8))
+    scale = meshing_scale(pair, pic)
     k = scale.factor
-    x0, y0, x1, y1 = model_bounds(pair, pic)
-    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-    at = (rect.center[0], rect.center[1] - 4)
+    marks = meshing_marks(pair, pic, scale)
+    cx, cy = model_centre(pair, pic)
+    at = (rect.center[0], rect.center[1] - CAPTION / 2)
     view = sheet.place_view("meshing", rect, Transform(k, (cx, cy), at))
-    # the model window that the view shows (its rectangle less the padding)
-    wx0, wy0 = view.transform.inverse((rect.x0 + PADDING, rect.y0 + PADDING))
-    wx1, wy1 = view.transform.inverse((rect.x1 - PADDING, rect.y1 - PADDING - 8))
-    window = box(wx0, wy0, wx1, wy1)
-    # circles as arcs through the meshing zone only (as drawn by hand), lines over the whole window
-    vx0, vy0, vx1, vy1 = pic.view
-    arc_window = box(vx0 - 2 * g.m, vy0 - 3 * g.m, vx1 + 2 * g.m, vy1 + 3 * g.m).intersection(window)
+    rx0, ry0, rx1, ry1 = label_room(pair, pic, scale)
+    window = box(rx0, ry0, rx1, ry1)
+    arc_window = box(*marks.arcs_window).intersection(window)
     for c in pic.circles:
         ring = SPoint(c.centre).buffer(c.radius, 720).exterior
         part = ring.intersection(arc_window)
@@ -47,8 +45,7 @@ def draw_meshing(sheet, pair, pic: MeshingPicture, rect) -> DrawingScale:
             view.geometry(part, CIRCLE_LAYERS[c.kind])
     for tooth in pic.teeth1 + pic.teeth2:
         view.polyline([tuple(p) for p in tooth], "contour")
-    o1, o2 = pic.points["O1"], pic.points["O2"]
-    view.line((0.0, max(wy0, -g.m)), (0.0, min(wy1, g.aw + g.m)), "axis")
+    view.line((0.0, max(ry0, -g.m)), (0.0, min(ry1, g.aw + g.m)), "axis")
     (tx0, ty0), (tx1, ty1) = pic.segments["tangent"]
     tl = LineString([(tx0, ty0), (tx1, ty1)]).intersection(window)
     if not tl.is_empty:
@@ -73,17 +70,34 @@ def draw_meshing(sheet, pair, pic: MeshingPicture, rect) -> DrawingScale:
         mid = ((p[0] + q[0]) / 2 + nx * off * 0.9, (p[1] + q[1]) / 2 + ny * off * 0.9)
         view.text(mid, "II" if z.pairs >= 2 else "I", 3.5, "center")
     for name in ("O1", "O2", "P", "N1", "N2", "a", "b"):
-        pt = pic.points[name]
-        if window.contains(SPoint(pt)) or name in ("O1", "O2"):
-            view.circle_mm(pt, 0.8, "contour")
-            view.label(pt, name, 5.0, prefer_deg={"N1": 135, "N2": -45, "P": -30, "a": 135,
-                                                  "b": -45, "O1": 0, "O2": 0}[name])
-    view.dimension(o1, o2, offset_mm=-(abs(x0) * k + 18), unit_factor=1.0, decimals=3)
-    view.dimension(a, b, offset_mm=18.0, unit_factor=1.0, decimals=3)
+        view.circle_mm(pic.points[name], 0.8, "contour")
+    draw_marks(view, marks)
     view.text_mm((rect.center[0], rect.y1 - 7), tr("sheets.me01", v1=scale.label.replace(",", decimal_mark())), 5.0, "bottom-center")
-    view.text_mm((rect.x0 + 2, rect.y0 + 2),
-                 tr("sheets.me02"), 3.5, "bottom-left")
+    view.text_mm((rect.x0 + 2, rect.y0 + 2), tr("sheets.me02"), 3.5, "bottom-left")
     return scale
+
+
+def draw_marks(view, marks) -> None:
+    """The designations (:class:`reportgen.scenes.meshing_marks.MeshingMarks`) on a view whose
+    model unit is the real mm: leaders thin, texts at their boxes, arcs of s and p with end
+    ticks, the arc of αw, the dimensions ab and aw at their chosen offsets."""
+    k = marks.k
+    for arc in marks.arcs:
+        view.polyline(arc.points(), "thin")
+        for a_ in (arc.a0, arc.a1):
+            c, s_ = math.cos(a_), math.sin(a_)
+            r0, r1 = arc.radius - 1.8 / k, arc.radius + 1.8 / k
+            view.line((arc.centre[0] + r0 * c, arc.centre[1] + r0 * s_),
+                      (arc.centre[0] + r1 * c, arc.centre[1] + r1 * s_), "thin")
+    view.polyline(marks.angle.points(), "thin")
+    for m in marks.marks:
+        if m.leader:
+            view.polyline(list(m.leader), "thin")
+        text = tr(f"marks.sheet4.{m.text}") if m.word else m.text
+        x0, y0, x1, y1 = m.box
+        view.text(((x0 + x1) / 2, (y0 + y1) / 2), text, m.height, "center")
+    for d in marks.dimensions:
+        view.dimension(d.p1, d.p2, offset_mm=d.offset_mm, unit_factor=1.0, text=d.text)
 
 
 def draw_sliding(sheet, pair, rect, k: float) -> None:

@@ -39,8 +39,10 @@ def draw_reducer(sheet, stage, region) -> None:
     fview = sheet.place_view("reducer_front", frect,
                              Transform(1.0, (0.0, 0.0), (frect.x0 + 10 - fx0, frect.y0 + 8 - fy0)))
     draw_scene(fview, front)
-    fview.text_mm((frect.center[0], frect.y1 - 6), tr("sheets.pl01", label=label), 5.0,
-                  "bottom-center")
+    from drawings.style import text_width
+    title = tr("sheets.pl01", label=label)
+    tx = min(frect.center[0], region.x1 - text_width(title, 5.0) / 2 - 2)
+    fview.text_mm((tx, frect.y1 - 6), title, 5.0, "bottom-center")
     side = side_scheme(d, k)
     x_line = side.bounds()[2] + 25
     triangle = triangle_scene(tri, x_line, side.marks)

@@ -10,7 +10,7 @@ from reportgen.project import Project
 from ..words import tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
-                            "scenes", "kinetostatics")
+                            "plan_positions", "plans_by_position", "scenes", "kinetostatics")   # sheet 1's drawing
 #: On A3 the plans and the lever get round scales of their own (printed on the sheet) within these mm;
 #: on A1 they keep the note's scales.
 A3_PLAN_MM = 75.0

@@ -112,6 +112,7 @@ def draw(project, number: int, count: int) -> Sheet:
     k_rect = Rect(x0, top - 250.0, fr.x1 - CLEAR_MM, top)
     kview = sheet.place_view("hoist_drive", k_rect, Transform(1.0, (0.0, 0.0), (k_rect.x0 + 8.0, k_rect.y0 + 60.0)))
     kview.title("Кинематическая схема механизма подъёма")
+    sheet.set_scale(Sheet.NO_SCALE)            # schemes are drawn without scale (ГОСТ 2.701)
     anch = cs.draw_hoist_drive(kview, h.open_gear is not None)
     callouts = [("motor", 1, (-10.0, 30.0)), ("coupling", 2, (-8.0, 40.0)), ("brake", 3, (0.0, 40.0)),
                 ("reducer", 4, (-20.0, 20.0))]

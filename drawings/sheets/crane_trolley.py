@@ -70,6 +70,7 @@ def draw(project, number: int, count: int) -> Sheet:
                                                                (k_rect.x0 + SCALE * (gauge / 2 + 20.0),
                                                                 k_rect.center[1] - 10.0)))
     view.title("Кинематическая схема механизма передвижения тележки")
+    sheet.set_scale(Sheet.NO_SCALE)            # schemes are drawn without scale (ГОСТ 2.701)
     anch = cs.draw_trolley_drive(view, t.driven_wheels, t.wheels, gauge, base)
     for key, n, (dx, dy) in (("motor", 1, (-10.0, 40.0)), ("brake", 2, (0.0, 50.0)), ("coupling", 3, (-10.0, 70.0)),
                              ("reducer", 4, (20.0, 60.0)), ("wheel", 5, (25.0, 10.0)),

@@ -9,10 +9,11 @@ from drawings.layout import Rect
 from drawings.scenes import dynamics_diagrams as dd
 from drawings.scenes import dynamics_flywheel as df
 from drawings.sheet import Sheet
+from reportgen.dynamics.hub import hub_of
 from reportgen.project import Project
 from ..words import designation, tr
 
-NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics")
+NEEDS: tuple[str, ...] = ("kinematics", "strokes", "dynamics", "scenes")
 def sheet_title() -> str:
     """The sheet's title in the task's language (title block, graph 1)."""
     return tr("sheets.sk301")
@@ -49,14 +50,16 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     fr = sheet.frame
     labels = graph_labels(project)
     y_top = sheet.extra_rect.y0 - CLEAR_MM
-    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM, dd.omega_height(res))
-    dd.draw_moment(sheet, lay, g, labels)
-    dd.draw_work(sheet, lay, g, labels)
-    dd.draw_energy(sheet, lay, g, labels)
-    _, kl = dd.draw_wittenbauer(sheet, lay, g, labels)
-    dd.draw_inertia(sheet, lay, g, labels)
+    sc = project.scenes.dynamics
+    assert sc is not None                  # available(): the task has [dynamics]
+    lay = dd.layout(g, labels, fr.x0 + CLEAR_MM, y_top, fr.y0 + CLEAR_MM, dd.omega_height(sc.omega))
+    dd.draw_moment(sheet, lay, g, labels, sc.moment)
+    dd.draw_work(sheet, lay, g, labels, sc.work)
+    dd.draw_energy(sheet, lay, g, labels, sc.energy)
+    _, kl = dd.draw_wittenbauer(sheet, lay, g, labels, sc.wittenbauer)
+    dd.draw_inertia(sheet, lay, g, labels, sc.inertia)
     assert lay.omega is not None  # layout() always places the ω graph
-    dd.draw_omega(sheet, lay.omega, res, g)
+    dd.draw_omega(sheet, lay.omega, sc.omega, g)
     # the right column, over the title block: the table of results at the top, the flywheel's sketch
     # under it at the largest ГОСТ scale that fits the rest of the column
     x0, x1 = lay.right + 12.0, fr.x1 - CLEAR_MM
@@ -73,5 +76,6 @@ def draw(project: Project, number: int, count: int) -> Sheet:
         w, h = df.sketch_size(res.flywheel, k, stacked)
         cy = (top + bottom) / 2 if h <= top - bottom else top - h / 2
         sheet.set_scale(df.scale_text(k))                              # the flywheel's sketch
-        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), k, stacked)
+        df.draw_flywheel(sheet, res.flywheel, Rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), k, stacked,
+                         hub_of(res.M_drive, 2000.0 * res.flywheel.radius))
     return sheet

@@ -27,7 +27,12 @@ def available(project) -> bool:
 
 
 def draw(project, number: int, count: int) -> Sheet:
-    from drawings.scenes.meshing import draw_meshing, draw_sliding
+    """Layout: the meshing picture takes the left of the sheet from the bottom frame to under the
+    designation's stamp; right of it the reducer (front view, side scheme with the velocity
+    triangle and the angular-velocity plan, table of tooth numbers) on top, the specific-sliding
+    diagram and the pair's table (above the title block) below. Without a reducer the diagram
+    and the table take the right side; without a gear pair the reducer takes the whole sheet."""
+    from drawings.scenes.meshing import VIEW_H, VIEW_W, draw_meshing, draw_sliding
     from drawings.scenes.planetary_dxf import draw_reducer
     from reportgen.gears.meshing import meshing_picture
 
@@ -35,22 +40,30 @@ def draw(project, number: int, count: int) -> Sheet:
     sheet = Sheet.a1(task.document, title=sheet_title(), code=designation(task.document, number), number=number,
                      count=count)
     fr = sheet.frame
-    left = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + 395, fr.y1 - 19)
-    right = Rect(left.x1 + 12, fr.y0 + 5, fr.x1 - 5, fr.y1 - 5)
+    tb = sheet.title_rect
+    has_reducer = task.planetary is not None and task.planetary.module is not None
+    rest = Rect(fr.x0 + 5, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
     if task.gears is not None:
         pair = project.gears
         pic = meshing_picture(pair, n_teeth=3)
-        mesh_rect = Rect(left.x0, left.y1 - 415, left.x1, left.y1)
+        mesh_rect = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + VIEW_W, fr.y0 + 5 + VIEW_H)
         scale = draw_meshing(sheet, pair, pic, mesh_rect)
         sheet.set_scale(scale.label)                                   # the meshing, the main view
-        table_rect = Rect(left.x1 - PAIR_TABLE_W, left.y0, left.x1, mesh_rect.y0 - 10)
-        slide_rect = Rect(left.x0, left.y0, table_rect.x0 - 8, mesh_rect.y0 - 10)
+        rest = Rect(mesh_rect.x1 + 10, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
+        table_h = PAIR_ROW_MM * (len(pair_rows(pair)) + 1) + 12.0
+        table_rect = Rect(rest.x1 - PAIR_TABLE_W, tb.y1 + 8, rest.x1, tb.y1 + 8 + table_h)
+        if has_reducer:            # under the reducer, left of the title block
+            slide_rect = Rect(rest.x0, rest.y0, min(table_rect.x0, tb.x0) - 10, rest.y0 + 185.0)
+        else:                      # above the table, the width of the right side
+            slide_rect = Rect(rest.x0, table_rect.y1 + 12, rest.x1, min(rest.y1, table_rect.y1 + 12 + 320))
         draw_sliding(sheet, pair, slide_rect, scale.factor)
         draw_pair_table(sheet, pair, table_rect)
-    if task.planetary is not None and task.planetary.module is not None:
+        rest = Rect(rest.x0, max(slide_rect.y1, table_rect.y1) + 8, rest.x1, rest.y1)
+    if has_reducer:
         stage = project.planetary
-        region = right if task.gears is not None else Rect(left.x0, left.y0, right.x1, left.y1)
-        draw_reducer(sheet, stage, Rect(region.x0, sheet.title_rect.y1 + 8, region.x1, region.y1))
+        region = rest if task.gears is not None else Rect(rest.x0, tb.y1 + 8, rest.x1,
+                                                           sheet.extra_rect.y0 - 4)
+        draw_reducer(sheet, stage, region)
     # «Масштаб»: the main view's scale (the meshing, else the reducer); each view's scale is in its title
     return sheet
 

@@ -4,6 +4,7 @@ velocity plans of all positions in small form, the s–v–a diagrams of the out
 the scales. Every number comes from :class:`reportgen.project.Project` and its result objects."""
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -17,14 +18,14 @@ from drawings.scenes import kinematics_diagrams as kd
 from drawings.scenes import kinematics_plans as kp
 from drawings.scenes import kinematics_scheme as ks
 from reportgen.errors import BuildError
-from reportgen.diagrams import Diagrams, build_diagrams
+from reportgen.diagrams import Diagrams
 from reportgen.plans import Plan, build_plans, round_scale
 from reportgen.project import Project
 from reportgen.tolerances import MM_EPS
 from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
-                            "plans", "scenes")
+                            "plans", "plan_positions", "plans_by_position", "scenes", "output_diagrams")
 
 
 def sheet_title() -> str:
@@ -42,8 +43,6 @@ def __getattr__(name: str):
 SCHEME_MAX_MM = (470.0, 400.0)
 #: Padding of the scheme around its model bounds: left, bottom, right, top, mm.
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
-#: Intervals of the φ axis of the diagrams (as the note's section draws them).
-INTERVALS = 24
 #: The small velocity plans: the crank's vector is at most this long, mm.
 SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
 #: Gap between views, and between the two plans of the analysed position put together, mm.
@@ -62,10 +61,8 @@ def analysed_position(project: Project) -> int:
 
 
 def diagrams_of(project: Project) -> Diagrams | None:
-    if project.strokes is None:
-        return None
-    return build_diagrams(project.model, project.strokes, float(project.phi[0]),
-                          n=INTERVALS)
+    """The s–v–a diagrams of the output (the project's stage, the note's)."""
+    return project.output_diagrams
 
 
 def image_keys(project: Project) -> set[str]:
@@ -112,23 +109,40 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         st = project.strokes
         assert st is not None  # the diagrams are drawn between the extreme positions
         start = math.degrees((d.sign * (st.phi_start - d.phi0)) % (2 * math.pi))
-        kd.add_diagrams_view(sheet, d, len(project.phi), start, st.working_deg, "top-right")
-    # the plans of the analysed position (the note's scales), the table of scales
+        scene = project.scenes.output_diagrams
+        assert scene is not None  # drawn from the same stage
+        kd.add_diagrams_view(sheet, d, scene, len(project.phi), start, st.working_deg, "top-right")
+    # the plans of every plan position (the note's scales; the analysed one first), the table of scales
     keys = image_keys(project)
     if control and cs.is_a3(project):   # A3: the plans at round scales of their own (printed on it)
         kin = project.kinematics
         far_v = max(float(np.hypot(*np.asarray(m.vel[i]))) for m in kin.points.values())
         far_a = max(float(np.hypot(*np.asarray(m.acc[i]))) for m in kin.points.values())
-        vplan, aplan = build_plans(project.linkage, project.structure, kin, i,
-                                   mu_v=round_scale(far_v, cs.A3_PLAN_MM), mu_a=round_scale(far_a, cs.A3_PLAN_MM))
+        pairs = {i: build_plans(project.linkage, project.structure, kin, i,
+                                mu_v=round_scale(far_v, cs.A3_PLAN_MM), mu_a=round_scale(far_a, cs.A3_PLAN_MM))}
     else:
-        vplan, aplan = project.plans
-    add_scales_table(sheet, 1.0 / k, scale_text, vplan, aplan, d)
-    titles = (tr("sheets.sk103", i=i), tr("sheets.sk104", i=i))
-    # the plans and the small plans (as large as the room left allows) share out the free field
-    arrangement = arrange(sheet, [kp.view_size(vplan, titles[0])[:2], kp.view_size(aplan, titles[1])[:2]],
-                          (lambda _crank_mm: None) if control else (lambda crank_mm: small_plans(project, crank_mm)))
-    for name, plan, title in (("plan_v", vplan, titles[0]), ("plan_a", aplan, titles[1])):
+        pairs = dict(project.plans_by_position)
+    small_cache: dict[float, list[Plan]] = {}
+
+    def small_of(crank_mm: float) -> list[Plan] | None:
+        if control:
+            return None
+        if crank_mm not in small_cache:
+            small_cache[crank_mm] = small_plans(project, crank_mm)
+        return small_cache[crank_mm]
+    plan_views: list[tuple[str, Plan, str]] = []
+    for j, (vplan, aplan) in pairs.items():
+        names = plan_view_names(j, first=(j == i))
+        plan_views += [(names[0], vplan, tr("sheets.sk103", i=j)), (names[1], aplan, tr("sheets.sk104", i=j))]
+    # the table's rows name the small plans too, whose μv the arrangement chooses: the table's view
+    # is reserved for its most rows first and filled once the small plans are known
+    candidates = [scale_rows(1.0 / k, scale_text, pairs, d, small_of(c)) for c in SMALL_PLAN_MM]
+    candidates.append(scale_rows(1.0 / k, scale_text, pairs, d, None))
+    table = reserve_scales_table(sheet, candidates)
+    arrangement = arrange(sheet, [kp.view_size(pl, title)[:2] for _, pl, title in plan_views], small_of,
+                          [(plan_views[2 * m][0], plan_views[2 * m + 1][0]) for m in range(len(plan_views) // 2)])
+    fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, arrangement.small), _table_widths(candidates))
+    for name, plan, title in plan_views:
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
     if arrangement.small is not None:
         kp.place_small_plans(sheet, arrangement.small, keys, arrangement.cols, arrangement.rects["plans_all"])
@@ -155,17 +169,67 @@ class Arrangement:
     room: float
 
 
-def plan_blocks(sizes: list[tuple[float, float]]) -> tuple[list[list[Block]], list[Block]]:
-    """Ways to put the two plans of the analysed position together — side by side (titles and
-    captions on one line) or one above the other — and the two apart (the last resort)."""
-    (wv, hv), (wa, ha) = sizes
-    h = max(hv, ha)
-    row = Block("plans", wv + PAIR_GAP + wa, h, (("plan_v", 0.0, 0.0, wv, h), ("plan_a", wv + PAIR_GAP, 0.0, wa, h)))
-    w = max(wv, wa)
-    column = Block("plans", w, hv + PAIR_GAP + ha, (("plan_v", 0.0, ha + PAIR_GAP, w, hv), ("plan_a", 0.0, 0.0, w, ha)))
-    apart = [Block("plan_v", wv, hv, (("plan_v", 0.0, 0.0, wv, hv),)),
-             Block("plan_a", wa, ha, (("plan_a", 0.0, 0.0, wa, ha),))]
-    return [[row], [column]], apart
+def plan_view_names(position: int, first: bool) -> tuple[str, str]:
+    """The views of the plans of a plan position: ``plan_v``/``plan_a`` for the analysed one,
+    ``plan_v_<j>``/``plan_a_<j>`` for the others."""
+    return ("plan_v", "plan_a") if first else (f"plan_v_{position}", f"plan_a_{position}")
+
+
+def _pair_names(sizes: list[tuple[float, float]]) -> list[tuple[str, str]]:
+    return [plan_view_names(k, k == 0) for k in range(len(sizes) // 2)]
+
+
+def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] | None = None
+                ) -> tuple[list[list[Block]], list[Block]]:
+    """Ways to put the plans of the plan positions together (``sizes``: velocity, acceleration of
+    each position in turn; ``names`` their views): the velocity and acceleration plan of a position
+    side by side (titles and captions on one line) or one above the other, the positions' pairs
+    in one block (one above the other, or in one row) or in blocks of their own, or only the
+    analysed position's pair together; and every plan apart (the last resort)."""
+    pairs = [(sizes[2 * k], sizes[2 * k + 1]) for k in range(len(sizes) // 2)]
+    names = names or _pair_names(sizes)
+
+    def row(k: int, nv: str, na: str) -> Block:
+        (wv, hv), (wa, ha) = pairs[k]
+        h = max(hv, ha)
+        return Block(f"pair{k}", wv + PAIR_GAP + wa, h, ((nv, 0.0, 0.0, wv, h), (na, wv + PAIR_GAP, 0.0, wa, h)))
+
+    def column(k: int, nv: str, na: str) -> Block:
+        (wv, hv), (wa, ha) = pairs[k]
+        w = max(wv, wa)
+        return Block(f"pair{k}", w, hv + PAIR_GAP + ha, ((nv, 0.0, ha + PAIR_GAP, w, hv), (na, 0.0, 0.0, w, ha)))
+
+    def stacked(blocks: list[Block]) -> Block:         # one above the other, the first on top
+        w = max(b.width for b in blocks)
+        h = sum(b.height for b in blocks) + PAIR_GAP * (len(blocks) - 1)
+        parts, y = [], h
+        for b in blocks:
+            y -= b.height
+            parts += [(n, dx, y + dy, pw, ph) for n, dx, dy, pw, ph in b.parts]
+            y -= PAIR_GAP
+        return Block("plans", w, h, tuple(parts))
+
+    def in_row(blocks: list[Block]) -> Block:
+        h = max(b.height for b in blocks)
+        parts, x = [], 0.0
+        for b in blocks:
+            parts += [(n, x + dx, dy, pw, ph) for n, dx, dy, pw, ph in b.parts]
+            x += b.width + PAIR_GAP
+        return Block("plans", x - PAIR_GAP, h, tuple(parts))
+
+    rows = [row(k, *names[k]) for k in range(len(pairs))]
+    cols = [column(k, *names[k]) for k in range(len(pairs))]
+    if len(pairs) == 1:
+        together = [[Block("plans", rows[0].width, rows[0].height, rows[0].parts)],
+                    [Block("plans", cols[0].width, cols[0].height, cols[0].parts)]]
+    else:
+        together = [[stacked(rows)], [in_row(cols)], [in_row(rows)],
+                    *[list(choice) for choice in itertools.product(*zip(rows, cols))]]
+    apart = [Block(n, *pairs[k][m], ((n, 0.0, 0.0, *pairs[k][m]),))
+             for k in range(len(pairs)) for m, n in enumerate(names[k])]
+    if len(pairs) > 1:          # the analysed position's pair together, the other plans apart
+        together += [[rows[0], *apart[2:]], [cols[0], *apart[2:]]]
+    return together, apart
 
 
 def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
@@ -184,14 +248,15 @@ def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
     return out
 
 
-def arrange(sheet: Sheet, plan_sizes: list[tuple[float, float]], small_of) -> Arrangement:
+def arrange(sheet: Sheet, plan_sizes: list[tuple[float, float]], small_of,
+            names: list[tuple[str, str]] | None = None) -> Arrangement:
     """Find where the plans of the analysed position and the small plans go in the free field
     left by the scheme, the diagrams and the table: the small plans at the largest crank vector
     of ``SMALL_PLAN_MM`` that fits (else dropped); among the ways that fit, the one that leaves
     the most room around every view; then the views are moved to share out the room."""
     region = sheet.free_region
     placed = [v.rect for v in sheet.views.values()]
-    together, apart = plan_blocks(plan_sizes)
+    together, apart = plan_blocks(plan_sizes, names)
     for options in (together, [apart]):
         best = _best(region, placed, options, sheet.frame.width, small_of)
         if best is not None:
@@ -269,16 +334,37 @@ def small_plans(project: Project, crank_mm: float) -> list[Plan]:
     return [build_plans(project.linkage, project.structure, kin, j, mu_v=mu)[0] for j in range(len(project.phi))]
 
 
-def scale_rows(mu_l: float, scale_text: str, vplan: Plan, aplan: Plan, d: Diagrams | None
-               ) -> list[tuple[str, str, str]]:
-    rows = [("μl", tr("sheets.sk109", scale_text=scale_text), tr("sheets.sk110", v1=format_significant(mu_l, 4))),
-            ("μv", tr("sheets.sk111"), tr("sheets.sk112", v1=format_significant(vplan.scale, 4))),
-            ("μa", tr("sheets.sk113"), tr("sheets.sk114", v1=format_significant(aplan.scale, 4)))]
+def _lower_title(title: str) -> str:
+    """«Диаграмма скорости» → «диаграмма скорости» (a row of the table names the diagram)."""
+    return title.replace(tr("sheets.sk123"), tr("sheets.sk124"))
+
+
+def _positions_text(positions: list[int]) -> str:
+    return ", ".join(str(j) for j in sorted(positions))
+
+
+def scale_rows(mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]], d: Diagrams | None,
+               small: list[Plan] | None = None) -> list[tuple[str, str, str]]:
+    """The table «Масштабы»: one row per distinct scale, named by what it draws — the scheme, the
+    velocity and acceleration plans of the plan positions (positions sharing a μ share a row), the
+    small velocity plans, the diagrams' axes and graphs and the pole distances."""
+    rows = [("μl", tr("sheets.sk109", scale_text=scale_text), tr("sheets.sk110", v1=format_significant(mu_l, 4)))]
+    for symbol, which, one, many, value in (("μv", 0, "sheet1.scales_vplan", "sheet1.scales_vplans", "sheets.sk112"),
+                                            ("μa", 1, "sheet1.scales_aplan", "sheet1.scales_aplans", "sheets.sk114")):
+        by_mu: dict[str, list[int]] = {}
+        for j, plans in pairs.items():
+            by_mu.setdefault(format_significant(plans[which].scale, 4), []).append(j)
+        for mu, positions in by_mu.items():
+            name = tr(one if len(positions) == 1 else many, i=_positions_text(positions))
+            rows.append((symbol, name, tr(value, v1=mu)))
+        if which == 0 and small:
+            rows.append(("μv", tr("sheet1.scales_small", last=len(small) - 1),
+                         tr(value, v1=format_significant(small[0].scale, 4))))
     if d is not None:
         nm = kd.names(d)
         rows += [("μφ", tr("sheets.sk115"), tr("sheets.sk116", v1=format_significant(d.mu_phi, 4))),
                  ("μt", tr("sheets.sk117"), tr("sheets.sk118", v1=format_significant(d.mu_t, 4))),
-                 *[(sym, title.replace(tr("sheets.sk123"), tr("sheets.sk124")), f"{format_significant(mu, 4)} {unit}")
+                 *[(sym, _lower_title(title), f"{format_significant(mu, 4)} {unit}")
                    for sym, title, mu, unit in zip(nm.symbols, nm.titles, (d.mu_s, d.mu_v, d.mu_a),
                                                    (nm.mu_s, nm.mu_v, nm.mu_a))],
                  ("H1", tr("sheets.sk119"), tr("sheets.sk120", v1=format_number(d.H1, 1))),
@@ -286,31 +372,55 @@ def scale_rows(mu_l: float, scale_text: str, vplan: Plan, aplan: Plan, d: Diagra
     return rows
 
 
-def add_scales_table(sheet: Sheet, mu_l: float, scale_text: str, vplan: Plan, aplan: Plan,
-                     d: Diagrams | None) -> View:
-    rows = scale_rows(mu_l, scale_text, vplan, aplan, d)
-    header = (tr("sheets.sk105"), tr("sheets.sk106"), tr("sheets.sk107"))
-    widths = tuple(max(style.text_width(r[c], 3.5) for r in [header, *rows]) + 5.0 for c in range(3))
-    row_h = 8.0
+#: Height of a row of the table of scales, and the strip above it for its title, mm.
+TABLE_ROW_MM, TABLE_TITLE_MM = 8.0, 12.0
+
+
+def _table_header() -> tuple[str, str, str]:
+    return (tr("sheets.sk105"), tr("sheets.sk106"), tr("sheets.sk107"))
+
+
+def _table_widths(candidates: list[list[tuple[str, str, str]]]) -> tuple[float, ...]:
+    every = [_table_header(), *[r for rows in candidates for r in rows]]
+    return tuple(max(style.text_width(r[c], 3.5) for r in every) + 5.0 for c in range(3))
+
+
+def reserve_scales_table(sheet: Sheet, candidates: list[list[tuple[str, str, str]]]) -> View:
+    """The table's view, big enough for the longest of ``candidates`` (row lists): the small
+    plans' μv, one of its rows, is chosen once the other views are placed."""
+    w = sum(_table_widths(candidates))
+    n = max(len(rows) for rows in candidates)
+    return sheet.add_view("scales", w, TABLE_ROW_MM * (n + 1) + TABLE_TITLE_MM, preferred="bottom-right")
+
+
+def fill_scales_table(view: View, rows: list[tuple[str, str, str]], widths: tuple[float, ...]) -> None:
+    """Draw the table «Масштабы» with ``rows`` (columns ``widths``) at the top of its reserved view."""
     w = sum(widths)
-    h = row_h * (len(rows) + 1) + 12.0
-    view = sheet.add_view("scales", w, h, preferred="bottom-right")
+    h = view.rect.height
+    row_h = TABLE_ROW_MM
     view.title(tr("sheets.sk108"))
-    top = h - 12.0                             # view coordinates: mm from its lower-left corner
+    top = h - TABLE_TITLE_MM                     # view coordinates: mm from its lower-left corner
     x0 = 0.0
     table = Rect(x0, top - row_h * (len(rows) + 1), x0 + w, top)
-    c = view
     for r in range(len(rows) + 2):
         y = top - r * row_h
-        c.line((x0, y), (x0 + w, y), "contour" if r in (0, 1, len(rows) + 1) else "thin")
+        view.line((x0, y), (x0 + w, y), "contour" if r in (0, 1, len(rows) + 1) else "thin")
     x = x0
     for wi in (0.0, *widths):
         x += wi
-        c.line((x, table.y0), (x, table.y1), "contour")
-    for r, row in enumerate([header, *rows]):
+        view.line((x, table.y0), (x, table.y1), "contour")
+    for r, row in enumerate([_table_header(), *rows]):
         y = top - r * row_h - row_h / 2
         x = x0
         for wi, text in zip(widths, row):
-            c.text((x + 2.0, y), text, 3.5, "middle-left")
+            view.text((x + 2.0, y), text, 3.5, "middle-left")
             x += wi
+
+
+def add_scales_table(sheet: Sheet, mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]],
+                     d: Diagrams | None, small: list[Plan] | None = None) -> View:
+    """The table «Масштабы» (reserved and filled at once)."""
+    rows = scale_rows(mu_l, scale_text, pairs, d, small)
+    view = reserve_scales_table(sheet, [rows])
+    fill_scales_table(view, rows, _table_widths([rows]))
     return view

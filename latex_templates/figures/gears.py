@@ -57,18 +57,46 @@ def blocking_contour_figure(pair):
     return fig
 
 
+#: The note's figure of the meshing: width of the drawing (page mm), the margin round the meshing
+#: zone for the designations (a share of its width), letter heights (page mm).
+NOTE_MESH_W = 140.0          # 0.85 of the text block, as the figure macro includes it
+NOTE_MESH_MAX_H = 100.0      # under the macro's height limit (0.7 of the text height)
+NOTE_MESH_MARGIN = 0.22
+NOTE_POINT_H = 3.5
+NOTE_MARK_H = 2.9
+
+
+def meshing_frame(pic) -> tuple[tuple[float, float, float, float], float]:
+    """The note's detail of the meshing picture round the pole: its frame (real mm) and its scale
+    (page mm per real mm)."""
+    x0, y0, x1, y1 = pic.view
+    pad = NOTE_MESH_MARGIN * (x1 - x0)
+    room = (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+    k = min(NOTE_MESH_W / (room[2] - room[0]), NOTE_MESH_MAX_H / (room[3] - room[1]))
+    return room, k
+
+
 def meshing_figure(pair, pic):
-    """The meshing picture around the pole: teeth (bold), circles (thin), N1N2, ab, P, the zones
-    of double and single contact, and a 10 mm scale bar (the figure is not to scale)."""
+    """The meshing picture round the pole (a detail of sheet 4's picture): teeth (bold), circles
+    (thin), N1N2, ab, P, the zones of double and single contact, a scale bar, and the designations
+    of sheet 4 (r, rb, rw, ra, rf of each wheel, s, p, αw, the points, the dimension ab) placed by
+    :func:`reportgen.scenes.meshing_marks.place_marks` — the sheet's rule at the figure's scale."""
+    from reportgen.scenes.meshing_marks import place_marks
     g = pair.geometry
-    fig = new_figure(16, 13)
-    ax = fig.add_subplot(111)
+    room, k = meshing_frame(pic)
+    inner = (room[0] + 2 / k, room[1] + 2 / k, room[2] - 2 / k, room[3] - 2 / k)
+    legend = (room[0], room[3] - 24 / k, room[0] + 62 / k, room[3])       # upper left
+    bar_box = (room[0], room[1], room[0] + 0.6 * g.m + 20.0 + 14 / k, room[1] + 0.6 * g.m + 8 / k)
+    marks = place_marks(pair, pic, k, inner, point_h=NOTE_POINT_H, mark_h=NOTE_MARK_H,
+                        keep_out=(legend, bar_box))
+    w_mm, h_mm = (room[2] - room[0]) * k, (room[3] - room[1]) * k
+    fig = new_figure(w_mm / 10.0, h_mm / 10.0)
+    ax = fig.add_axes([0, 0, 1, 1])
     ax.set_aspect("equal")
     ax.axis("off")
-    x0, y0, x1, y1 = pic.view
-    pad = 0.6 * g.m
-    ax.set_xlim(x0 - pad, x1 + pad)
-    ax.set_ylim(y0 - pad, y1 + pad)
+    ax.set_xlim(room[0], room[2])
+    ax.set_ylim(room[1], room[3])
+    x0, y0, x1, y1 = room
     styles = {"pitch": dict(ls="-.", lw=0.5, color="0.25"), "base": dict(ls="-", lw=0.5, color="0.25"),
               "working": dict(ls="--", lw=0.5, color="0.25"), "tip": dict(ls="-", lw=0.5, color="0.25"),
               "root": dict(ls="-", lw=0.5, color="0.25")}
@@ -81,23 +109,21 @@ def meshing_figure(pair, pic):
     ax.plot([n1[0], n2[0]], [n1[1], n2[1]], color="k", lw=0.8)
     (tx0, ty0), (tx1, ty1) = pic.segments["tangent"]
     ax.plot([tx0, tx1], [ty0, ty1], color="0.35", lw=0.5)
-    ax.plot([0, 0], [y0 - pad, y1 + pad], color="0.25", lw=0.5, ls="-.")
+    ax.plot([0, 0], [y0, y1], color="0.25", lw=0.5, ls="-.")
     zone_colors = {2: "#1f77b4", 1: "#d62728", 0: "#999999"}
     for z in pic.zones:
         if z.pairs == 0:
             continue
         ax.plot([z.start[0], z.end[0]], [z.start[1], z.end[1]], color=zone_colors[z.pairs], lw=4,
                 solid_capstyle="butt", alpha=0.55, zorder=3)
-    for name in ("N1", "N2", "P", "a", "b"):
+    for name in ("N1", "N2", "P", "a", "b", "O1", "O2"):
         px, py = pic.points[name]
-        ax.plot([px], [py], "o", color="k", ms=2.5, zorder=4)
-        text = {"N1": "$N_1$", "N2": "$N_2$", "P": "$P$", "a": "$a$", "b": "$b$"}[name]
-        dx, dy = {"N1": (-10, -4), "N2": (4, -10), "P": (5, -11), "a": (-11, 3), "b": (4, 3)}[name]
-        ax.annotate(text, (px, py), xytext=(dx, dy), textcoords="offset points", fontsize=11,
-                    bbox=dict(boxstyle="square,pad=0.05", fc="white", ec="none", alpha=0.8), zorder=6)
-    # 10 mm scale bar, lower left
+        if room[0] <= px <= room[2] and room[1] <= py <= room[3]:
+            ax.plot([px], [py], "o", color="k", ms=2.5, zorder=4)
+    _draw_marks(ax, marks)
+    # scale bar, lower left
     bar = 10.0 if g.m < 8 else 20.0
-    bx, by = x0 + 0.3 * g.m, y0 + 0.2 * g.m
+    bx, by = x0 + 0.3 * g.m, y0 + 0.3 * g.m
     ax.plot([bx, bx + bar], [by, by], color="k", lw=1.2)
     for xx in (bx, bx + bar):
         ax.plot([xx, xx], [by - 0.15 * g.m, by + 0.15 * g.m], color="k", lw=1.0)
@@ -108,7 +134,51 @@ def meshing_figure(pair, pic):
                Line2D([], [], color="0.25", lw=0.5, ls="-.", label=tr("figures.gear14")),
                Line2D([], [], color="0.25", lw=0.5, ls="--", label=tr("figures.gear15"))]
     ax.legend(handles=handles, loc="upper left", fontsize=8, frameon=True, framealpha=0.9)
+    fig.reportgen_marks = marks          # for the tests: the boxes as placed
     return fig
+
+
+def _draw_marks(ax, marks) -> None:
+    """The designations of :class:`reportgen.scenes.meshing_marks.MeshingMarks` (real mm) with
+    matplotlib: leaders, texts in their boxes (TeX spelling), arcs of s and p with end ticks, the
+    arc of αw, the dimension ab with its arrows and text."""
+    k = marks.k
+    pt_per_mm = 72.0 / 25.4
+    for arc in marks.arcs:
+        xs, ys = zip(*arc.points())
+        ax.plot(xs, ys, color="k", lw=0.5)
+        for a_ in (arc.a0, arc.a1):
+            c, s_ = math.cos(a_), math.sin(a_)
+            r0, r1 = arc.radius - 1.5 / k, arc.radius + 1.5 / k
+            ax.plot([arc.centre[0] + r0 * c, arc.centre[0] + r1 * c],
+                    [arc.centre[1] + r0 * s_, arc.centre[1] + r1 * s_], color="k", lw=0.5)
+    xs, ys = zip(*marks.angle.points())
+    ax.plot(xs, ys, color="k", lw=0.5)
+    for m in marks.marks:
+        if m.leader:
+            lx, ly = zip(*m.leader)
+            ax.plot(lx, ly, color="k", lw=0.4, zorder=5)
+        cx, cy = m.centre
+        ax.text(cx, cy, f"${m.tex}$", fontsize=m.height * pt_per_mm * 0.95, ha="center", va="center",
+                zorder=6)
+    for d in marks.dimensions:
+        L = math.dist(d.p1, d.p2)
+        nx, ny = -(d.p2[1] - d.p1[1]) / L, (d.p2[0] - d.p1[0]) / L
+        off = d.offset_mm / k
+        q1 = (d.p1[0] + nx * off, d.p1[1] + ny * off)
+        q2 = (d.p2[0] + nx * off, d.p2[1] + ny * off)
+        for p, q in ((d.p1, q1), (d.p2, q2)):
+            ax.plot([p[0], q[0] + nx * 1.5 / k * (1 if off > 0 else -1)],
+                    [p[1], q[1] + ny * 1.5 / k * (1 if off > 0 else -1)], color="k", lw=0.4)
+        ax.annotate("", xy=q2, xytext=q1, arrowprops=dict(arrowstyle="<|-|>", lw=0.5, color="k",
+                                                           shrinkA=0, shrinkB=0, mutation_scale=6))
+        bx = [p[0] for p in d.box]
+        by = [p[1] for p in d.box]
+        ang = math.degrees(math.atan2(d.p2[1] - d.p1[1], d.p2[0] - d.p1[0]))
+        if ang > 90.0 or ang <= -90.0:
+            ang += 180.0
+        ax.text((min(bx) + max(bx)) / 2, (min(by) + max(by)) / 2, d.text,
+                fontsize=3.2 * pt_per_mm, rotation=ang, rotation_mode="anchor", ha="center", va="center")
 
 
 def sliding_figure(pair):

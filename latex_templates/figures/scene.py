@@ -25,6 +25,7 @@ from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..parts import active
 from . import new_figure
+from .labels import names
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
 #: caption).
@@ -147,22 +148,35 @@ def _lines(scene: Scene) -> list:
     return out
 
 
-def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
-           lines: list | None = None):
-    """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
-    scene's middle first), or beside the middle of a vector on either side."""
-    w, h = size
-    cands: list[tuple[float, float]] = []
-    if lb.role == "vector" and lb.along is not None and lb.leader:
-        p = np.asarray(lb.at)
+def _leader_candidates(lb: Label, w: float, h: float, gap: float,
+                       offs: tuple[float, ...] = (4.0, 6.0, 8.0, 11.0)) -> list[tuple[float, float]]:
+    """Centres round the anchor (a point, or the middle of a vector: across it first) for a label
+    on a leader."""
+    p = np.asarray(lb.at)
+    if lb.along is not None:
         a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
         d = b - a
         base = math.atan2(d[0], -d[1])             # across the vector
-        for off in (4.0, 6.0, 8.0, 11.0):
-            for k in range(16):
-                ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
-                cands.append((float(p[0] + math.cos(ang) * (w / 2 + gap * off)),
-                              float(p[1] + math.sin(ang) * (h / 2 + gap * off))))
+    else:
+        base = math.pi / 4
+    out = []
+    for off in offs:
+        for k in range(16):
+            ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
+            out.append((float(p[0] + math.cos(ang) * (w / 2 + gap * off)),
+                        float(p[1] + math.sin(ang) * (h / 2 + gap * off))))
+    return out
+
+
+def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
+           lines: list | None = None):
+    """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
+    scene's middle first), or beside the middle of a vector on either side; where every such box
+    hits one, farther out on a leader. Returns (centre, box, on a leader)."""
+    w, h = size
+    cands: list[tuple[float, float]] = []
+    if lb.role == "vector" and lb.along is not None and lb.leader:
+        cands = _leader_candidates(lb, w, h, gap)
     elif lb.role == "vector" and lb.along is not None:
         a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
         d = b - a
@@ -185,22 +199,26 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 t = min((w / 2) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
                         (h / 2) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
                 cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
-    best = None
-    for rank, c in enumerate(cands):
-        box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
-        if _boxes_hit(box, boxes):
-            continue
-        near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
-                and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
-        hits = sum(1 for s in near if _crosses(box, s))
-        if hits == 0:
-            return c, box
-        if best is None or (hits, rank) < best[0]:
-            best = ((hits, rank), c, box)
-    if best is not None:
-        return best[1], best[2]
+    passes = [(cands, lb.leader)]
+    if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
+        passes.append((_leader_candidates(lb, w, h, gap, (8.0, 11.0, 15.0, 20.0)), True))
+    for group, leader in passes:
+        best = None
+        for rank, c in enumerate(group):
+            box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+            if _boxes_hit(box, boxes):
+                continue
+            near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
+                    and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
+            hits = sum(1 for s in near if _crosses(box, s))
+            if hits == 0:
+                return c, box, leader
+            if best is None or (hits, rank) < best[0]:
+                best = ((hits, rank), c, box)
+        if best is not None:       # beside its entity, crossing the fewest lines, before a leader
+            return best[1], best[2], leader
     c = cands[0]
-    return c, (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+    return c, (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2), lb.leader
 
 
 def anchor_distance(lb: Label, b) -> float:
@@ -211,8 +229,11 @@ def anchor_distance(lb: Label, b) -> float:
     return _dist_box(lb.at, b)
 
 
-def place_labels(scene: Scene, r: float, roles: tuple[str, ...]) -> list[tuple[Label, tuple[float, float], PlacedLabel]]:
-    """The labels of ``roles`` placed for a figure at reduction ``r``: (label, centre, placed)."""
+def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
+                 sizes: dict[int, tuple[float, float]] | None = None) -> list[tuple[Label, tuple[float, float], PlacedLabel]]:
+    """The labels of ``roles`` placed for a figure at reduction ``r``: (label, centre, placed);
+    ``sizes``: a label's measured width and height (scene mm) by its index in ``scene.labels``,
+    else the estimate from its text."""
     h = LABEL_MM / r
     gap = 0.8 / r
     pts = np.array([lb.at for lb in scene.labels]) if scene.labels else np.zeros((1, 2))
@@ -220,12 +241,13 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...]) -> list[tuple[L
     out = []
     boxes: list = []
     lines = _lines(scene)
-    for lb in scene.labels:
+    for i, lb in enumerate(scene.labels):
         if lb.role not in roles:
             continue
-        c, b = _place(lb, _text_size(lb.text, h), boxes, centre, gap, lines)
+        size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
+        c, b, leader = _place(lb, size, boxes, centre, gap, lines)
         boxes.append(b)
-        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), lb.leader)))
+        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), leader)))
     return out
 
 
@@ -283,14 +305,28 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
             ax.plot([a[0], base[0]], [a[1], base[1]], color=colour, lw=lw, solid_capstyle="butt")
             ax.add_patch(MplPolygon([b, base + nrm * head / 6, base - nrm * head / 6], closed=True,
                                     facecolor=colour, edgecolor=colour, lw=0.3, zorder=3))
+    texts = {}
+    for lb, c, _pl in labels:
+        t = ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
+                    style="italic" if lb.role == "point" else "normal",
+                    color="tab:blue" if lb.role == "number" else "black", zorder=6)
+        texts[id(lb)] = names(t, *(lb.along if lb.role == "vector" and lb.along is not None else (lb.at,)))
+    # placed again with the sizes the renderer measures (the estimate misjudges indices and Cyrillic)
+    renderer = fig.canvas.get_renderer()
+    per_mm = fig.dpi / 25.4 * r                    # display units per scene mm
+    index = {id(lb): i for i, lb in enumerate(scene.labels)}
+    sizes = {}
+    for lb, _, _ in labels:
+        bb = texts[id(lb)].get_window_extent(renderer)
+        sizes[index[id(lb)]] = (bb.width / per_mm + 0.4 / r, bb.height / per_mm + 0.4 / r)
+    labels = place_labels(scene, r, roles, sizes)
     for lb, c, pl in labels:
-        if lb.leader:
+        texts[id(lb)].set_position((c[0], c[1]))
+        if pl.leader:           # the leader is part of what ties the label to its entity
             bx = min(max(lb.at[0], pl.box[0]), pl.box[2])
             by = min(max(lb.at[1], pl.box[1]), pl.box[3])
             ax.plot([bx, lb.at[0]], [by, lb.at[1]], color="0.3", lw=0.4)
-        ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
-                style="italic" if lb.role == "point" else "normal",
-                color="tab:blue" if lb.role == "number" else "black", zorder=6)
+            names(texts[id(lb)], (bx, by), lb.at, *(lb.along or ()))
     fig.reportgen_exact = True
     fig.reportgen_labels = tuple(pl for _, _, pl in labels)
     fig.reportgen_reduction = r

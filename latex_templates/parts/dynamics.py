@@ -19,13 +19,15 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import CalcRecord, Var, record
+from reportgen.dynamics.hub import hub_of
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
-from reportgen.scenes.numbering import diagram_label, first_step, sense, translated_diagram_labels
+from reportgen.scenes.dynamics import MU_J, MU_M, DynamicsScenes
+from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
 from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 from . import PartContent, tr, unit
 
-NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics")
+NEEDS = ("linkage", "model", "phi", "strokes", "kinematics", "analysed", "dynamics", "scenes")
 
 #: A force or couple whose power is below this share of the largest one is still shown (gravity of
 #: a light crank is small but is part of M_red); exactly zero ones (resistance off) are left out.
@@ -211,16 +213,34 @@ def _translates(lk, k: int) -> bool:
 def position_labels(res, positions: int) -> list[str]:
     """Names of the diagrams' positions (:func:`reportgen.scenes.numbering.diagram_labels`) in the
     note's language: the switching angles and the corners of the resistance law translated."""
-    return translated_diagram_labels(res, tr, positions)
+    words = {"н.р.х.": tr("dynamics.m48"), "к.р.х.": tr("dynamics.m49")}
+    out = []
+    for x in diagram_labels(res, positions):
+        if x in words:
+            x = words[x]
+        elif x.startswith("и") and x[1:].isdigit():
+            x = tr("dynamics.m19", corner=int(x[1:]))
+        out.append(x)
+    return out
 
 
-def graph_rows(res, labels: list[str]) -> list[list]:
+def _ordinates(scene, id_: str = "curve", axis: int = 1) -> list[float]:
+    """The ordinates (``axis`` 1) or abscissae (0) of a scene's polyline, mm as drawn."""
+    e = scene.entity(id_)
+    return [float(p[axis]) for p in e.points]
+
+
+def graph_rows(res, scenes: DynamicsScenes, labels: list[str]) -> list[list]:
+    """Table 3.1: φ1, M_red, and the lengths of sheet 3's diagrams (read from their scenes) at the
+    diagrams' positions."""
     g = res.graphical
+    y_M, y_A, y_E = (_ordinates(sc) for sc in (scenes.moment, scenes.work, scenes.energy))
+    x_J = _ordinates(scenes.wittenbauer, axis=0)
+    mu_M, mu_J = scenes.moment.scale(MU_M).value, scenes.wittenbauer.scale(MU_J).value
     rows = []
     for j in range(g.theta.size - 1):
         phi = math.degrees(float(np.mod(res.phi[0] + _sense(res) * g.theta[j], 2 * math.pi)))
-        rows.append([labels[j], phi, float(g.M_mm[j] * g.mu_M), float(g.M_mm[j]), float(g.a_mm[j]),
-                     float(g.e_mm[j]), float(g.j_mm[j] * g.mu_J), float(g.j_mm[j])])
+        rows.append([labels[j], phi, y_M[j] * mu_M, y_M[j], y_A[j], y_E[j], x_J[j] * mu_J, x_J[j]])
     return rows
 
 
@@ -228,29 +248,30 @@ def _sense(res) -> float:
     return sense(res)
 
 
-def scale_records(res) -> dict[str, CalcRecord | Var]:
-    g = res.graphical
-    L = Var("L", r"L_\varphi", float(g.x[-1]), "мм", Tex(tr("dynamics.m20")))
+def scale_records(scenes: DynamicsScenes) -> dict[str, CalcRecord | Var]:
+    """The scales of the diagrams as sheet 3 draws them (read from the scenes)."""
+    mo = scenes.moment
+    L = Var("L", r"L_\varphi", mo.values["L_phi"], "мм", Tex(tr("dynamics.m20")))
     mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("dynamics.m21"))
-    mu_M = Var("mu_M", r"\mu_M", g.mu_M, "Н·м/мм", tr("dynamics.m02"))
-    H = Var("H", "H", g.H, "мм", tr("dynamics.m03"))
+    mu_M = Var("mu_M", r"\mu_M", mo.scale(MU_M).value, "Н·м/мм", tr("dynamics.m02"))
+    H = Var("H", "H", mo.values["H"], "мм", tr("dynamics.m03"))
     mu_A = record(r"\mu_A", "mu_M * mu_phi * H", "Дж/мм", mu_M, H, mu_phi=mu_phi,
                   meaning=tr("dynamics.m22"))
-    k = Var("k", "k", float(g.enlargement), "", tr("dynamics.m04"))
+    k = Var("k", "k", scenes.energy.values["k"], "", tr("dynamics.m04"))
     mu_E = record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A,
                   meaning=tr("dynamics.m23"))
-    mu_J = Var("mu_J", r"\mu_J", g.mu_J, "кг·м²/мм", tr("dynamics.m05"))
+    mu_J = Var("mu_J", r"\mu_J", scenes.wittenbauer.scale(MU_J).value, "кг·м²/мм", tr("dynamics.m05"))
     return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
 
 
-def tangent_records(res, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
-    g = res.graphical
+def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
+    """ψmax, ψmin by the course's formula, KL measured on the Wittenbauer scene and J_fly from it."""
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
     psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
                      omega, delta, meaning=Tex(tr("dynamics.m50")), **common)
     psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
                      omega, delta, meaning=Tex(tr("dynamics.m51")), **common)
-    KL = Var("KL", "KL", g.KL_mm, "мм", Tex(tr("dynamics.m24")))
+    KL = Var("KL", "KL", scenes.wittenbauer.values["KL_mm"], "мм", Tex(tr("dynamics.m24")))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
                   mu_E=sc["mu_E"], meaning=tr("dynamics.m25"))
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}
@@ -366,7 +387,8 @@ def content(project) -> PartContent:
     from ..figures import dynamics as fig
     from ..numbers import num
     from ..render import Strings
-    from .kinematics import detail_position
+    from ..figures.scene import scene_figure
+    from .kinematics import detail_position, scene_caption
 
     res = project.dynamics
     kin = project.kinematics
@@ -380,32 +402,39 @@ def content(project) -> PartContent:
     positions = int(round(2 * math.pi / float(_first_step(res.graphical.theta))))
     labels = position_labels(res, positions)
     i_dyn = diagram_label(res, float(kin.phi[i]))
-    sc = scale_records(res)
-    tg = tangent_records(res, sc, omega, delta)
+    scenes = project.scenes.dynamics
+    sc = scale_records(scenes)
+    tg = tangent_records(scenes, sc, omega, delta)
     ex = exact_records(res, omega, delta)
     mz = merzalov_records(res, omega, delta)
     fw = flywheel_records(res, cast(CalcRecord, ex["J_ex"])) if res.exact.J_fly > 0 else None
     drv = drive_records(res)
     rows, omegas = method_rows(project, res)
     mot = motion_records(res)
+    fig_work = scene_figure(scenes.column_group())
+    fig_witt = scene_figure(scenes.wittenbauer_group())
+    fig_note = {"dyn_work": scene_caption(project, fig_work, 3), "dyn_wittenbauer": scene_caption(project, fig_witt, 3)}
+    hub = hub_of(res.M_drive, 2000.0 * res.flywheel.radius)          # the sketch's bore and keyway (sheet 3's)
     figures = {
-        "dyn_work": fig.work_figure(res, labels),
-        "dyn_wittenbauer": fig.wittenbauer_figure(res),
+        "dyn_work": fig_work,
+        "dyn_wittenbauer": fig_witt,
         "dyn_omega": fig.omega_figure(res, omegas),
-        "dyn_flywheel": fig.flywheel_figure(res.flywheel),
+        "dyn_flywheel": fig.flywheel_figure(res.flywheel, hub),
     }
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
     ctx = {
         "i": _position_ref(project, i, i_dyn, short=True), "i_ref": _position_ref(project, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
         "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle],
         "still": [Tex(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
-        "rows": graph_rows(res, labels), "positions": positions, "n_analysis": len(project.phi),
+        "rows": graph_rows(res, scenes, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(not x.isdigit() and x not in (tr("dynamics.m48"), tr("dynamics.m49")) for x in labels),
         "mz_diff": rows[1].J - rows[0].J, "gr_diff": rows[2].J - rows[0].J, "sc": sc, "tg": tg, "ex": ex, "mz": mz, "fw": fw,
         "drv": drv, "mot": mot, "methods": rows, "res": res, "g": res.graphical,
         "J_var": float(res.J_red.max() - res.J_red.min()), "J_mean": float(res.J_red.mean()),
-        "omega": omega, "delta": delta, "shape": res.flywheel.shape,
-        "index_K": labels[res.graphical.index_K], "index_L": labels[res.graphical.index_L],
+        "omega": omega, "delta": delta, "shape": res.flywheel.shape, "hub": hub,
+        "index_K": labels[int(scenes.wittenbauer.values["index_K"])],
+        "index_L": labels[int(scenes.wittenbauer.values["index_L"])], "fig_note": fig_note,
+        "fig_w": {k: f"{f.width_cm:.2f}cm" for k, f in (("dyn_work", fig_work), ("dyn_wittenbauer", fig_witt))},
         "theta_K": math.degrees(res.exact.theta_K), "theta_L": math.degrees(res.exact.theta_L),
         "J_zero": res.exact.J_fly <= 0,
         "angles": angle_table(project),

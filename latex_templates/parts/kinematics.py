@@ -9,13 +9,12 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import Var, record
-from reportgen.diagrams import build_diagrams
 from reportgen.plans import MEASURE_MM
 
 from . import PartContent, tr
 
 NEEDS = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
-         "scenes")
+         "plan_positions", "plans_by_position", "scenes", "output_diagrams")
 
 
 def available(project) -> bool:
@@ -74,7 +73,6 @@ def _epsilon_records(kin, i: int, k: int, aplan, rel: str, segt_symbol: str, lv:
 
 
 def content(project) -> PartContent:
-    from ..figures.plans import diagrams_figure
     from ..figures.scene import scene_figure
 
     lk, st, kin = project.linkage, project.structure, project.kinematics
@@ -84,7 +82,6 @@ def content(project) -> PartContent:
     crank = lk.bodies[d]
     l_crank = _len(crank, axis, tip)
     w1 = abs(lk.omega)
-    vplan, aplan = project.plans
     scenes = project.scenes
     figures = {}
     # --- plan of positions ----------------------------------------------------------------------
@@ -125,6 +122,98 @@ def content(project) -> PartContent:
     for j, ph in enumerate(kin.phi):
         out_rows.append([j, math.degrees(ph) % 360, float(s_out[j])] +
                         [float(kin.transmission_deg[g.key][j]) for g in st.groups[1:]])
+    # --- velocity and acceleration plans of every plan position (the analysed one first) --------
+    plan_ctx = []
+    for j in project.plan_positions:
+        ctx_j, figs_j = _plan_context(project, j, first=(j == i))
+        plan_ctx.append(ctx_j)
+        figures.update(figs_j)
+    first = plan_ctx[0]
+    # --- tables over all positions ---------------------------------------------------------------
+    moving = [k for k in lk.moving if k != d]
+    vtab, atab = [], []
+    for j in range(len(kin.phi)):
+        vtab.append([j, math.degrees(kin.phi[j]) % 360] +
+                    [float(np.hypot(*np.asarray(kin.coms[k].vel[j]))) for k in moving] +
+                    [float(kin.links[k].omega[j]) for k in moving if not _translates(lk, k)])
+        atab.append([j, math.degrees(kin.phi[j]) % 360] +
+                    [float(np.hypot(*np.asarray(kin.coms[k].acc[j]))) for k in moving] +
+                    [float(kin.links[k].epsilon[j]) for k in moving if not _translates(lk, k)])
+    rot_links = [k for k in moving if not _translates(lk, k)]
+    omega_eps_rows = []
+    if control:
+        sense = lambda x: tr("control.note.ccw" if x > 0 else "control.note.cw") if x != 0 else "---"  # noqa: E731
+        for k in [d] + rot_links:
+            w, e = float(kin.links[k].omega[i]), float(kin.links[k].epsilon[i])
+            omega_eps_rows.append([k, abs(w), sense(w), abs(e), sense(e)])
+    # --- diagrams ------------------------------------------------------------------------------
+    diag = None
+    if strokes is not None:
+        dg = project.output_diagrams
+        dg_scene = project.scenes.output_diagrams
+        assert dg is not None and dg_scene is not None     # the output has strokes
+        figures["kin_diagrams"] = scene_figure(dg_scene)
+        omega1 = Var("omega1", r"\omega_1", w1, "рад/с", tr("kinematics.m03"))
+        L = Var("L", "L", dg_scene.values["L"], "мм", Tex(tr("kinematics.m21")))
+        mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("kinematics.m22"))
+        mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning=tr("kinematics.m23"))
+        H1 = Var("H1", "H_1", dg_scene.values["H1"], "мм", tr("kinematics.m16"))
+        H2 = Var("H2", "H_2", dg_scene.values["H2"], "мм", tr("kinematics.m17"))
+        unit_s = "м/мм" if dg.unit == "м" else "рад/мм"
+        mu_s = Var("mu_s", r"\mu_s", dg_scene.scales[0].value, unit_s, tr("kinematics.m18"))
+        mu_vd = record(r"\mu_{v}", "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
+                       mu_s, H1, mu_t=mu_t, meaning=tr("kinematics.m24"))
+        mu_ad = record(r"\mu_{a}", "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
+                       H2, mu_v=mu_vd, mu_t=mu_t, meaning=tr("kinematics.m25"))
+        diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "n": dg.n,
+                "dev_v": 100 * dg.v_deviation, "dev_a": 100 * dg.a_deviation, "unit": dg.unit,
+                "vmax": float(np.abs(dg.v).max()), "amax": float(np.abs(dg.a).max())}
+    scene_figs = (("kin_positions", fig_pos), ("kin_vplan", figures["kin_vplan"]), ("kin_aplan", figures["kin_aplan"])) + \
+        ((("kin_diagrams", figures["kin_diagrams"]),) if "kin_diagrams" in figures else ())
+    fig_w = {name: f"{f.width_cm:.2f}cm" for name, f in scene_figs}
+    fig_note = {name: scene_caption(project, f) for name, f in scene_figs}
+    trans = [{"key": g.key, "label": g.label, "min": float(np.min(kin.transmission_deg[g.key])),
+              "at": int(np.argmin(kin.transmission_deg[g.key]))} for g in st.groups[1:]]
+    ctx = {
+        "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi), "control": control, "omega_eps_rows": omega_eps_rows,
+        "mu_l": mu_l, "OA_mm": OA_mm, "fig_w": fig_w, "fig_note": fig_note, "scale_ratio": positions.scale("μl").ratio, "strokes": stroke_ctx, "out_rows": out_rows,
+        "groups": [g.label for g in st.groups[1:]],
+        **{k: first[k] for k in _PLAN_KEYS},      # the analysed position's plans, as before
+        "plans": plan_ctx,
+        "moving": moving, "rot_links": rot_links, "vtab": vtab, "atab": atab,
+        "diag": diag, "trans": trans, "dense_trans": dense_trans,
+        "near": [{"pos": j, "group": g, "mu": mu} for j, g, mu in kin.near_singular],
+        "tip": tip, "axis": axis,
+    }
+    concl = []
+    if stroke_ctx and strokes is not None:
+        from ..numbers import num
+        from ..render import Strings
+        strings = Strings(project.task.document.language or "ru")
+        concl.append(strings.get("findings.strokes").format(
+            work=Tex(num(strokes.working_deg)), idle=Tex(num(strokes.idle_deg)),
+            K=Tex(num(stroke_ctx["K"].value))))
+    return PartContent("sections/kinematics.tex.j2", ctx, figures, tuple(concl))
+
+
+#: Keys of a plan position's context that the part's context also holds for the analysed position.
+_PLAN_KEYS = ("VA", "mu_v", "pa_mm", "pia_mm", "vplan", "vrows", "omega", "aA", "mu_a", "aplan", "arows", "an",
+              "cor", "eps", "com_rows", "equations_v", "equations_a", "max_dev_v", "max_dev_a")
+
+
+def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
+    """The note's context of the plans of plan position ``i`` (``project.plans_by_position``: the
+    calculations of section 1's velocity and acceleration plans) and their figures, named
+    ``kin_vplan``/``kin_aplan`` for the analysed position (``first``), ``kin_vplan_<i>`` else."""
+    from reportgen.plan_positions import stroke_of
+    from ..figures.scene import scene_figure
+    lk, st, kin = project.linkage, project.structure, project.kinematics
+    d = lk.drive_link
+    axis, tip = lk.drive_axis, lk.drive_tip
+    l_crank = _len(lk.bodies[d], axis, tip)
+    w1 = abs(lk.omega)
+    vplan, aplan = project.plans_by_position[i]
+    l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", tr("kinematics.m02", axis=axis, tip=tip))
     # --- velocities -----------------------------------------------------------------------------
     omega1 = Var("omega1", r"\omega_1", w1, "рад/с", tr("kinematics.m03"))
     VA = record(f"V_{{{tip}}}", "omega1 * l_OA", "м/с", omega1, l_oa, meaning=tr("kinematics.m12", tip=tip))
@@ -194,74 +283,23 @@ def content(project) -> PartContent:
     pia = Var("pia", f"\\pi {tip.lower()}", aA.value / aplan.scale, "мм", tr("kinematics.m05", tip=tip))
     mu_a = record(r"\mu_a", "a_A / pia", "(м/с²)/мм", pia, a_A=aA, meaning=tr("kinematics.m15"))
     arows = _plan_rows(aplan)
-    # --- tables over all positions ---------------------------------------------------------------
-    moving = [k for k in lk.moving if k != d]
-    vtab, atab = [], []
-    for j in range(len(kin.phi)):
-        vtab.append([j, math.degrees(kin.phi[j]) % 360] +
-                    [float(np.hypot(*np.asarray(kin.coms[k].vel[j]))) for k in moving] +
-                    [float(kin.links[k].omega[j]) for k in moving if not _translates(lk, k)])
-        atab.append([j, math.degrees(kin.phi[j]) % 360] +
-                    [float(np.hypot(*np.asarray(kin.coms[k].acc[j]))) for k in moving] +
-                    [float(kin.links[k].epsilon[j]) for k in moving if not _translates(lk, k)])
-    rot_links = [k for k in moving if not _translates(lk, k)]
-    omega_eps_rows = []
-    if control:
-        sense = lambda x: tr("control.note.ccw" if x > 0 else "control.note.cw") if x != 0 else "---"  # noqa: E731
-        for k in [d] + rot_links:
-            w, e = float(kin.links[k].omega[i]), float(kin.links[k].epsilon[i])
-            omega_eps_rows.append([k, abs(w), sense(w), abs(e), sense(e)])
-    # --- diagrams ------------------------------------------------------------------------------
-    diag = None
-    if strokes is not None:
-        dg = build_diagrams(project.model, strokes, float(project.phi[0]), n=24)
-        figures["kin_diagrams"] = diagrams_figure(dg)
-        L = Var("L", "L", dg.axis_mm, "мм", Tex(tr("kinematics.m21")))
-        mu_phi = record(r"\mu_\varphi", "2 * pi / L", "рад/мм", L, meaning=tr("kinematics.m22"))
-        mu_t = record(r"\mu_t", "mu_phi / omega1", "с/мм", omega1, mu_phi=mu_phi, meaning=tr("kinematics.m23"))
-        H1 = Var("H1", "H_1", dg.H1, "мм", tr("kinematics.m16"))
-        H2 = Var("H2", "H_2", dg.H2, "мм", tr("kinematics.m17"))
-        unit_s = "м/мм" if dg.unit == "м" else "рад/мм"
-        mu_s = Var("mu_s", r"\mu_s", dg.mu_s, unit_s, tr("kinematics.m18"))
-        mu_vd = record(r"\mu_{v}", "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
-                       mu_s, H1, mu_t=mu_t, meaning=tr("kinematics.m24"))
-        mu_ad = record(r"\mu_{a}", "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
-                       H2, mu_v=mu_vd, mu_t=mu_t, meaning=tr("kinematics.m25"))
-        diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "n": dg.n,
-                "dev_v": 100 * dg.v_deviation, "dev_a": 100 * dg.a_deviation, "unit": dg.unit,
-                "vmax": float(np.abs(dg.v).max()), "amax": float(np.abs(dg.a).max())}
-    fig_v = scene_figure(scenes.velocity_plan)
-    fig_a = scene_figure(scenes.acceleration_plan)
-    figures["kin_vplan"] = fig_v
-    figures["kin_aplan"] = fig_a
-    fig_w = {name: f"{f.width_cm:.2f}cm" for name, f in
-             (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a))}
-    fig_note = {name: scene_caption(project, f) for name, f in
-                (("kin_positions", fig_pos), ("kin_vplan", fig_v), ("kin_aplan", fig_a))}
-    trans = [{"key": g.key, "label": g.label, "min": float(np.min(kin.transmission_deg[g.key])),
-              "at": int(np.argmin(kin.transmission_deg[g.key]))} for g in st.groups[1:]]
-    ctx = {
-        "i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "n_pos": len(kin.phi), "control": control, "omega_eps_rows": omega_eps_rows,
-        "mu_l": mu_l, "OA_mm": OA_mm, "fig_w": fig_w, "fig_note": fig_note, "scale_ratio": positions.scale("μl").ratio, "strokes": stroke_ctx, "out_rows": out_rows,
-        "groups": [g.label for g in st.groups[1:]],
-        "VA": VA, "mu_v": mu_v, "pa_mm": pa_mm, "pia_mm": aA.value / aplan.scale, "vplan": vplan, "vrows": vrows, "omega": omega_recs,
-        "aA": aA, "mu_a": mu_a, "aplan": aplan, "arows": arows, "an": an_recs, "cor": cor_recs, "eps": eps_recs,
-        "com_rows": com_rows, "moving": moving, "rot_links": rot_links, "vtab": vtab, "atab": atab,
-        "diag": diag, "trans": trans, "dense_trans": dense_trans,
-        "near": [{"pos": j, "group": g, "mu": mu} for j, g, mu in kin.near_singular],
-        "tip": tip, "axis": axis, "equations_v": vplan.equations, "equations_a": aplan.equations,
-        "max_dev_v": max((abs(r["dev"]) for r in vrows), default=0.0),
-        "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0),
-    }
-    concl = []
-    if stroke_ctx and strokes is not None:
-        from ..numbers import num
-        from ..render import Strings
-        strings = Strings(project.task.document.language or "ru")
-        concl.append(strings.get("findings.strokes").format(
-            work=Tex(num(strokes.working_deg)), idle=Tex(num(strokes.idle_deg)),
-            K=Tex(num(stroke_ctx["K"].value))))
-    return PartContent("sections/kinematics.tex.j2", ctx, figures, tuple(concl))
+    suffix = "" if first else f"-{i}"
+    fv, fa = ("kin_vplan", "kin_aplan") if first else (f"kin_vplan_{i}", f"kin_aplan_{i}")
+    fig_v = scene_figure(project.scenes.velocity_plans[i])
+    fig_a = scene_figure(project.scenes.acceleration_plans[i])
+    sgn = 1.0 if project.model.omega >= 0 else -1.0
+    ctx = {"i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "suffix": suffix,
+           "stroke": stroke_of(float(kin.phi[i]), project.strokes if project.full_cycle else None, sgn),
+           "control": project.task.document.kind == "control-work", "tip": tip, "axis": axis,
+           "fig_v": fv, "fig_a": fa, "fig_w_v": f"{fig_v.width_cm:.2f}cm", "fig_w_a": f"{fig_a.width_cm:.2f}cm",
+           "fig_note_v": scene_caption(project, fig_v), "fig_note_a": scene_caption(project, fig_a),
+           "VA": VA, "mu_v": mu_v, "pa_mm": pa_mm, "pia_mm": aA.value / aplan.scale, "vplan": vplan, "vrows": vrows,
+           "omega": omega_recs, "aA": aA, "mu_a": mu_a, "aplan": aplan, "arows": arows, "an": an_recs,
+           "cor": cor_recs, "eps": eps_recs, "com_rows": com_rows,
+           "equations_v": vplan.equations, "equations_a": aplan.equations,
+           "max_dev_v": max((abs(r["dev"]) for r in vrows), default=0.0),
+           "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0)}
+    return ctx, {fv: fig_v, fa: fig_a}
 
 
 def _translates(lk, k: int) -> bool:

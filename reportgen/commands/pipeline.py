@@ -1,8 +1,9 @@
 """The stages of ``reportgen build`` and how they overlap (the build's critical path).
 
-    main process   task → solve → note (sections, figures, report.tex) ─ results.json ─ join ─ join
-    sheets         (forked after solve)      sheet 1 … sheet n: DXF + PNG preview ────┘      │
-    LaTeX          (started when report.tex is written)  latexmk + xelatex ──────────────────┘
+    main process   task → solve → note's sections, report.tex → figures (share 1) ─ results.json ─ join ─ join
+    figures                                       (forked) figures (share 2) ─┘                    │      │
+    sheets         (forked after solve, nice 3)  sheet 1 … sheet n: DXF + PNG preview ─────────────┘      │
+    LaTeX          (started when report.tex and the figures are written)  latexmk + xelatex ──────────────┘
 
 The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
 the sheets are drawn in a forked child process while the main process composes the note, and
@@ -27,6 +28,9 @@ from ..errors import BuildError
 from ..project import Needs
 
 MAIN, SHEETS, LATEX = "main", "sheets", "LaTeX"
+#: How much lower the sheets' process runs than the note's (``os.nice``): they wait for the
+#: processors the note's figures and xelatex leave free, which shortens the build's critical path.
+SHEETS_NICENESS = 3
 
 
 @dataclass(frozen=True)
@@ -102,7 +106,7 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
         results = build_results(project)
     task = project.task
     todo = _sheet_list(project) if sheets else []
-    child = _SheetsChild.start(project, tmp, todo, cache) if todo and parallel_possible() else None
+    child = _Child.start(project, tmp, todo, cache) if todo and parallel_possible() else None
     pending = None
     try:
         if (task.mechanism is not None or task.gears is not None or task.planetary is not None
@@ -147,7 +151,23 @@ def _sheet_list(project: Any) -> list[tuple[str, Any]]:
 
 
 def _note(project: Any, tmp: Path, timeline: Timeline) -> Path:
-    """Compose the sections, save the figures and write report.tex (once)."""
+    """Compose the sections and write report.tex (once), then save the figures it refers to
+    (split over two processes where there is a second processor)."""
+    from latex_templates.figures.saving import queued
+
+    with queued() as figures:
+        tex = _note_text(project, tmp, timeline)
+    with timeline.stage("note: figures"):
+        figures.save(fork=_fork_figures if parallel_possible() else None)
+    return tex
+
+
+def _fork_figures(work: Any) -> "_Child":
+    return _Child.fork(work, "note's figures")
+
+
+def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
+    """Compose the sections (their figures drawn, queued for saving) and write report.tex."""
     from latex_templates import NoteBuilder
     from latex_templates.assignment import assignment_section, introduction_paragraphs
     from latex_templates.compose import compose
@@ -155,9 +175,9 @@ def _note(project: Any, tmp: Path, timeline: Timeline) -> Path:
 
     if getattr(project.task, "kind", "") == "crane":       # the crane note (docs/crane.md)
         from latex_templates.parts.crane_document import note_builder
-        with timeline.stage("note: sections and figures"):
+        with timeline.stage("note: sections"):
             return note_builder(project).render(tmp)
-    with timeline.stage("note: sections and figures"):
+    with timeline.stage("note: sections"):
         strings = Strings(project.task.document.language or "ru")
         sections, left_out = compose(project, strings)
         note = NoteBuilder(project.task.document, designation=strings.designation(project.task.document),
@@ -214,19 +234,34 @@ def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any
         yield Span(name, lane, t0, time.perf_counter())
 
 
-# -- the sheets' child process ---------------------------------------------------------------------
+# -- child processes (the sheets, a share of the figures) ------------------------------------------
 
-class _SheetsChild:
-    """A forked process that draws the sheets into ``tmp/sheets`` and sends back its spans, or the
-    exception that stopped it (re-raised in the parent with its class and fields)."""
+class _Child:
+    """A forked process that does one part of the build (the sheets into ``tmp/sheets``, a share of
+    the note's figures) and sends back its result, or the exception that stopped it (re-raised in
+    the parent with its class and fields)."""
 
-    def __init__(self, pid: int, fd: int) -> None:
+    def __init__(self, pid: int, fd: int, stage: str = "sheets") -> None:
         self.pid = pid
         self.fd = fd
+        self.stage = stage
 
     @classmethod
-    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any) -> "_SheetsChild":
+    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any) -> "_Child":
+        """Draw the sheets in a child process."""
         (tmp / "sheets").mkdir(exist_ok=True)
+
+        def work() -> list[Span]:
+            # the sheets are off the critical path (solve → note → LaTeX): let the scheduler give
+            # the note's processes and xelatex the processors first, the sheets the time left over
+            _lower_priority(SHEETS_NICENESS)
+            return list(draw_sheets(project, tmp, todo, cache))
+
+        return cls.fork(work, "sheets")
+
+    @classmethod
+    def fork(cls, work: Any, stage: str = "sheets") -> "_Child":
+        """Run ``work()`` in a forked child; :meth:`join` returns its (picklable) result."""
         r, w = os.pipe()
         sys.stdout.flush()
         sys.stderr.flush()
@@ -237,7 +272,7 @@ class _SheetsChild:
             try:
                 signal.signal(signal.SIGINT, signal.SIG_DFL)
                 try:
-                    payload: tuple[str, Any] = ("ok", list(draw_sheets(project, tmp, todo, cache)))
+                    payload: tuple[str, Any] = ("ok", work())
                 except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
                     payload = ("error", _portable(exc))
                 data = pickle.dumps(payload)
@@ -248,16 +283,16 @@ class _SheetsChild:
             finally:
                 os._exit(status)
         os.close(w)
-        return cls(pid, r)
+        return cls(pid, r, stage)
 
-    def join(self) -> list[Span]:
+    def join(self) -> Any:
         with os.fdopen(self.fd, "rb") as f:
             data = f.read()
         _, status = os.waitpid(self.pid, 0)
         self.pid = 0
         if not data:
-            raise BuildError("sheets", f"the process drawing the sheets ended without a result "
-                                       f"(wait status {status})")
+            raise BuildError(self.stage, f"the process working on the {self.stage} ended without a "
+                                         f"result (wait status {status})")
         kind, value = pickle.loads(data)
         if kind == "ok":
             return value
@@ -275,6 +310,13 @@ class _SheetsChild:
             except OSError:
                 pass
             self.pid = 0
+
+
+def _lower_priority(increment: int) -> None:
+    try:
+        os.nice(increment)
+    except (AttributeError, OSError):   # no nice() on this system, or not allowed: same priority
+        pass
 
 
 def _portable(exc: BaseException) -> tuple[str, str, str, dict[str, Any]]:

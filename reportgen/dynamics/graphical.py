@@ -25,8 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from ..scenes.boxes import DEFAULT as DEFAULT_BOXES
-from ..scenes.boxes import GraphLayout  # noqa: F401  (the room of the diagrams; defined with the other boxes)
+from ..scenes.boxes import GraphLayout
 from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle
 from ..geometry import readonly as _ro
@@ -146,9 +145,10 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
                 J_fly=flywheel_from_KL(KL, mu_E, wm, delta), scales=s)
 
 
-def graphical_replica(cycle: Cycle, delta: float, positions: int = 12,
-                      layout: GraphLayout = DEFAULT_BOXES.diagrams) -> GraphicalReplica:
-    """The sheet's construction at ``positions`` equal steps (plus the break angles)."""
+def graphical_replica(cycle: Cycle, delta: float, positions: int = 12, *, layout: GraphLayout) -> GraphicalReplica:
+    """The sheet's construction at ``positions`` equal steps (plus the break angles), its scales
+    chosen for the room ``layout`` (``project.boxes.diagrams``: the caller passes it, the solver
+    holds no sheet's boxes)."""
     theta = replica_positions(cycle, positions)
     c = _construct(cycle, theta, delta, layout)
     scales = c.pop("scales")

@@ -10,7 +10,6 @@ from .cycle import TWO_PI, Cycle, ProjectCycle
 from .energy import EnergyProfile
 from .errors import DynamicsInputError
 from .flywheel import flywheel_size
-from ..scenes.boxes import DEFAULT as DEFAULT_BOXES
 from .graphical import GraphLayout, graphical_replica
 from .motion import steady_motion
 from .quadrature import DEFAULT_ORDER
@@ -32,7 +31,7 @@ def check_delta(delta: float) -> float:
 
 def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: str = "disk",
                 density: float = 7860.0, width_ratio: float = 1.0, crank_inertia: float = 0.0,
-                graphical_positions: int = 12, layout: GraphLayout | None = None,
+                graphical_positions: int = 12, layout: GraphLayout,
                 order: int = DEFAULT_ORDER, phi_of=None, profile: EnergyProfile | None = None) -> DynamicsResult:
     """The flywheel calculation of any cycle (a project's or an analytic one); ``profile``: ΔE of
     this cycle on the same grid, when the caller has it already."""
@@ -45,7 +44,7 @@ def solve_cycle(cycle: Cycle, delta: float, n: int = MIN_POSITIONS, *, shape: st
     A = prof.A_nodes[idx]
     red = cycle.reduced(theta)
     ex, mz = wittenbauer_and_merzalov(cycle, prof, delta)
-    gr = graphical_replica(cycle, delta, graphical_positions, layout or DEFAULT_BOXES.diagrams)
+    gr = graphical_replica(cycle, delta, graphical_positions, layout=layout)
     J_fly = max(ex.J_fly, 0.0)
     motion = steady_motion(cycle, prof, J_fly, theta, delta)
     fw = flywheel_size(J_fly, shape, density, width_ratio)

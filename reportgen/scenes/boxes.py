@@ -18,12 +18,17 @@ class GraphLayout:
     e_height: float = 80.0        # span of ΔE
     j_width: float = 160.0        # largest J_red (from J = 0)
     pole_step: float = 10.0       # H is a multiple of this
+    omega_height: float = 36.0    # largest |ω − ω_m| (or the band) of ω(φ)
 
 
 @dataclass(frozen=True)
 class SceneBoxes:
     #: Sheet 1: the drawing of the mechanism (the scheme view less its label and caption margins).
     scheme: tuple[float, float] = (470.0 - 28.0 - 28.0, 400.0 - 36.0 - 38.0)
+    #: Sheet 1: no point of the plans of a plan position other than the analysed one stands farther
+    #: than this from the pole, mm (a coarser round μ if it would; the analysed position's plans keep
+    #: the scales of :func:`reportgen.plans.build_plans`), so that both stroke's plans find room.
+    other_plan_mm: float = 120.0
     #: Sheet 2: the longest vector of a force polygon or of the lever's plan, mm; the extent
     #: (diagonal) of the mechanism on the scheme of section 2, mm.
     polygon_mm: float = 200.0

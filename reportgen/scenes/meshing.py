@@ -6,10 +6,16 @@ from dataclasses import dataclass
 
 from ..gears.meshing import GOST_SCALES, MeshingPicture, meshing_picture
 
-#: The window of the meshing picture on the left half of sheet 4, sheet mm (inside its padding).
-WINDOW_W = 375.0
-WINDOW_H = 395.0
+#: The view of the meshing picture on the left of sheet 4, sheet mm: the whole height of the
+#: sheet; the picture (teeth, circles' arcs and both centres) fits inside it less the padding, the
+#: caption's strip and a margin on each side for the designations' leaders and the dimension aw.
+VIEW_W = 390.0
+VIEW_H = 560.0
 PADDING = 10.0
+CAPTION = 8.0
+LABEL_MARGIN = 35.0
+WINDOW_W = VIEW_W - 2 * PADDING - 2 * LABEL_MARGIN
+WINDOW_H = VIEW_H - 2 * PADDING - CAPTION
 
 
 @dataclass(frozen=True)
@@ -40,6 +46,28 @@ def meshing_scale(pair, pic: MeshingPicture | None = None,
         if (x1 - x0) * k <= window[0] and (y1 - y0) * k <= window[1]:
             return DrawingScale(k)
     return DrawingScale(GOST_SCALES[-1])
+
+
+def model_centre(pair, pic: MeshingPicture) -> tuple[float, float]:
+    """The real point drawn at the centre of the view's window."""
+    x0, y0, x1, y1 = model_bounds(pair, pic)
+    return ((x0 + x1) / 2, (y0 + y1) / 2)
+
+
+def label_room(pair, pic: MeshingPicture, scale: DrawingScale) -> tuple[float, float, float, float]:
+    """The room (real mm) the designations may take: the view less its padding and caption."""
+    cx, cy = model_centre(pair, pic)
+    k = scale.factor
+    hw = (VIEW_W - 2 * PADDING) / 2 / k
+    hh = (VIEW_H - 2 * PADDING - CAPTION) / 2 / k
+    return (cx - hw, cy - hh, cx + hw, cy + hh)
+
+
+def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
+    """The designations of the picture at the sheet's scale (the note draws the same ones)."""
+    from .meshing_marks import place_marks
+    scale = scale if scale is not None else meshing_scale(pair, pic)
+    return place_marks(pair, pic, scale.factor, label_room(pair, pic, scale))
 
 
 def ab_on_sheet(pic: MeshingPicture, scale: DrawingScale) -> float:

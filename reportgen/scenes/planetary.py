@@ -2,14 +2,18 @@
 note's figure (:func:`latex_templates.figures.gears.planetary_figure`) and sheet 4
 (:mod:`drawings.scenes.planetary_dxf`). Pure: no plotting, no DXF.
 
-Side view (the usual kinematic scheme): the central axis is horizontal at y = 0, wheels are vertical
-segments of their pitch diameter at the drawing's length scale k, so the mesh points sit at the
-heights y = k·r that Kutzbach's velocity triangle (:mod:`reportgen.planetary.velocity`) uses: A
-(wheel 1 – planet 2) at k·r1, B (planet axis) at k·a, C (planet – wheel 3) at k·r3. Only the upper
-planet is drawn in the side view (the others are in the front view), as course schemes do.
+Side view (the kinematic scheme in section through the axis, ГОСТ 2.770): the central axis is
+horizontal at y = 0, wheels are segments of their pitch diameter with the rims' ticks at the
+drawing's length scale k, so the mesh points sit at the heights y = k·r that Kutzbach's velocity
+triangle (:mod:`reportgen.planetary.velocity`) uses: A (wheel 1 – planet 2) at k·r1, B (planet
+axis) at k·a, C (planet – wheel 3) at k·r3. The satellites above and below the axis turn on their
+axles (bearings) in the carrier H; the input and output shafts run in bearings in the housing's
+walls; the fixed wheel 3 is part of the hatched housing. Each line carries the ``part`` it draws
+(wheel1, satellite, ring, housing, bearing, shaft, carrier), which the tests read.
 
 Front view: the wheels as pitch circles about the central axis, K planets equally spaced on the
-carrier circle of radius k·a, the carrier arms as thick lines.
+carrier circle of radius k·a (two of them on a diagonal, clear of the axes through wheel 1), the
+carrier arms as thick lines.
 """
 from __future__ import annotations
 
@@ -31,6 +35,7 @@ HATCH = 3.0           # length of a hatch stroke, sheet mm
 class SceneLine:
     points: tuple[Point, ...]
     layer: str = "contour"      # contour | thin | axis | hidden
+    part: str = ""              # what it draws: wheel1, satellite, ring, housing, bearing, shaft, carrier
 
 
 @dataclass(frozen=True)
@@ -38,6 +43,7 @@ class SceneCircle:
     centre: Point
     radius: float
     layer: str = "contour"
+    part: str = ""
 
 
 @dataclass(frozen=True)
@@ -55,12 +61,16 @@ class Scene:
     arrows: list[tuple[Point, Point, str]] = field(default_factory=list)    # vectors with a tip label
     marks: dict[str, Point] = field(default_factory=dict)    # named points (A, B, C, axis ends)
 
-    def line(self, *pts: Point, layer: str = "contour") -> None:
-        self.lines.append(SceneLine(tuple((float(x), float(y)) for x, y in pts), layer))
+    def line(self, *pts: Point, layer: str = "contour", part: str = "") -> None:
+        self.lines.append(SceneLine(tuple((float(x), float(y)) for x, y in pts), layer, part))
 
-    def ground(self, p: Point, q: Point, side: float = 1.0, step: float = 3.0) -> None:
+    def parts(self, part: str) -> list[SceneLine]:
+        """The lines that draw ``part``."""
+        return [ln for ln in self.lines if ln.part == part]
+
+    def ground(self, p: Point, q: Point, side: float = 1.0, step: float = 3.0, part: str = "housing") -> None:
         """A hatched fixed base along p–q; strokes on the ``side`` (+1: left of p→q)."""
-        self.line(p, q, layer="contour")
+        self.line(p, q, layer="contour", part=part)
         L = math.dist(p, q)
         ux, uy = (q[0] - p[0]) / L, (q[1] - p[1]) / L
         nx, ny = -uy * side, ux * side
@@ -85,16 +95,38 @@ class Scene:
         return min(xs), min(ys), max(xs), max(ys)
 
 
-def _wheel_external(s: Scene, x: float, y0: float, r: float) -> None:
-    """An external wheel about the height y0: vertical segment of its pitch diameter, rim ticks."""
-    s.line((x, y0 - r), (x, y0 + r))
+def _wheel_external(s: Scene, x: float, y0: float, r: float, part: str) -> None:
+    """An external wheel about the height y0 (ГОСТ 2.770): a segment of its pitch diameter across
+    its shaft with the rim's ticks at both ends."""
+    s.line((x, y0 - r), (x, y0 + r), part=part)
     for y in (y0 - r, y0 + r):
-        s.line((x - FACE, y), (x + FACE, y))
+        s.line((x - FACE, y), (x + FACE, y), part=part)
+
+
+def _bearing(s: Scene, x: float, y: float, support: float | None = None) -> None:
+    """A radial rolling bearing on a shaft at height ``y`` (ГОСТ 2.770: the outer ring's strokes
+    parallel to the shaft on both sides, the rolling element between); ``support`` the height
+    (absolute, same sign as the side) of the wall the upper and lower rings are fixed to."""
+    for sg in (1, -1):
+        yo = y + sg * BEARING_GAP
+        s.line((x - BEARING_LEN / 2, yo), (x + BEARING_LEN / 2, yo), part="bearing")
+        s.circles.append(SceneCircle((x, y + sg * BEARING_GAP / 2), BEARING_GAP / 2 - 0.4, "thin", "bearing"))
+        if support is not None and sg * (support - yo) > 0 and abs(support) > abs(yo):
+            s.line((x, yo), (x, support if sg > 0 else -support), part="housing")
+
+
+BEARING_LEN = 7.0     # length of a bearing's ring stroke, sheet mm
+BEARING_GAP = 3.0     # distance of the ring stroke from the shaft, sheet mm
+WALL = 14.0           # distance of a housing wall from the nearest wheel or carrier, sheet mm
 
 
 def side_scheme(design, k: float) -> Scene:
     """The kinematic scheme of ``design`` (``module`` needed) at length scale ``k`` (sheet mm per
-    real mm); wheel 1 is driven from the left, the carrier H gives the output to the right."""
+    real mm), ГОСТ 2.770 symbols, in section through the axis: the input shaft from the left on its
+    bearing in the housing's wall, wheel 1 on it; the satellite blocks (2, 2′) above and below the
+    axis at the carrier radius, each turning on its axle (a bearing) fixed in the carrier H; the
+    carrier's output shaft to the right on its bearing; the fixed wheel 3 part of the housing,
+    drawn whole (above and below) with the housing hatched."""
     m = design.module
     sch = design.scheme
     z1, z2, z2p, z3 = expand(sch, design.z)
@@ -104,48 +136,63 @@ def side_scheme(design, k: float) -> Scene:
     x1 = 0.0
     x3 = ROW_GAP if sch.two_row else 0.0
     x_h = x3 + ROW_GAP * 0.75 + (RING_RIM if sch.row2 == "internal" else 0.0)
-    top = max(r1, r3, a + max(r2, r2p)) + RING_RIM + 4
-    x_in, x_out = x1 - SHAFT - (RING_RIM if sch.row1 == "internal" else 0.0), x_h + SHAFT
+    outer = max(r1 + (RING_RIM if sch.row1 == "internal" else 0.0),
+                r3 + (RING_RIM if sch.row2 == "internal" else 0.0), a + max(r2, r2p)) + 6.0
+    hub1 = x1 - ROW_GAP * 0.6 if sch.row1 == "internal" else x1
+    x_wl = hub1 - WALL
+    x_wr = x_h + WALL
+    x_in, x_out = x_wl - SHAFT * 0.6, x_wr + SHAFT * 0.6
     s.line((x_in - 8, 0), (x_out + 8, 0), layer="axis")
+    # the housing: walls with the shafts' bearings, the shell hatched outside
+    s.ground((x_wl, outer), (x_wr, outer), side=1.0)
+    s.ground((x_wr, -outer), (x_wl, -outer), side=1.0)
+    s.line((x_wl, BEARING_GAP), (x_wl, outer), part="housing")
+    s.line((x_wl, -BEARING_GAP), (x_wl, -outer), part="housing")
+    s.line((x_wr, BEARING_GAP), (x_wr, outer), part="housing")
+    s.line((x_wr, -BEARING_GAP), (x_wr, -outer), part="housing")
+    _bearing(s, x_wl, 0.0)
+    _bearing(s, x_wr, 0.0)
     # input shaft and wheel 1
     if sch.row1 == "external":
-        s.line((x_in, 0), (x1, 0))
-        _wheel_external(s, x1, 0.0, r1)
+        s.line((x_in, 0), (x1, 0), part="shaft")
+        _wheel_external(s, x1, 0.0, r1, "wheel1")
     else:
-        hub = x1 - ROW_GAP * 0.6
-        s.line((x_in, 0), (hub, 0))
-        s.line((hub, -r1 - RING_RIM), (hub, r1 + RING_RIM))
+        s.line((x_in, 0), (hub1, 0), part="shaft")
+        s.line((hub1, -r1 - RING_RIM), (hub1, r1 + RING_RIM), part="wheel1")
         for sg in (1, -1):
-            s.line((hub, sg * (r1 + RING_RIM)), (x1, sg * (r1 + RING_RIM)), (x1, sg * r1))
-            s.line((x1 - FACE, sg * r1), (x1 + FACE, sg * r1))
-    # planet block (upper planet) on its axle
-    xa0 = x1 - FACE - 4
-    for sg in (1, -1):           # the upper and the lower planet
-        s.line((xa0, sg * a), (x_h, sg * a))
-        _wheel_external(s, x1, sg * a, r2)
+            s.line((hub1, sg * (r1 + RING_RIM)), (x1, sg * (r1 + RING_RIM)), (x1, sg * r1), part="wheel1")
+            s.line((x1 - FACE, sg * r1), (x1 + FACE, sg * r1), part="wheel1")
+    # the satellite blocks above and below the axis, on their axles in the carrier
+    xa0 = x1 - FACE - 3
+    for sg in (1, -1):
+        y = sg * a
+        s.line((xa0, y), (x3 + FACE + 2, y), part="satellite")          # the block's sleeve
+        _wheel_external(s, x1, y, r2, "satellite")
         if sch.two_row:
-            _wheel_external(s, x3, sg * a, r2p)
+            _wheel_external(s, x3, y, r2p, "satellite")
+        x_b = (x3 + FACE + x_h) / 2
+        s.line((x3 + FACE + 2, y), (x_h, y), part="carrier")             # the axle
+        _bearing(s, x_b, y)
     # fixed wheel 3
     if sch.row2 == "internal":
         for sg in (1, -1):
-            s.line((x3, sg * r3), (x3, sg * (r3 + RING_RIM)))
-            s.line((x3 - FACE, sg * r3), (x3 + FACE, sg * r3))
-            p, q = (x3 - 2 * FACE, sg * (r3 + RING_RIM)), (x3 + 2 * FACE, sg * (r3 + RING_RIM))
-            s.ground(p, q, side=1.0 if sg > 0 else -1.0)
+            s.line((x3, sg * r3), (x3, sg * outer), part="ring")
+            s.line((x3 - FACE, sg * r3), (x3 + FACE, sg * r3), part="ring")
     else:
-        _wheel_external(s, x3, 0.0, r3)
-        hub = x3 + FACE + 6
-        s.line((x3, 0), (hub, 0))
-        s.ground((hub, -8), (hub, 8), side=-1.0)
-    # carrier H: arm from the planet axle down to the output shaft
-    s.line((x_h, a), (x_h, -a))
-    s.line((x_h, 0), (x_out, 0))
-    del top
+        _wheel_external(s, x3, 0.0, r3, "ring")
+        hub = x3 + FACE + 3            # its hub fixed to the housing (a hatched base), round the shaft
+        for sg in (1, -1):
+            s.line((x3, sg * 2.0 * BEARING_GAP), (hub, sg * 2.0 * BEARING_GAP), part="ring")
+            s.ground((hub, sg * 2.0 * BEARING_GAP), (hub, sg * 4.0 * BEARING_GAP), side=-sg, part="ring")
+    # carrier H: arm from the upper axle to the lower one, the output shaft to the right
+    s.line((x_h, a), (x_h, -a), part="carrier")
+    s.line((x_h, 0), (x_out, 0), part="shaft")
     # labels
     s.labels += [SceneLabel("1", (x1 - 7, r1 * 0.5)), SceneLabel("2", (x1 - 7, a + r2 * 0.5)),
-                 SceneLabel("H", (x_h + 6, a * 0.5)), SceneLabel("3", (x3 + 9, r3 + RING_RIM * 0.5))]
+                 SceneLabel("H", (x_h + 6, a * 0.5)),
+                 SceneLabel("3", (x3 + 7, (r3 + outer) / 2 if sch.row2 == "internal" else -r3 * 0.5))]
     if sch.two_row:
-        s.labels.append(SceneLabel("2′", (x3 - 8, a + r2p * 0.5)))
+        s.labels.append(SceneLabel("2′", (x3 + 8, a - r2p * 0.55)))
     s.marks.update({"A": (x1, r1), "B": (x_h, a), "C": (x3, r3), "O": (x_out + 8, 0.0)})
     return s
 
@@ -173,21 +220,28 @@ def front_view(design, k: float) -> Scene:
             q = ((r3 + HATCH) * math.cos(t + 0.06), (r3 + HATCH) * math.sin(t + 0.06))
             s.hatches.append((p, q))
     s.circles.append(SceneCircle((0, 0), a, "axis"))
+    start = math.pi / 2 + (math.pi / 4 if K == 2 else 0.0)   # two satellites: on a diagonal
     for i in range(K):
-        t = math.pi / 2 + 2 * math.pi * i / K
+        t = start + 2 * math.pi * i / K
         c = (a * math.cos(t), a * math.sin(t))
-        s.circles.append(SceneCircle(c, r2, "contour"))
+        s.circles.append(SceneCircle(c, r2, "contour", "satellite"))
         if sch.two_row:
-            s.circles.append(SceneCircle(c, r2p, "hidden"))
-        s.line((0, 0), c)                  # carrier arm
+            s.circles.append(SceneCircle(c, r2p, "hidden", "satellite"))
+        s.line((0, 0), c, part="carrier")                  # carrier arm
         s.circles.append(SceneCircle(c, 1.5, "contour"))
     s.circles.append(SceneCircle((0, 0), 1.5, "contour"))
-    s.labels += [SceneLabel("1", (0.55 * r1 * math.cos(math.radians(-35)), 0.55 * r1 * math.sin(math.radians(-35)))),
-                 SceneLabel("2", (0.55 * r2, a + 0.35 * r2)),
+    def at(r: float, deg: float, c: Point = (0.0, 0.0)) -> Point:
+        t = start + math.radians(deg)
+        return (c[0] + r * math.cos(t), c[1] + r * math.sin(t))
+
+    c0 = at(a, 0.0)
+    s.labels += [SceneLabel("1", at(0.55 * r1, -90.0)),
+                 SceneLabel("2", at(0.55 * r2, -55.0, c0)),
                  SceneLabel("3", ((r3 + 9) * math.cos(math.radians(-60)), (r3 + 9) * math.sin(math.radians(-60)))),
-                 SceneLabel("H", (-6, a * 0.45))]
+                 SceneLabel("H", (0.45 * c0[0] + 5 * math.cos(start + math.pi / 2),
+                                  0.45 * c0[1] + 5 * math.sin(start + math.pi / 2)))]
     if sch.two_row:
-        s.labels.append(SceneLabel("2′", (-(r2p + 5) * 0.72, a - (r2p + 5) * 0.72)))
+        s.labels.append(SceneLabel("2′", at(r2p + 5, 125.0, c0)))
     return s
 
 
@@ -251,7 +305,7 @@ def merge(*scenes: Scene) -> Scene:
 
 
 #: The largest radius of the reducer drawn on sheet 4 (front and side views stacked), sheet mm.
-SHEET_MAX_RADIUS = 110.0
+SHEET_MAX_RADIUS = 80.0
 
 
 def sheet_triangle(stage):

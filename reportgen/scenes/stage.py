@@ -3,7 +3,11 @@ project's stages and its boxes (:mod:`.boxes`). The note and the sheets read the
 from __future__ import annotations
 
 from functools import cached_property
+from types import MappingProxyType
+from typing import Mapping
 
+from .dynamics import DynamicsScenes, dynamics_scenes
+from .output_diagrams import output_diagrams_scene
 from .plans import plan_scene
 from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
 from .scene import Scene
@@ -33,9 +37,34 @@ class Scenes:
 
     @cached_property
     def velocity_plan(self) -> Scene:
-        return plan_scene(self.project.plans[0])
+        """The velocity plan of the analysed position."""
+        return self.velocity_plans[self.project.analysed]
 
     @cached_property
     def acceleration_plan(self) -> Scene:
-        v, a = self.project.plans
-        return plan_scene(a, (set(v.points) - {"p"}) | {"π"})
+        """The acceleration plan of the analysed position."""
+        return self.acceleration_plans[self.project.analysed]
+
+    @cached_property
+    def velocity_plans(self) -> Mapping[int, Scene]:
+        """The velocity plan of every plan position (``project.plan_positions``, in its order)."""
+        return MappingProxyType({j: plan_scene(v) for j, (v, _) in self.project.plans_by_position.items()})
+
+    @cached_property
+    def acceleration_plans(self) -> Mapping[int, Scene]:
+        """The acceleration plan of every plan position (letters of the velocity plan's images)."""
+        return MappingProxyType({j: plan_scene(a, (set(v.points) - {"p"}) | {"π"})
+                                 for j, (v, a) in self.project.plans_by_position.items()})
+
+    @cached_property
+    def dynamics(self) -> DynamicsScenes | None:
+        """The diagrams of section 3 (sheet 3): M_red, A, ΔE, Wittenbauer, J_red, ω (None without
+        [dynamics])."""
+        res = self.project.dynamics
+        return None if res is None else dynamics_scenes(res, self.project.boxes.diagrams)
+
+    @cached_property
+    def output_diagrams(self) -> Scene | None:
+        """The s–v–a diagrams of the output (sheet 1, section 1; None if the output has no strokes)."""
+        d = self.project.output_diagrams
+        return None if d is None else output_diagrams_scene(d, len(self.project.phi))

@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 
 from reportgen.dynamics import FunctionCycle, solve_cycle
 from reportgen.dynamics.quadrature import cumulative, integrate_intervals
+from reportgen.scenes.boxes import DEFAULT as DEFAULT_BOXES
 
 TWO_PI = 2 * math.pi
 
@@ -25,7 +26,7 @@ def sinusoidal(A=300.0, c=150.0, J0=2.0, w=18.0) -> FunctionCycle:
 
 def test_constant_J_sinusoidal_energy():
     A, c, J0, w, d = 300.0, 150.0, 2.0, 18.0, 0.05
-    r = solve_cycle(sinusoidal(A, c, J0, w), d)
+    r = solve_cycle(sinusoidal(A, c, J0, w), d, layout=DEFAULT_BOXES.diagrams)
     assert r.M_drive == pytest.approx(c, rel=1e-13)
     np.testing.assert_allclose(r.delta_E, A * np.sin(r.theta), atol=1e-10 * A)
     # constant J: the total J must hold the energy swing 2A between ω_max and ω_min: J_tot·2δω² = 2·2A/2
@@ -46,7 +47,7 @@ def varying_J(Ja=1.0, Jb=8.0, w=10.0) -> FunctionCycle:
 
 def test_strongly_varying_J_merzalov_overestimates():
     Ja, Jb, d = 1.0, 8.0, 0.05
-    r = solve_cycle(varying_J(Ja, Jb), d)
+    r = solve_cycle(varying_J(Ja, Jb), d, layout=DEFAULT_BOXES.diagrams)
     Jmax, Jmin = Ja + Jb, Ja
     exact = (Jmax * (1 - d / 2) ** 2 - Jmin * (1 + d / 2) ** 2) / (2 * d)
     merz = (Jmax - Jmin) / (2 * d) - Ja
@@ -66,7 +67,7 @@ def switching(F=1000.0, a=2.0, J0=1.5, w=15.0) -> FunctionCycle:
 @pytest.mark.parametrize("n", [360, 361, 97, 1000])
 def test_switching_load_exact_wherever_the_grid_falls(n):
     F, a, J0, w, d = 1000.0, 2.0, 1.5, 15.0, 0.04
-    r = solve_cycle(switching(F, a, J0, w), d, n=max(n, 8))
+    r = solve_cycle(switching(F, a, J0, w), d, n=max(n, 8), layout=DEFAULT_BOXES.diagrams)
     assert r.work_cycle == pytest.approx(-F * a, rel=1e-13)
     Md = F * a / TWO_PI
     expected_dE = np.where(r.theta < a, (Md - F) * r.theta, (Md - F) * a + Md * (r.theta - a))
@@ -120,7 +121,7 @@ def test_any_smooth_cycle_returns_the_target_delta(a1, b2, c, j1, j2, delta):
     J = lambda t: 1.0 + j1 * np.cos(t) + j2 * np.sin(3 * t) ** 2 + j1       # noqa: E731  (≥ 1 − 0 > 0)
     dJ = lambda t: -j1 * np.sin(t) + 3 * j2 * np.sin(6 * t)                  # noqa: E731
     cyc = FunctionCycle(M=M, J=J, dJ=dJ, omega_m=12.0, J_const=1.0)
-    r = solve_cycle(cyc, delta, n=90, graphical_positions=12)
+    r = solve_cycle(cyc, delta, n=90, graphical_positions=12, layout=DEFAULT_BOXES.diagrams)
     if r.exact.J_fly > 0:
         assert r.delta_achieved == pytest.approx(delta, rel=1e-6)
     else:
@@ -133,7 +134,7 @@ def test_negligible_load_keeps_finite_scales():
     cyc = FunctionCycle(M=lambda t: 1e-318 * np.cos(t), J=lambda t: 1.0 + 0.5 * np.sin(t) ** 2,
                         dJ=lambda t: 0.5 * np.sin(2 * t), omega_m=10.0, J_const=1.0)
     with np.errstate(over="raise", invalid="raise", divide="raise"):
-        r = solve_cycle(cyc, 0.05, n=72)
+        r = solve_cycle(cyc, 0.05, n=72, layout=DEFAULT_BOXES.diagrams)
     g = r.graphical
     assert all(math.isfinite(v) for v in (g.mu_M, g.mu_E, g.KL_mm, g.J_fly, g.accuracy))
     assert r.graphical.J_fly == pytest.approx(r.exact.J_fly, rel=0.05)

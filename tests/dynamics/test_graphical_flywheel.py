@@ -11,6 +11,7 @@ from reportgen.dynamics.graphical import (NICE, READING_MM, flywheel_from_KL, ni
                                           work_scale)
 
 from .conftest import DYNAMIC_EXAMPLES
+from reportgen.scenes.boxes import DEFAULT as DEFAULT_BOXES
 
 
 def test_seed000_formulas():
@@ -41,7 +42,7 @@ def test_replica_agrees_with_exact_within_its_drawing_accuracy(solved, name):
 def test_replica_converges_with_more_positions(solved, name):
     p, r = solved[name]
     cyc = ProjectCycle(p)
-    errs = [abs(graphical_replica(cyc, r.delta_target, n).J_fly - r.J_flywheel) for n in (12, 48, 192)]
+    errs = [abs(graphical_replica(cyc, r.delta_target, n, layout=DEFAULT_BOXES.diagrams).J_fly - r.J_flywheel) for n in (12, 48, 192)]
     assert errs[2] < errs[0]
     assert errs[2] < 0.01 * r.J_flywheel
 
@@ -81,7 +82,7 @@ def test_replica_construction_is_consistent(solved, name):
 def test_replica_tangents_agree_with_the_exact_tangent_points(solved):
     """On a fine replica the tangent positions are next to the exact tangent points θ_K, θ_L."""
     p, r = solved["conveyor"]
-    g = graphical_replica(ProjectCycle(p), r.delta_target, 360)
+    g = graphical_replica(ProjectCycle(p), r.delta_target, 360, layout=DEFAULT_BOXES.diagrams)
     assert abs(g.theta[g.index_K] - r.exact.theta_K) < math.radians(2.0)
     assert abs(g.theta[g.index_L] - r.exact.theta_L) < math.radians(2.0)
 

@@ -6,9 +6,7 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
 import subprocess
-import sys
 import tomllib
 import unicodedata
 from pathlib import Path
@@ -23,15 +21,6 @@ pytestmark = pytest.mark.slow
 
 CYRILLIC = re.compile("[\u0400-\u04FF]")
 NOT_UKRAINIAN = re.compile("[ыэъёЫЭЪЁ]")
-
-
-def _build(task: Path, out: Path, *extra: str) -> Path:
-    if shutil.which("latexmk") is None:
-        pytest.fail("latexmk is not installed: run `make test` (it installs TeX Live)")
-    r = subprocess.run([sys.executable, "-m", "reportgen", "build", str(task), "-o", str(out), *extra],
-                       capture_output=True, text=True, cwd=ROOT, timeout=900)
-    assert r.returncode == 0, r.stderr + r.stdout
-    return out
 
 
 def _pdftext(pdf: Path) -> str:
@@ -79,15 +68,10 @@ def _counts(text: str, figure: str, table: str) -> tuple[int, int, int]:
     return figures, tables, equations
 
 
-@pytest.fixture(scope="module")
-def builds(tmp_path_factory):
-    tmp = tmp_path_factory.mktemp("lang")
-    return {
-        "shaper-uk": _build(EXAMPLES / "shaper-uk" / "task.toml", tmp / "shaper-uk"),
-        "shaper": _build(EXAMPLES / "shaper" / "task.toml", tmp / "shaper", "--no-sheets"),
-        "press-en": _build(EXAMPLES / "press-en" / "task.toml", tmp / "press-en"),
-        "press": _build(EXAMPLES / "press" / "task.toml", tmp / "press", "--no-sheets"),
-    }
+@pytest.fixture
+def builds(built):
+    """The four builds, shared with the other whole-build checks (``built`` of tests/conftest.py)."""
+    return {name: built(name) for name in ("shaper-uk", "shaper", "press-en", "press")}
 
 
 def test_examples_declare_their_language():

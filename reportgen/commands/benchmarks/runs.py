@@ -88,6 +88,7 @@ def _table_flywheel(cycle, theta: np.ndarray, delta: float) -> tuple[float, floa
 
 def dynamics_tables(project, ns) -> tuple[list[Table], Series]:
     from ...dynamics import EnergyProfile, ProjectCycle, graphical_replica, wittenbauer_exact
+    from ...scenes.boxes import DEFAULT as DEFAULT_BOXES
 
     dyn = project.task.dynamics
     cycle = ProjectCycle(project, dyn.crank_inertia)
@@ -121,7 +122,7 @@ def dynamics_tables(project, ns) -> tuple[list[Table], Series]:
         th = np.arange(n) * 2 * math.pi / n
         t_tab, (W_tab, J_tab) = best_time(lambda th=th: _table_flywheel(cycle, th, delta), 3)
         t_gl, (W_gl, J_gl) = best_time(lambda n=n: exact(n), 1)
-        t_gr, gr = best_time(lambda n=n: graphical_replica(cycle, delta, n), 1)
+        t_gr, gr = best_time(lambda n=n: graphical_replica(cycle, delta, n, layout=DEFAULT_BOXES.diagrams), 1)
         ew_tab, ew_gl = abs(W_tab / W_ref - 1), abs(W_gl / W_ref - 1)
         ej_tab, ej_gl, ej_gr = abs(J_tab / J_ref - 1), abs(J_gl / J_ref - 1), abs(gr.J_fly / J_ref - 1)
         tw.add(n, ms(t_tab), rel(ew_tab), ms(t_gl), rel(ew_gl))

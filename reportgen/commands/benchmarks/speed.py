@@ -34,13 +34,21 @@ def _fmt_s(xs: list[float]) -> str:
     return f"{m:.2f} ({lo:.2f}–{hi:.2f})"
 
 
-def _run(args: list[str], env: dict[str, str], cwd: Path) -> float:
+def _run(args: list[str], env: dict[str, str], cwd: Path, cpu: list[float] | None = None) -> float:
+    """Wall time of ``reportgen ARGS`` as a process; its CPU time (user + system, with its children:
+    the sheets' and figures' processes, latexmk and xelatex) appended to ``cpu`` when given."""
+    import resource
+
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     r = subprocess.run([sys.executable, "-m", "reportgen", *args], env=env, cwd=cwd,
                        capture_output=True, text=True, timeout=1800)
     dt = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if r.returncode != 0:
         raise ComputationError("reportgen " + " ".join(args[:1]), (r.stderr or r.stdout).strip().splitlines()[-1][:300])
+    if cpu is not None:
+        cpu.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
     return dt
 
 
@@ -68,9 +76,11 @@ def critical_path_table(task_path: Path, quick: bool) -> Table:
         t.add(lane, name, sec(a), sec(b), sec(b - a))
         end = max(end, b)
     t.notes.append(f"the whole build: {end:.2f} s in this process (its imports done before); lanes: main = the "
-                   "Python process (solve, the note's sections and figures, results.json, then it waits), "
-                   "sheets = a forked process (DXF + PNG preview of each sheet), LaTeX = latexmk with xelatex")
-    t.notes.append("the critical path is main (solve → note) → LaTeX; the sheets overlap the note and LaTeX")
+                   "Python process (solve, the note's sections and report.tex, then its figures: half of them saved "
+                   "by a second forked process meanwhile; results.json, then it waits), sheets = a forked process "
+                   "at a lower priority (DXF + PNG preview of each sheet), LaTeX = latexmk with xelatex")
+    t.notes.append("the critical path is main (solve → note's sections → figures) → LaTeX; the sheets overlap "
+                   "the note and LaTeX")
     if not pdf:
         t.notes.append("LaTeX not run (" + ("--quick" if quick else "latexmk not found") + ")")
     return t
@@ -80,7 +90,7 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
     """Cold, warm (unchanged task) and incremental (one number changed) builds as whole processes."""
     t = Table("builds", f"`reportgen build {task_path.parent.name}/{task_path.name}` as a process, "
               "all outputs (PDF, sheets, previews, results.json)",
-              ["build", "wall, s: median (min–max)", "runs"])
+              ["build", "wall, s: median (min–max)", "CPU, s: median", "runs"])
     if shutil.which("latexmk") is None or quick:
         t.notes.append("not measured: " + ("--quick" if quick else "latexmk not found"))
         return t
@@ -91,26 +101,29 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
         task.write_text(text, encoding="utf-8")
         env = dict(os.environ, REPORTGEN_CACHE=str(base / "cache"))
         cold, warm, inc = [], [], []
+        cpu: dict[str, list[float]] = {"cold": [], "warm": [], "inc": []}
         try:
             for i in range(runs):
-                cold.append(_run(["build", str(task), "-o", str(base / f"cold{i}"), "--quiet", "--no-cache"], env, base))
+                cold.append(_run(["build", str(task), "-o", str(base / f"cold{i}"), "--quiet", "--no-cache"], env, base,
+                                 cpu["cold"]))
             _run(["build", str(task), "-o", str(base / "fill"), "--quiet"], env, base)
             for i in range(runs):
-                warm.append(_run(["build", str(task), "-o", str(base / f"warm{i}"), "--quiet"], env, base))
+                warm.append(_run(["build", str(task), "-o", str(base / f"warm{i}"), "--quiet"], env, base, cpu["warm"]))
             changed = _one_number_changed(text, runs)
             if changed is not None:
                 for i in range(runs):
                     task.write_text(changed[i], encoding="utf-8")
-                    inc.append(_run(["build", str(task), "-o", str(base / f"inc{i}"), "--quiet"], env, base))
+                    inc.append(_run(["build", str(task), "-o", str(base / f"inc{i}"), "--quiet"], env, base,
+                                    cpu["inc"]))
         except Exception as exc:  # noqa: BLE001 - report, do not hide the other tables
             t.notes.append(f"a build failed: {exc}")
-        if cold:
-            t.add("cold (no cache)", _fmt_s(cold), str(len(cold)))
-        if warm:
-            t.add("warm (unchanged task, from the cache)", _fmt_s(warm), str(len(warm)))
-        if inc:
-            t.add("incremental (one number changed)", _fmt_s(inc), str(len(inc)))
-    t.notes.append("each run a fresh process (imports included); the machine is shared, so the spread is shown")
+        for label, key, xs in (("cold (no cache)", "cold", cold), ("warm (unchanged task, from the cache)", "warm", warm),
+                               ("incremental (one number changed)", "inc", inc)):
+            if xs:
+                t.add(label, _fmt_s(xs), f"{statistics.median(cpu[key]):.2f}" if cpu[key] else "—", str(len(xs)))
+    t.notes.append("each run a fresh process (imports included); the machine is shared, so the spread is shown; "
+                   "CPU: user + system time of the process and its children (the sheets' and figures' processes, "
+                   "latexmk, xelatex) — on 2 processors the wall time cannot be less than half of it")
     t.notes.append("incremental: each run changes the task's δ to a new value; the kinematics, kinetostatics and "
                    "gear previews come from the cache, LaTeX starts from the last build's aux files")
     return t
@@ -173,12 +186,13 @@ def solver_table(task_path: Path, quick: bool) -> Table:
         m, lo, hi = _median_spread([x * 1e3 for x in xs])
         t.add(label, f"{m:.0f} ({lo:.0f}–{hi:.0f})", str(len(xs)))
     env = dict(os.environ, REPORTGEN_CACHE="off")
-    ps = []
+    ps: list[float] = []
+    ps_cpu: list[float] = []
     with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
         for _ in range(2 if quick else 5):
             try:
                 ps.append(_run(["solve", str(task_path.resolve()), "--json", str(Path(tmp) / "r.json"), "--quiet"], env,
-                               Path(tmp)))
+                               Path(tmp), ps_cpu))
             except Exception as exc:  # noqa: BLE001
                 t.notes.append(f"`reportgen solve` failed: {exc}")
                 break
@@ -186,6 +200,8 @@ def solver_table(task_path: Path, quick: bool) -> Table:
         m, lo, hi = _median_spread([x * 1e3 for x in ps])
         t.add("`reportgen solve TASK --json OUT` as a process (imports included)", f"{m:.0f} ({lo:.0f}–{hi:.0f})",
               str(len(ps)))
+        t.notes.append(f"`reportgen solve` as a process: CPU (user + system) {statistics.median(ps_cpu) * 1e3:.0f} ms "
+                       "median; its wall time above that is the wait for a processor on a shared machine")
     t.notes.append("in process: a new Project each run (the model built again), [analysis] positions set to "
                    "360; the kinetostatics at all of them, the dynamics on its own 360-step grid")
     return t

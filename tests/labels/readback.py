@@ -1,0 +1,227 @@
+"""What a reader sees of the labels, read back from the outputs.
+
+Sheets: every TEXT of the DXF's modelspace (and the MTEXT of each DIMENSION's block) as a box in
+sheet mm, computed from the entity alone — insert or align point, alignment, height, width factor,
+rotation and the text's advance in the sheet's measuring font (:data:`drawings.style.MEASURE_FONT`,
+whose advance is LibreCAD's ГОСТ type B within a few per cent; without the placer's safety margin).
+What each label names comes from the sheet (:attr:`drawings.primitives.Annotations.labels`: the
+handles of its texts and its anchor), never guessed from the geometry.
+
+Note figures: every text of a matplotlib figure with its window extent (the renderer's own metrics),
+in mm of the figure; what it names from ``reportgen_names`` (:mod:`latex_templates.figures.labels`)
+or, for an annotation, the point it annotates."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from shapely import affinity
+from shapely.geometry import Point, Polygon, box
+from shapely.geometry.base import BaseGeometry
+
+from drawings import style
+from drawings.primitives import descent
+
+#: Boxes are shrunk by this much (mm) on each side before testing overlap: two texts set edge to
+#: edge in a table or a label written tight against its neighbour only touch.
+TOUCH_MM = 0.25
+
+
+@dataclass(frozen=True)
+class TextBox:
+    handle: str
+    text: str
+    box: Polygon
+
+
+def _width(text: str, height: float, factor: float) -> float:
+    return style.text_width(text, height) / style.WIDTH_MARGIN * factor
+
+
+def text_box(e) -> Polygon:
+    """The box (sheet mm) of a DXF TEXT: its cap height over the base line, its advance wide."""
+    h = float(e.dxf.height)
+    text = e.plain_text()
+    w = _width(text, h, float(e.dxf.get("width", 1.0)))
+    halign, valign = int(e.dxf.get("halign", 0)), int(e.dxf.get("valign", 0))
+    p = e.dxf.insert if (halign, valign) == (0, 0) or halign in (3, 5) else e.dxf.get("align_point", e.dxf.insert)
+    x0 = {0: 0.0, 1: -w / 2, 2: -w, 4: -w / 2}.get(halign, 0.0)
+    y0 = {0: 0.0, 1: 0.0, 2: -h / 2, 3: -h}.get(valign, 0.0)
+    if halign == 4:                       # MIDDLE: centred both ways
+        y0 = -h / 2
+    depth = descent(text, h)
+    y0 -= depth
+    h += depth
+    poly = box(x0, y0, x0 + w, y0 + h)
+    rot = float(e.dxf.get("rotation", 0.0))
+    if rot:
+        poly = affinity.rotate(poly, rot, origin=(0, 0))
+    return affinity.translate(poly, float(p[0]), float(p[1]))
+
+
+def mtext_box(e) -> Polygon:
+    """The box of a one-line MTEXT (a dimension's value): attachment point, char height, advance."""
+    h = float(e.dxf.char_height)
+    text = e.plain_text()
+    w = _width(text, h, 1.0)
+    ap = int(e.dxf.get("attachment_point", 1))
+    col, row = (ap - 1) % 3, (ap - 1) // 3
+    x0 = -w * col / 2
+    y0 = -h * (2 - row) / 2
+    poly = box(x0, y0, x0 + w, y0 + h)
+    rot = math.degrees(math.atan2(*reversed(tuple(e.dxf.get("text_direction", (1, 0, 0)))[:2]))) \
+        if e.dxf.hasattr("text_direction") else float(e.dxf.get("rotation", 0.0))
+    if rot:
+        poly = affinity.rotate(poly, rot, origin=(0, 0))
+    p = e.dxf.insert
+    return affinity.translate(poly, float(p[0]), float(p[1]))
+
+
+def sheet_texts(doc) -> list[TextBox]:
+    """Every text a reader sees on the sheet, with its box."""
+    out = []
+    msp = doc.modelspace()
+    for e in msp.query("TEXT"):
+        if e.plain_text().strip():
+            out.append(TextBox(str(e.dxf.handle), e.plain_text(), text_box(e)))
+    for d in msp.query("DIMENSION"):
+        for v in d.virtual_entities():
+            if v.dxftype() == "MTEXT" and v.plain_text().strip():
+                out.append(TextBox(f"{d.dxf.handle}/dim", v.plain_text(), mtext_box(v)))
+    return out
+
+
+def overlap(a: Polygon, b: Polygon, touch: float = TOUCH_MM) -> bool:
+    return a.buffer(-touch, join_style=2).intersects(b.buffer(-touch, join_style=2))
+
+
+@dataclass(frozen=True)
+class Found:
+    """A defect a teacher would mark: ``what`` and where."""
+    what: str
+    first: str
+    second: str = ""
+    mm: float = 0.0
+
+    def __str__(self) -> str:
+        return f"{self.what}: «{self.first}»" + (f" / «{self.second}»" if self.second else "") + \
+            (f" ({self.mm:.1f} mm)" if self.mm else "")
+
+
+def check_sheet(doc, records, near_mm: float) -> list[Found]:
+    """Labels on a sheet read back from its DXF ``doc``: no two texts overlap (the texts of one label
+    — a base and its indices — count as one), each recorded label is within ``near_mm`` of what it
+    names and no other point labelled in the same view is nearer to it than its own."""
+    texts = sheet_texts(doc)
+    by_handle = {t.handle: t for t in texts}
+    owner: dict[str, int] = {}
+    for k, r in enumerate(records):
+        for h in r.handles:
+            owner[h] = k
+    found: list[Found] = []
+    import shapely
+    polys = [t.box.buffer(-TOUCH_MM, join_style=2) for t in texts]
+    tree = shapely.STRtree(polys)
+    for i, t in enumerate(texts):
+        for j in tree.query(polys[i], predicate="intersects"):
+            j = int(j)
+            if j <= i:
+                continue
+            u = texts[j]
+            oi, oj = owner.get(t.handle, -1 - i), owner.get(u.handle, -1 - j)
+            if oi == oj:
+                continue
+            found.append(Found("texts overlap", t.text, u.text))
+    points = {}
+    for k, r in enumerate(records):
+        if isinstance(r.anchor, Point):
+            points.setdefault(r.view, []).append((k, r.anchor))
+    for k, r in enumerate(records):
+        boxes = [by_handle[h].box for h in r.handles if h in by_handle]
+        if not boxes:
+            found.append(Found("label not in the DXF", r.text))
+            continue
+        shape = shapely.union_all(boxes)
+        d = shape.distance(r.anchor)
+        if d > near_mm:
+            found.append(Found(f"label far from what it names (view {r.view})", r.text, mm=d))
+        if isinstance(r.anchor, Point):
+            for j, q in points.get(r.view, ()):
+                if j != k and not q.equals(r.anchor) and shape.distance(q) + 0.5 < d:
+                    found.append(Found(f"label nearer to another labelled point (view {r.view})", r.text,
+                                       records[j].text, d))
+                    break
+    return found
+
+
+# -- note figures -------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class FigureText:
+    text: str
+    box: Polygon            # mm of the figure
+    names: BaseGeometry | None
+    drawn: bool = True      # False: an annotation of a point outside its axes (matplotlib leaves it out)
+
+
+def figure_texts(fig) -> list[FigureText]:
+    """Every visible, non-empty text of ``fig`` (its axes' texts and annotations, the figure's own)
+    with its window extent in mm and what it names (figure mm), if known."""
+    from shapely.geometry import LineString
+    renderer = fig.canvas.get_renderer()
+    k = 25.4 / fig.dpi
+    out = []
+    artists = list(fig.texts)
+    for ax in fig.axes:
+        artists += [(t, ax) for t in ax.texts]
+    for item in artists:
+        t, ax = item if isinstance(item, tuple) else (item, None)
+        if not t.get_visible() or not t.get_text().strip():
+            continue
+        if hasattr(t, "xy") and ax is not None and getattr(t, "xycoords", "data") == "data" \
+                and t.get_annotation_clip() is not False \
+                and not ax.bbox.expanded(1.001, 1.001).contains(*ax.transData.transform(t.xy)):
+            out.append(FigureText(t.get_text(), box(0, 0, 0, 0), None, drawn=False))
+            continue
+        bb = t.get_window_extent(renderer)
+        patch = t.get_bbox_patch()
+        if patch is not None:                    # a circled number: the circle is part of it
+            t.update_bbox_position_size(renderer)
+            pb = patch.get_window_extent(renderer)
+            bb = bb.union([bb, pb])
+        poly = box(bb.x0 * k, bb.y0 * k, bb.x1 * k, bb.y1 * k)
+        names = getattr(t, "reportgen_names", None)
+        geom = None
+        trans = (ax.transData if ax is not None else None)
+        if names is not None and trans is not None:
+            pts = [tuple(trans.transform(p) * k) for p in names]
+            geom = Point(pts[0]) if len(pts) == 1 else LineString(pts)
+        elif hasattr(t, "xy") and trans is not None and getattr(t, "xycoords", "data") == "data":
+            geom = Point(tuple(trans.transform(t.xy) * k))
+        out.append(FigureText(t.get_text(), poly, geom))
+    return out
+
+
+def check_figure(fig, near_mm: float) -> list[Found]:
+    """No two texts of a note figure overlap; each text that names something is within ``near_mm``
+    of it (figure mm) and no other named point is nearer to it than its own."""
+    found: list[Found] = [Found("label not drawn (what it names is outside the axes)", t.text)
+                          for t in figure_texts(fig) if not t.drawn]
+    texts = [t for t in figure_texts(fig) if t.drawn]
+    for i, a in enumerate(texts):
+        for b in texts[i + 1:]:
+            if overlap(a.box, b.box):
+                found.append(Found("texts overlap", a.text, b.text))
+    pts = [(i, t.names) for i, t in enumerate(texts) if isinstance(t.names, Point)]
+    for i, t in enumerate(texts):
+        if t.names is None:
+            continue
+        d = t.box.distance(t.names)
+        if d > near_mm:
+            found.append(Found("label far from what it names", t.text, mm=d))
+        if isinstance(t.names, Point):
+            for j, q in pts:
+                if j != i and q.distance(t.names) > 0.5 and t.box.distance(q) + 0.5 < d:
+                    found.append(Found("label nearer to another labelled point", t.text, texts[j].text, d))
+                    break
+    return found

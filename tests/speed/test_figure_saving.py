@@ -1,0 +1,87 @@
+"""The note's figures queued while report.tex is rendered and saved over two processes
+(latex_templates/figures/saving.py): the same bytes as saving them one by one, every figure
+written once, and an error in the other process comes back with its class and fields."""
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from latex_templates.figures import new_figure
+from latex_templates.figures.saving import FigureQueue, place, queued, save_pdf
+from reportgen.commands import pipeline
+from reportgen.errors import InternalError
+
+
+def _figures(n: int) -> list:
+    figs = []
+    for i in range(n):
+        fig = new_figure(8, 5)
+        ax = fig.add_subplot()
+        ax.plot([0, 1, 2 + i], [0, i, 1], label=f"$О_{{{i}}}$ кривая {i}")
+        ax.set_title(f"рисунок {i}: ω₁ = {i},5")
+        ax.legend()
+        if i % 2:
+            fig.reportgen_exact = True     # a scene's figure: its exact size, no tight box
+        figs.append(fig)
+    return figs
+
+
+def test_two_processes_write_the_bytes_of_one_by_one_saving(tmp_path):
+    seq, par = tmp_path / "seq", tmp_path / "par"
+    seq.mkdir()
+    par.mkdir()
+    for i, fig in enumerate(_figures(5)):
+        save_pdf(fig, seq / f"f{i}.pdf")
+    queue = FigureQueue()
+    for i, fig in enumerate(_figures(5)):
+        queue.add(fig, par / f"f{i}.pdf")
+    queue.save(fork=pipeline._fork_figures)
+    assert len(queue) == 0
+    names = sorted(p.name for p in seq.iterdir())
+    assert names == sorted(p.name for p in par.iterdir()) and len(names) == 5
+    for name in names:
+        assert (seq / name).read_bytes() == (par / name).read_bytes(), name
+
+
+def test_shares_hold_every_figure_once_and_balance_the_work(tmp_path):
+    figs = _figures(6)
+    queue = FigureQueue()
+    for i, fig in enumerate(figs):
+        queue.add(fig, tmp_path / f"f{i}.pdf")
+    a, b = queue.shares(2)
+    assert sorted(id(f) for f, _ in a + b) == sorted(id(f) for f in figs)
+    assert a and b
+
+
+def test_place_saves_at_once_outside_a_queue_and_queues_inside(tmp_path):
+    fig, later = _figures(2)
+    place(fig, tmp_path / "now.pdf")
+    assert (tmp_path / "now.pdf").is_file()
+    with queued() as queue:
+        place(later, tmp_path / "later.pdf")
+    assert not (tmp_path / "later.pdf").exists() and len(queue) == 1
+    queue.save()
+    assert (tmp_path / "later.pdf").read_bytes().startswith(b"%PDF")
+
+
+class _Broken:
+    """A figure whose saving fails (in whichever process gets it)."""
+
+    def findobj(self):
+        return []
+
+    def savefig(self, *_args, **_kwargs):
+        raise InternalError("figure saving", f"made up for the test in process {os.getpid()}")
+
+
+@pytest.mark.parametrize("position", [0, 3])
+def test_an_error_while_saving_comes_back_with_its_class_and_fields(tmp_path, position):
+    queue = FigureQueue()
+    for i, fig in enumerate(_figures(4)):
+        queue.add(fig, tmp_path / f"f{i}.pdf")
+    queue.items.insert(position, (_Broken(), tmp_path / "broken.pdf"))
+    with pytest.raises(InternalError) as info:
+        queue.save(fork=pipeline._fork_figures)
+    assert info.value.what == "figure saving"
+    assert "made up for the test" in info.value.detail
