@@ -46,11 +46,6 @@ def sketch_fit(fw, width: float, height: float) -> tuple[float, bool]:
     return candidates[-1], False
 
 
-def sketch_scale(fw, width: float, height: float) -> float:
-    """The largest ГОСТ scale at which the sketch fits ``width`` × ``height`` (either arrangement)."""
-    return sketch_fit(fw, width, height)[0]
-
-
 def draw_flywheel(sheet: Sheet, fw, rect: Rect, k: float, stacked: bool = False, hub: Hub | None = None) -> View:
     """Front view (circles, the bore with its keyway, centre lines) and the axial section through
     the keyway (hatched) of the disk or rim with its hub (:mod:`reportgen.dynamics.hub`), the

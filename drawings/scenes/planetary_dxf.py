@@ -26,7 +26,7 @@ def draw_reducer(sheet, stage, region) -> None:
     """The right half of sheet 4 in ``region`` (a Rect): the front view on top, the side view with
     the velocity triangle and the angular-velocity plan below, a table of the tooth numbers."""
     from drawings.layout import Rect
-    from drawings.primitives import Transform, format_number
+    from drawings.primitives import Transform, format_number, format_significant
     d = stage.design
     tri = sheet_triangle(stage)
     k = tri.length_scale
@@ -56,7 +56,7 @@ def draw_reducer(sheet, stage, region) -> None:
     draw_scene(sview, scene)
     sview.text_mm((srect.x0 + 4, srect.y1 - 6), tr("sheets.pl02", label=label), 5.0, "bottom-left")
     sview.text((x_line + tri.vector_mm * 0.15, tri.point("C")[1] + 12),
-               tr("sheets.pl03", v1=format_number(tri.mu_v, 5)), 3.5)
+               tr("sheets.pl03", v1=format_significant(tri.mu_v, 5)), 3.5)   # as section 4 prints it
     sview.text((plan_origin[0] - 6, plan_origin[1] - 12),
                tr("sheets.pl04", v1=format_number(abs(tri.plan.mu_omega), 4), v2=format_number(tri.plan.h_mm, 0)),
                3.5)

@@ -22,7 +22,7 @@ from reportgen.calc import CalcRecord, Var, record
 from reportgen.dynamics.hub import hub_of
 from reportgen.numbers import ANGLE_DECIMALS, clean_array
 from reportgen.scenes.dynamics import MU_J, MU_M, DynamicsScenes
-from reportgen.scenes.numbering import diagram_label, diagram_labels, first_step, sense
+from reportgen.scenes.numbering import diagram_label, first_step, sense, translated_diagram_labels
 from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 from . import PartContent, tr, unit
@@ -211,17 +211,9 @@ def _translates(lk, k: int) -> bool:
 
 
 def position_labels(res, positions: int) -> list[str]:
-    """Names of the diagrams' positions (:func:`reportgen.scenes.numbering.diagram_labels`) in the
-    note's language: the switching angles and the corners of the resistance law translated."""
-    words = {"н.р.х.": tr("dynamics.m48"), "к.р.х.": tr("dynamics.m49")}
-    out = []
-    for x in diagram_labels(res, positions):
-        if x in words:
-            x = words[x]
-        elif x.startswith("и") and x[1:].isdigit():
-            x = tr("dynamics.m19", corner=int(x[1:]))
-        out.append(x)
-    return out
+    """Names of the diagrams' positions in the note's language (the sheet's helper,
+    :func:`reportgen.scenes.numbering.translated_diagram_labels`, with the note's catalogue)."""
+    return translated_diagram_labels(res, tr, positions)
 
 
 def _ordinates(scene, id_: str = "curve", axis: int = 1) -> list[float]:

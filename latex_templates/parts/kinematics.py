@@ -160,12 +160,15 @@ def content(project) -> PartContent:
         H1 = Var("H1", "H_1", dg_scene.values["H1"], "мм", tr("kinematics.m16"))
         H2 = Var("H2", "H_2", dg_scene.values["H2"], "мм", tr("kinematics.m17"))
         unit_s = "м/мм" if dg.unit == "м" else "рад/мм"
-        mu_s = Var("mu_s", r"\mu_s", dg_scene.scales[0].value, unit_s, tr("kinematics.m18"))
-        mu_vd = record(r"\mu_{v}", "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
+        # the output's own quantities: s, v, a of a slider; ψ, ω, ε of a rocker (as sheet 1's scene)
+        sym_s, sym_v, sym_a = (r"\mu_s", r"\mu_{v}", r"\mu_{a}") if dg.unit == "м" else \
+            (r"\mu_\psi", r"\mu_{\omega}", r"\mu_{\varepsilon}")
+        mu_s = Var("mu_s", sym_s, dg_scene.scales[0].value, unit_s, tr("kinematics.m18"))
+        mu_vd = record(sym_v, "mu_s / (mu_t * H1)", "(м/с)/мм" if dg.unit == "м" else "(рад/с)/мм",
                        mu_s, H1, mu_t=mu_t, meaning=tr("kinematics.m24"))
-        mu_ad = record(r"\mu_{a}", "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
+        mu_ad = record(sym_a, "mu_v / (mu_t * H2)", "(м/с²)/мм" if dg.unit == "м" else "(рад/с²)/мм",
                        H2, mu_v=mu_vd, mu_t=mu_t, meaning=tr("kinematics.m25"))
-        diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "n": dg.n,
+        diag = {"mu_phi": mu_phi, "mu_t": mu_t, "mu_v": mu_vd, "mu_a": mu_ad, "mu_s": dg.mu_s, "sym_s": Tex(sym_s), "n": dg.n,
                 "dev_v": 100 * dg.v_deviation, "dev_a": 100 * dg.a_deviation, "unit": dg.unit,
                 "vmax": float(np.abs(dg.v).max()), "amax": float(np.abs(dg.a).max())}
     scene_figs = (("kin_positions", fig_pos), ("kin_vplan", figures["kin_vplan"]), ("kin_aplan", figures["kin_aplan"])) + \

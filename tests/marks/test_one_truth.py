@@ -40,11 +40,6 @@ NOT_DRAWN = {
 }
 
 _XFAIL_SCALES = {
-    "class3": "section 1 names the rocker's diagrams' scales μs, μv, μa (units рад/мм, (рад/с)/мм) where "
-              "sheet 1 prints μψ, μω, με (sheet1 helper: section 1 and sheet 1)",
-    "shaper": "section 4's triangle μv prints 5 significant digits (0,063335, gear_pair._rec), sheet 4 "
-              "5 decimals (0,06333, planetary_dxf format_number(…, 5)): two formatters (sheet4 helper)",
-    "shaper-uk": "as shaper: the planetary triangle's μv 0,063335 in the note, 0,06333 on sheet 4 (sheet4 helper)",
 }
 
 
