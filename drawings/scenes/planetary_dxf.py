@@ -57,7 +57,7 @@ def draw_reducer(sheet, stage, region) -> None:
     sview.text_mm((srect.x0 + 4, srect.y1 - 6), tr("sheets.pl02", label=label), 5.0, "bottom-left")
     sview.text((x_line + tri.vector_mm * 0.15, tri.point("C")[1] + 12),
                tr("sheets.pl03", v1=format_significant(tri.mu_v, 5)), 3.5)   # as section 4 prints it
-    sview.text((plan_origin[0] - 6, plan_origin[1] - 12),
+    sview.text((plan_origin[0] - 6, plan_origin[1] - 16),          # under the pole's «p» (5 mm letters at −5)
                tr("sheets.pl04", v1=format_number(abs(tri.plan.mu_omega), 4), v2=format_number(tri.plan.h_mm, 0)),
                3.5)
     # table of tooth numbers, left of the front view
