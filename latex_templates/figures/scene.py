@@ -327,6 +327,19 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
             by = min(max(lb.at[1], pl.box[1]), pl.box[3])
             ax.plot([bx, lb.at[0]], [by, lb.at[1]], color="0.3", lw=0.4)
             names(texts[id(lb)], (bx, by), lb.at, *(lb.along or ()))
+    # the measured boxes may reach past the first estimate's frame: widen the figure (same reduction)
+    # so that no label is cut off or runs out of the figure onto the page
+    nx0, ny0, nx1, ny1 = x0 + pad, y0 + pad, x1 - pad, y1 - pad
+    for _, _, pl in labels:
+        nx0, ny0 = min(nx0, pl.box[0]), min(ny0, pl.box[1])
+        nx1, ny1 = max(nx1, pl.box[2]), max(ny1, pl.box[3])
+    nx0, ny0, nx1, ny1 = nx0 - pad, ny0 - pad, nx1 + pad, ny1 + pad
+    if nx0 < x0 or ny0 < y0 or nx1 > x1 or ny1 > y1:
+        x0, y0, x1, y1 = min(x0, nx0), min(y0, ny0), max(x1, nx1), max(y1, ny1)
+        w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
+        fig.set_size_inches(w_mm / 25.4, h_mm / 25.4)
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
     fig.reportgen_exact = True
     fig.reportgen_labels = tuple(pl for _, _, pl in labels)
     fig.reportgen_reduction = r

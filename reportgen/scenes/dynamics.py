@@ -152,7 +152,11 @@ def work_scene(g, names) -> Scene:
     ents.append(Segment("drive", (0.0, 0.0), end, "contour"))
     # the end ordinate of A_с carried over with its sign changed
     ents.append(Segment("carry", (float(x[-1]), float(a[-1])), end, "thin"))
-    i_mid = len(x) // 2
+    # the curve's name on a node of its middle half, the one farthest above the positions' numbers
+    # (at the curve's lowest level ``lo``): beside the curve, never on a number (class3's «6»)
+    n = len(x)
+    mid = range(n // 4, max(n // 4 + 1, 3 * n // 4 + 1))
+    i_mid = max(mid, key=lambda i: (abs(float(a[i]) - lo), -abs(i - n // 2)))
     labels.append(Label(r"A_{\text{с}}", "curve", (float(x[i_mid]), float(a[i_mid]))))
     labels.append(Label(r"A_{\text{дв}}", "drive", (end[0] / 2, end[1] / 2)))
     labels += _numbers(x, lo, names)

@@ -164,11 +164,17 @@ def assigned(text: str, symbol: str, mark: str) -> list[Printed]:
     """The values a displayed formula of the note gives ``symbol`` (``symbol = … = V`` at a line's start)."""
     num = number_re(mark)
     out = []
-    for line in text.splitlines():
-        m = re.match(rf"\s*{re.escape(symbol)}\s*=(.*)", line)
+    lines = text.splitlines()
+    for n, line in enumerate(lines):
+        m = re.match(rf"(\s*){re.escape(symbol)}\s*=(.*)", line)
+        # a primed symbol (εα′: the value read on the drawing, not the exact one) has its prime on
+        # the line above, over the symbol
+        above = lines[n - 1] if n else ""
+        if m and "′" in above[len(m.group(1)):len(m.group(1)) + len(symbol) + 3]:
+            continue
         if m:
             # «aw = 119,122 мм, εα = 1,201», «εα = 1,152 ≥ [εα] = 1,05»: the symbol's own clause
-            clause = re.split(r"[,;]\s+(?=\D)|[≥≤<>]", m.group(1))[0]
+            clause = re.split(r"[,;]\s+(?=\D)|[≥≤<>]", m.group(2))[0]
             values = re.findall(rf"=\s*({num})(?!\s*[⋅·×]|\d)", "=" + clause)
             if values:
                 out.append(printed(values[-1], mark))
