@@ -9,14 +9,12 @@ import math
 import re
 from pathlib import Path
 
-import ezdxf
 import pytest
 
 from drawings.sheets import dynamics as sheet3
 from latex_templates.parts import dynamics as part
-from reportgen.project import Project
 from reportgen.scenes.scene import Polyline, Segment
-from reportgen.taskfile import load_task
+from scene_readback import part_and_sheet, polyline_length
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ("press", "shaper", "conveyor")
@@ -24,19 +22,11 @@ EXAMPLES = ("press", "shaper", "conveyor")
 
 @pytest.fixture(scope="module", params=EXAMPLES)
 def built(request, tmp_path_factory):
-    project = Project(load_task(ROOT / "examples" / request.param / "task.toml"))
-    content = part.content(project)
-    path = tmp_path_factory.mktemp(request.param) / "sheet3.dxf"
-    sheet3.draw(project, 3, 4).save(path)
-    return project, content, ezdxf.readfile(path)
-
-
-def _polyline_length(points) -> float:
-    return sum(math.dist(p, q) for p, q in zip(points[:-1], points[1:]))
+    return part_and_sheet(request.param, part, sheet3, 3, tmp_path_factory.mktemp(request.param))
 
 
 def _sheet_polylines(doc) -> list[float]:
-    return [_polyline_length([tuple(p)[:2] for p in e.get_points("xy")])
+    return [polyline_length([tuple(p)[:2] for p in e.get_points("xy")])
             for e in doc.modelspace().query("LWPOLYLINE[layer=='contour']")]
 
 
@@ -80,7 +70,7 @@ def test_curves_and_tangents_have_the_sheets_lengths(built):
         for id_ in ids:
             e = scene.entity(id_)
             assert isinstance(e, Polyline)
-            length = _polyline_length(e.points)
+            length = polyline_length(e.points)
             assert any(abs(x - length) < 1e-6 for x in on_sheet), (name, id_, length)
             checked += 1
         if name == "dyn_wittenbauer":

@@ -8,15 +8,12 @@ import math
 import re
 from pathlib import Path
 
-import ezdxf
-import numpy as np
 import pytest
 
 from drawings.sheets import kinematics as sheet1
 from latex_templates.parts import kinematics as part
-from reportgen.project import Project
 from reportgen.scenes.scene import Arrow, Segment
-from reportgen.taskfile import load_task
+from scene_readback import dxf_vectors, part_and_sheet
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3")
@@ -24,28 +21,7 @@ EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3")
 
 @pytest.fixture(scope="module", params=EXAMPLES)
 def built(request, tmp_path_factory):
-    project = Project(load_task(ROOT / "examples" / request.param / "task.toml"))
-    content = part.content(project)
-    path = tmp_path_factory.mktemp(request.param) / "sheet1.dxf"
-    sheet1.draw(project, 1, 4).save(path)
-    return project, content, ezdxf.readfile(path)
-
-
-def _vectors(doc) -> list[float]:
-    """Lengths of the vectors drawn on the sheet: a LINE on layer «vectors» and the SOLID arrowhead
-    whose tip continues it (:meth:`drawings.primitives.Canvas.arrow`)."""
-    msp = doc.modelspace()
-    tips = [np.array(e.dxf.vtx0)[:2] for e in msp.query("SOLID[layer=='vectors']")]
-    out = []
-    for ln in msp.query("LINE[layer=='vectors']"):
-        a, b = np.array(ln.dxf.start)[:2], np.array(ln.dxf.end)[:2]
-        u = (b - a) / (np.hypot(*(b - a)) or 1.0)
-        for t in tips:
-            ahead = float(np.dot(t - b, u))
-            if 0 < ahead < 5.0 and float(np.hypot(*(t - b - u * ahead))) < 1e-6:
-                out.append(float(np.hypot(*(t - a))))
-                break
-    return out
+    return part_and_sheet(request.param, part, sheet1, 1, tmp_path_factory.mktemp(request.param))
 
 
 def _lines(doc, layer: str) -> list[float]:
@@ -62,7 +38,7 @@ def _number(s: str) -> float:
 
 def test_plan_segments_equal_in_note_and_sheet(built):
     _, content, doc = built
-    on_sheet = _vectors(doc)
+    on_sheet = dxf_vectors(doc)
     for name in ("kin_vplan", "kin_aplan"):
         scene = content.figures[name].scene
         for e in scene.entities:

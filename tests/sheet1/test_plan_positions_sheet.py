@@ -22,6 +22,7 @@ from latex_templates.render import Strings
 from reportgen.project import Project
 from reportgen.scenes.scene import Arrow
 from reportgen.taskfile import load_task
+from scene_readback import dxf_vectors
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3")
@@ -65,25 +66,10 @@ def test_note_has_both_velocity_and_acceleration_plans(built):
     assert tex.count(r"\caption{Отрезки плана скоростей, положение") == len(project.plan_positions)
 
 
-def _vectors(doc) -> list[float]:
-    """Lengths of the arrows on the sheet: a LINE on layer «vectors» with a SOLID head ahead of it."""
-    msp = doc.modelspace()
-    tips = [np.array(e.dxf.vtx0)[:2] for e in msp.query("SOLID[layer=='vectors']")]
-    out = []
-    for ln in msp.query("LINE[layer=='vectors']"):
-        a, b = np.array(ln.dxf.start)[:2], np.array(ln.dxf.end)[:2]
-        u = (b - a) / (np.hypot(*(b - a)) or 1.0)
-        for t in tips:
-            ahead = float(np.dot(t - b, u))
-            if 0 < ahead < 5.0 and float(np.hypot(*(t - b - u * ahead))) < 1e-6:
-                out.append(float(np.hypot(*(t - a))))    # every head ahead on the line (collinear arrows)
-    return out
-
-
 def test_sheet_draws_both_plans_of_every_plan_position(built):
     project, _, _, doc = built
     texts = [e.dxf.text for e in _texts(doc)]
-    on_sheet = _vectors(doc)
+    on_sheet = dxf_vectors(doc)
     for j in project.plan_positions:
         assert f"План скоростей, положение {j}" in texts, j
         assert f"План ускорений, положение {j}" in texts, j

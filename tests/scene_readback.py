@@ -1,0 +1,46 @@
+"""Reading a sheet back for the «one construction drawn twice» tests (tests/scenes, tests/sheet1):
+a note part's content and the same sheet drawn from one project, and the lengths drawn on the DXF."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import ezdxf
+import numpy as np
+
+from reportgen.project import Project
+from reportgen.taskfile import load_task
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def part_and_sheet(example: str, part: Any, sheet: Any, number: int, folder: Path) -> tuple[Project, Any, Any]:
+    """(project, the part's content, the sheet's DXF read back) of an example: both from one project."""
+    project = Project(load_task(ROOT / "examples" / example / "task.toml"))
+    content = part.content(project)
+    path = folder / f"sheet{number}.dxf"
+    sheet.draw(project, number, 4).save(path)
+    return project, content, ezdxf.readfile(path)
+
+
+def polyline_length(points) -> float:
+    """The length along a polyline's points (mm)."""
+    return sum(math.dist(p, q) for p, q in zip(points[:-1], points[1:]))
+
+
+def dxf_vectors(doc) -> list[float]:
+    """Lengths of the arrows on the sheet: a LINE on layer «vectors» and the SOLID head whose tip
+    continues it (:meth:`drawings.primitives.Canvas.arrow`); every head ahead on the line counts
+    (collinear arrows)."""
+    msp = doc.modelspace()
+    tips = [np.array(e.dxf.vtx0)[:2] for e in msp.query("SOLID[layer=='vectors']")]
+    out = []
+    for ln in msp.query("LINE[layer=='vectors']"):
+        a, b = np.array(ln.dxf.start)[:2], np.array(ln.dxf.end)[:2]
+        u = (b - a) / (np.hypot(*(b - a)) or 1.0)
+        for t in tips:
+            ahead = float(np.dot(t - b, u))
+            if 0 < ahead < 5.0 and float(np.hypot(*(t - b - u * ahead))) < 1e-6:
+                out.append(float(np.hypot(*(t - a))))
+    return out
