@@ -340,6 +340,9 @@ def _read_link(value: Any, path: str, pos: int, points: dict[str, Vec2]) -> _Raw
             raise TaskError(lp, f"got {show(table)}",
                             "an inline table of distances, e.g. { " + ", ".join(
                                 f"{p}{q} = …" for p, q in itertools.combinations(pts, 2)) + " }")
+        if not table:              # the key spec's (and the schema's) at least one distance
+            raise TaskError(lp, "is empty", "at least one distance, e.g. { " + ", ".join(
+                f"{p}{q} = …" for p, q in itertools.combinations(pts, 2)) + " }, or no `lengths` (from the coordinates)")
         for key, v in table.items():
             if not isinstance(key, str):
                 raise TaskError(lp, "has a key that is not a string", "keys naming two points of the link")

@@ -299,3 +299,13 @@ def test_top_level_must_be_a_table():
         parse_task([1, 2])  # type: ignore[arg-type]
     assert info.value.path == "" and "a table" in str(info.value)
     expect_error({"mechanism": 5}, "mechanism", "got 5", "a table")
+
+
+def test_empty_lengths_table_is_refused_as_the_schema_does():
+    """`lengths = {}` (found by the schema ↔ loader property test): the key spec asks for at least one
+    distance, and so does the loader now."""
+    data = example(SLOTTED)
+    data["mechanism"]["link"][2]["lengths"] = {}
+    with pytest.raises(TaskError) as info:
+        parse_task(data)
+    assert info.value.path == "mechanism.link[2].lengths" and "empty" in str(info.value)
