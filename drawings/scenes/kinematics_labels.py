@@ -245,3 +245,79 @@ def along_passes(a: Vec, b: Vec, rich: Label, height: float) -> list[tuple[list[
     normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1]))) if d else 90.0
     far = around(middle, rich, height, normal, gaps=(4.0, 8.0, 12.0, 16.0))
     return [(near, 0), (near, 1), (far, 0)]
+
+
+def text_extent(label: Label, center: Vec, height: float) -> Polygon:
+    """Where the letters of ``label`` centred at ``center`` are: the union of its texts' boxes as
+    :func:`draw_rich` sets them (each its advance without the placer's width margin, from its
+    descenders to its cap height) — what a reader, and the label check, measures."""
+    small = _smaller(height)
+    w, _, _ = size(label, height)
+    x = center[0] - w / 2
+    y0 = center[1] - height / 2
+    pieces = []
+
+    def piece(px: float, py: float, text: str, h: float) -> None:
+        pw = style.text_width(text, h) / style.WIDTH_MARGIN
+        pieces.append(box(px, py - descent(text, h), px + pw, py + h))
+    for k, rich in enumerate(_items(label)):
+        if k:
+            piece(x, y0, SEPARATOR.strip(), height)
+            x += style.text_width(SEPARATOR, height)
+        piece(x, y0, rich.base, height)
+        xb = x + style.text_width(rich.base, height)
+        if rich.sup:
+            piece(xb, y0 + 0.45 * height, rich.sup, small)
+        if rich.sub:
+            piece(xb, y0 - 0.35 * height, rich.sub, small)
+        x += _one_width(rich, height)
+    return shapely.union_all(pieces)
+
+
+def own_point(candidates: Sequence[Vec], label: Label, height: float, p: Vec,
+              others: Sequence[Vec], near_mm: float) -> list[Vec]:
+    """Those candidate centres whose label box lies within ``near_mm`` of its point ``p`` and no
+    nearer to any of the ``others`` (the view's other labelled points) than to ``p`` — a letter a
+    reader would take for another point's is no place for it (issue 12: «O» nearer to S₁)."""
+    from shapely.geometry import Point
+    pt = Point(p)
+    qs = [Point(q) for q in others if math.dist(q, p) > MM_ROUNDOFF]
+    out = []
+    for c in candidates:
+        b = text_extent(label, c, height)
+        d = b.distance(pt)
+        if d <= near_mm and all(b.distance(q) >= d + 0.5 for q in qs):
+            out.append(c)
+    return out
+
+
+def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefer_deg: float,
+                      others: Sequence[Vec], inside: Polygon | None = None,
+                      optional: bool = False) -> Polygon | None:
+    """A point's letter: beside ``p`` (within LABEL_NEAR_MM, nearer to it than to the ``others``)
+    where it overlaps no text and crosses no line, then crossing one line; where no such spot is
+    free, farther out on a thin leader from the point (the leader is part of what it names);
+    else beside it, overlapping the fewest."""
+    from shapely.geometry import LineString, Point
+    from reportgen.tolerances import LABEL_NEAR_MM
+    near = own_point(around(p, label, height, prefer_deg, gaps=(0.6, 1.5, 3.0, 4.5, 6.0)),
+                     label, height, p, others, LABEL_NEAR_MM - 1.0)
+    poly = place_passes(canvas, [(near, 0), (near, 1)], label, height, inside, optional=True,
+                        names=Point(p)) if near else None
+    if poly is not None:
+        return poly
+    leader: list = []
+
+    def named(poly: Polygon):
+        q = poly.exterior.interpolate(poly.exterior.project(Point(p)))
+        leader.append((q.x, q.y))
+        return LineString([(q.x, q.y), p])
+
+    far = around(p, label, height, prefer_deg, gaps=(8.0, 11.0, 14.0, 18.0))
+    poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named)
+    if poly is not None:
+        canvas.layout.add_line(leader[0], p, dxfattribs={"layer": "thin"})
+        return poly
+    fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
+    return place_passes(canvas, [(fallback, 0), (fallback, 1)], label, height, inside, optional,
+                        names=Point(p))

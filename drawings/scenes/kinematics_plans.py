@@ -26,6 +26,7 @@ from reportgen.scenes.plans import UNITS, plan_scene
 from reportgen.scenes.scene import Arrow, Scene
 
 from drawings.scenes import render
+from drawings.scenes.kinetostatics_views import place_vector_name
 
 #: Room for letters and names around a plan's points, and the caption / title strips, mm.
 PAD_LABELS, STRIP = 16.0, 12.0
@@ -95,14 +96,14 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
     inside = label_region(view, small)
     if small:
         place_small_letters(view, scene, helper, letter_height, inside)
+    others = [view.transform(lb.at) for lb in scene.labels if lb.role == "point"]
     for lb in scene.labels if not small else ():
         if lb.role != "point":
             continue
         keys = lb.anchor.split(":", 1)[1].split(",")
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
         p = view.transform(lb.at)
-        rl.place_rich(view, rl.around(p, label, letter_height, 45.0), label, letter_height,
-                      inside=inside, optional=small, names=ShapelyPoint(p))
+        rl.place_point_label(view, p, label, letter_height, 45.0, others, inside=inside)
     # names of the components along their arrows
     if names:
         for lb in scene.labels:
@@ -112,8 +113,7 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
             if math.dist(a, b) < 1.0:
                 continue
             rich = rl.from_tex(lb.text)
-            rl.place_passes(view, rl.along_passes(a, b, rich, 3.5), rich, 3.5, inside=inside,
-                            names=LineString([a, b]))
+            place_vector_name(view, a, b, rich, 3.5, inside)
     return drawn
 
 

@@ -160,14 +160,15 @@ def _draw_letters(view: View, scene: Scene, k: float) -> None:
     cx = sum(p[0] for p in pts) / max(len(pts), 1) / k
     cy = sum(p[1] for p in pts) / max(len(pts), 1) / k
     c = view.transform((cx, cy))
+    others = [view.transform((lb.at[0] / k, lb.at[1] / k)) for lb in scene.labels
+              if lb.role in ("point", "number")]
     for lb in scene.labels:
         if lb.role != "point":
             continue
         p = view.transform((lb.at[0] / k, lb.at[1] / k))
         rich = rl.from_tex(lb.text)
         prefer = 90.0 if lb.text.startswith("S_") else math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
-        rl.place_rich(view, rl.around(p, rich, 5.0, prefer), rich, 5.0, inside=_inside(view),
-                      names=ShapelyPoint(p))
+        rl.place_point_label(view, p, rich, 5.0, prefer, others, inside=_inside(view))
 
 
 def _draw_numbers(view: View, project: Project, scene: Scene, k: float) -> None:

@@ -168,12 +168,22 @@ def _leader_candidates(lb: Label, w: float, h: float, gap: float,
     return out
 
 
+def _own(box, p, others: list, margin: float) -> bool:
+    """Is ``box`` nearer (by ``margin``) to its point ``p`` than to any of the ``others`` — the
+    figure's other labelled points? A letter nearer to another point reads as that point's."""
+    d = _dist_box(p, box)
+    return all(_dist_box(q, box) >= d + margin for q in others
+               if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF)
+
+
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
-           lines: list | None = None):
+           lines: list | None = None, others: list | None = None):
     """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
-    scene's middle first), or beside the middle of a vector on either side; where every such box
-    hits one, farther out on a leader. Returns (centre, box, on a leader)."""
+    scene's middle first, nearest first, and nearer to it than to any of the ``others``), or
+    beside the middle of a vector on either side; where every such box hits one, farther out on a
+    leader. Returns (centre, box, on a leader)."""
     w, h = size
+    point = lb.role != "vector" or lb.along is None
     cands: list[tuple[float, float]] = []
     if lb.role == "vector" and lb.along is not None and lb.leader:
         cands = _leader_candidates(lb, w, h, gap)
@@ -208,6 +218,8 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
             box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
             if _boxes_hit(box, boxes):
                 continue
+            if point and not leader and others and not _own(box, lb.at, others, 0.75 * gap):
+                continue
             near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
                     and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
             hits = sum(1 for s in near if _crosses(box, s))
@@ -241,11 +253,12 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     out = []
     boxes: list = []
     lines = _lines(scene)
+    others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
     for i, lb in enumerate(scene.labels):
         if lb.role not in roles:
             continue
         size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
-        c, b, leader = _place(lb, size, boxes, centre, gap, lines)
+        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others)
         boxes.append(b)
         out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), leader)))
     return out

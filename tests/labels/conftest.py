@@ -8,18 +8,10 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml"))
 
-#: Known label defects still open (issue 12): sheet 1's scheme letters and plan labels (O, A₀, S₁
-#: ~10 mm from their points; the acceleration plans' aτ/an labels up to 12.5 mm from their vectors;
-#: crowded plans of the idle-stroke position) and section 1's plan figures. A case listed here must
-#: still fail (strict xfail): whoever fixes it removes it from here.
-_SHEET1 = ("sheet 1 and section 1's plans: letters farther than LABEL_NEAR_MM from their point or "
-           "nearer to another point (issue 12, open)")
-REWORKED: dict[tuple[str, str], str] = {
-    **{(e, "sheet1-kinematics"): _SHEET1 for e in ("press", "press-en", "shaper", "shaper-uk", "conveyor",
-                                                  "crank-slider", "class3")},
-    ("control-work", "sheet1-control"): _SHEET1 + " (the control sheet draws the same plans)",
-    **{(e, "plans"): _SHEET1 for e in ("press", "press-en", "conveyor", "crank-slider", "class3")},
-}
+#: Known label defects still open, by (example, sheet stem or note-figure group): reason. A case
+#: listed here must still fail (strict xfail): whoever fixes it removes it from here. Empty: sheet 1's
+#: and section 1's plan labels (issue 12) were the last and pass now.
+REWORKED: dict[tuple[str, str], str] = {}
 
 
 def case(example: str, what: str):
