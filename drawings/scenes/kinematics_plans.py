@@ -8,8 +8,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import LineString, Point, Polygon, box
-from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry import Point, Polygon, box
 from shapely.ops import nearest_points
 
 from drawings import style
