@@ -45,8 +45,9 @@ SCHEME_MAX_MM = (470.0, 400.0)
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
 #: The small velocity plans: the crank's vector is at most this long, mm.
 SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
-#: Gap between views, and between the two plans of the analysed position put together, mm.
-VIEW_GAP, PAIR_GAP = 10.0, 10.0
+#: Gap between views, and between the two plans of a plan position put together (smaller, so that
+#: a pair reads as one: the views' own margins keep the drawings ~30 mm apart), mm.
+VIEW_GAP, PAIR_GAP = 10.0, 4.0
 #: The plans of the analysed position may widen by this much to give their names room, mm.
 GROW_PLANS_MM = 40.0
 
