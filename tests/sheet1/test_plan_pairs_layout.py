@@ -104,3 +104,14 @@ def test_nothing_overlaps_or_leaves_the_field(drawn):
     for k, (n, v) in enumerate(views):
         for m, w in views[k + 1:]:
             assert not v.rect.overlaps(w.rect), (n, m)
+
+
+def test_a_third_plan_position_takes_height_from_the_schemes_box():
+    from reportgen.scenes.boxes import DEFAULT
+    from reportgen.scenes.positions import positions_scales
+    shaper = (0.0, 0.0, 0.617, 0.640)               # the shaper's plan of positions, m
+    assert positions_scales(shaper, DEFAULT, 1)[0][1] == "1:2,5"          # 256 mm ≤ 270 mm
+    assert positions_scales(shaper, DEFAULT, 2)[0][1] == "1:2,5"
+    assert positions_scales(shaper, DEFAULT, 3)[0][1] == "1:4"            # 256 mm > 230 mm
+    press = (0.0, 0.0, 0.948, 0.340)                # wide and low: the width decides
+    assert {positions_scales(press, DEFAULT, n)[0][1] for n in (1, 2, 3)} == {"1:2,5"}
