@@ -214,7 +214,7 @@ def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] |
         h = max(b.height for b in blocks)
         parts, x = [], 0.0
         for b in blocks:
-            parts += [(n, x + dx, h - b.height + dy, pw, ph) for n, dx, dy, pw, ph in b.parts]   # tops aligned
+            parts += [(n, x + dx, dy, pw, ph) for n, dx, dy, pw, ph in b.parts]
             x += b.width + VIEW_GAP
         return Block("plans", x - VIEW_GAP, h, tuple(parts))
 
