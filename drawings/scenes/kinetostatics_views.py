@@ -71,6 +71,13 @@ class Panel:
         return self.paint(sheet, rect)
 
 
+def _title_and_scales(view: View, title: str, upper: str, lower: str) -> None:
+    """The view's title, and two captions (e.g. μl and μF) at its bottom."""
+    view.title(title)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), upper, 3.5, "bottom-center")
+    view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), lower, 3.5, "bottom-center")
+
+
 def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
     """A free-body diagram's scene (:mod:`reportgen.scenes.free_body`, the note draws the same):
     the group (or the crank) cut out at μl, its hinges and blocks, every force at its point at the

@@ -39,7 +39,7 @@ PENS = {"contour": (1.1, "-"), "thin": (0.45, "-"), "hidden": (0.9, (0, (4, 2)))
         "axis": (0.45, (0, (8, 2, 1, 2))), "vectors": (1.0, "-"), "construction": (0.3, ":")}
 COLOURS = {"absolute": "black", "relative": "tab:blue", "normal": "tab:green", "tangential": "tab:red",
            "coriolis": "tab:purple", "sliding": "tab:orange",
-           "load": "black", "found": "tab:red", "read": "tab:blue"}
+           "load": "black", "found": "tab:red", "read": "tab:blue", "known": "tab:blue"}
 
 
 @dataclass(frozen=True)
