@@ -8,6 +8,7 @@ from typing import Mapping
 
 from .dynamics import DynamicsScenes, dynamics_scenes
 from .free_body import FreeBody, free_bodies
+from .meshing import MeshingScene, meshing_scene
 from .output_diagrams import output_diagrams_scene
 from .plans import plan_scene
 from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
@@ -81,3 +82,9 @@ class Scenes:
         """The free-body diagrams at another μl (a sheet whose views do not fit at the replica's)."""
         ks = self.project.kinetostatics
         return free_bodies(ks, self.project.linkage, self.project.structure, mu_l)
+
+    @cached_property
+    def meshing(self) -> MeshingScene:
+        """The meshing picture of the [gears] pair at sheet 4's scale (the note's figure is a
+        window of it)."""
+        return meshing_scene(self.project.gears)
