@@ -215,16 +215,16 @@ def free_body_scene(ks, linkage, links: tuple[int, ...], key: str | None, forces
         ents.append(Arrow(ident, _vec(a), _vec(b), f.role))
         labels.append(Label(force_tex(f.name), ident, _vec((a + b) / 2), "vector", (_vec(a), _vec(b))))
     for c in couples:
-        p = np.asarray(mm(c.point))
+        o = np.asarray(mm(c.point))
         a0, a1 = (math.radians(150.0), math.radians(390.0))
         if c.value < 0:
             a0, a1 = a1, a0
         t = np.linspace(a0, a1, 25)
-        arc = [_vec(p + COUPLE_MM * np.array([math.cos(x), math.sin(x)])) for x in t]
+        arc = [_vec(o + COUPLE_MM * np.array([math.cos(x), math.sin(x)])) for x in t]
         ident = f"couple:{c.name}"
         ents.append(Polyline(f"{ident}:arc", tuple(arc[:-3]), "vectors"))
         ents.append(Arrow(ident, arc[-4], arc[-1], "load"))
-        labels.append(Label(force_tex(c.name), ident, _vec(p + np.array([0.0, COUPLE_MM + 3.0])), "point"))
+        labels.append(Label(force_tex(c.name), ident, _vec(o + np.array([0.0, COUPLE_MM + 3.0])), "point"))
     values = {f"force:{f.name}": f.magnitude for f in forces}
     return Scene(name, (Scale("μl", mu_l, "м/мм"),), tuple(ents), tuple(labels), frozen(points), frozen(values))
 
