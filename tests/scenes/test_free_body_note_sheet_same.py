@@ -14,7 +14,6 @@ import pytest
 
 from drawings.sheets import kinetostatics as sheet2
 from latex_templates.parts import kinetostatics as part
-from reportgen.scenes.free_body import ARROW_MM, MIN_ARROW_MM, schematic_length
 from reportgen.scenes.scene import Arrow, Circle
 from scene_readback import common_shift, dxf_arrows, part_and_sheet
 
@@ -54,9 +53,11 @@ def test_free_body_arrows_same_in_note_and_sheet(built):
 
 def test_free_body_arrow_lengths_follow_the_rule(built):
     """The largest force ARROW_MM long, the others √ of their share, none under MIN_ARROW_MM."""
+    from reportgen.scenes.free_body import ARROW_MM, MIN_ARROW_MM, schematic_length
     _, content, _ = built
     for name, fig in _figures(content).items():
-        scene = fig.scene
+        scene = getattr(fig, "scene", None)
+        assert scene is not None, f"{name}: the note's figure is not drawn from a scene"
         forces = {e.id: e for e in scene.entities if isinstance(e, Arrow) and e.id.startswith("force:")}
         mags = {i: scene.values[i] for i in forces}
         top = max(mags.values())
@@ -77,6 +78,7 @@ def test_mu_l_printed_is_the_scenes_and_the_sheets(built):
 
 
 def test_schematic_length_is_monotone_and_bounded():
+    from reportgen.scenes.free_body import ARROW_MM, MIN_ARROW_MM, schematic_length
     mags = [0.0, 1e-3, 1.0, 10.0, 250.0, 1e4]
     lengths = [schematic_length(m, 1e4) for m in mags]
     assert lengths == sorted(lengths)
