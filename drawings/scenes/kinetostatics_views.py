@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-from shapely.geometry import LineString, Point
+from shapely.geometry import LineString, MultiLineString, Point
 
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
@@ -103,16 +103,31 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
             if isinstance(e, SceneArrow):
                 view.arrow(e.a, e.b, None, head_mm=min(4.0, e.length))
         inside = view.rect.polygon()
+
+        def line_of(prefix: str):
+            """What a link's number or a couple's name names: its lines (sheet mm)."""
+            parts = [[view.transform(p) for p in ((e.a, e.b) if isinstance(e, SceneSegment) else e.points)]
+                     for e in scene.entities if e.id.startswith(prefix) and isinstance(e, (SceneSegment, ScenePolyline))]
+            return MultiLineString(parts) if parts else None
+
         for lb in scene.labels:
             if lb.role == "point":
                 kind, ident = lb.anchor.split(":", 1)
                 if kind == "point":
                     view.label(lb.at, ident, 5.0, prefer_deg=135.0)
                 else:                # a couple's name over its arc
-                    place_label(view, [np.asarray(lb.at)], plain(ident), LABEL_MM)
+                    arc = next((e.points for e in scene.entities if e.id == f"{lb.anchor}:arc"
+                                and isinstance(e, ScenePolyline)), ())
+                    place_label(view, [np.asarray(lb.at)] + [np.asarray(q) for q in arc[::3]], plain(ident),
+                                LABEL_MM, names=line_of(lb.anchor))
         for lb in scene.labels:
             if lb.role == "link":
-                place_label(view, [np.asarray(lb.at)], lb.text, LABEL_MM)
+                named = line_of(f"link{lb.text}:")
+                if named is None:      # a link drawn at one point (a block): its block's outline
+                    blocks = [e for e in scene.entities if isinstance(e, ScenePolyline) and e.id.startswith("block:")]
+                    near = min(blocks, key=lambda e: min(math.dist(q, lb.at) for q in e.points), default=None)
+                    named = None if near is None else line_of(near.id)
+                place_label(view, [np.asarray(lb.at)], lb.text, LABEL_MM, names=named)
         for lb in scene.labels:
             if lb.role != "vector" or lb.along is None:
                 continue
@@ -225,9 +240,10 @@ def place_vector_name(view: View, a, b, rich, height: float, inside) -> None:
     rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, names=line)
 
 
-def place_label(view: View, anchors: list[np.ndarray], text: str, height: float) -> None:
+def place_label(view: View, anchors: list[np.ndarray], text: str, height: float, names=None) -> None:
     """A label near the first anchor (model points) where a box of 16 directions × 3 distances
-    overlaps no text and crosses no line; else :meth:`Canvas.label` at the first anchor."""
+    overlaps no text and crosses no line; else :meth:`Canvas.label` at the first anchor. ``names``:
+    what it names (a geometry, sheet mm) when that is not the anchor point (a link, an arc)."""
     from drawings import style
     from drawings.primitives import text_box
     w = style.text_width(text, height)
@@ -241,9 +257,9 @@ def place_label(view: View, anchors: list[np.ndarray], text: str, height: float)
                 if not view.rect.polygon().contains(box):
                     continue
                 if view.annotations.hits_box(box) == 0 and view.annotations.crossings(box) == 0:
-                    view.text_mm(c, text, height, "center", names=Point(p))
+                    view.text_mm(c, text, height, "center", names=names if names is not None else Point(p))
                     return
-    view.label(anchors[0], text, height)
+    view.label(anchors[0], text, height, names=names)
 
 
 def lever_panel(name: str, scene: Scene) -> Panel:

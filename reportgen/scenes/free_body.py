@@ -182,11 +182,14 @@ def free_body_scene(ks, linkage, links: tuple[int, ...], key: str | None, forces
             ents.append(Segment(f"link{k}:{names[i]}{names[j]}", pts[i], pts[j], "contour", (HINGE_MM, HINGE_MM)))
         for n, p in zip(names, pts):
             points[n] = p
-        if pts:
-            c = np.mean(np.asarray(pts), axis=0)
-            d = np.asarray(pts[-1]) - np.asarray(pts[0]) if len(pts) > 1 else np.array([1.0, 0.0])
+        if outline:           # the link's number beside the middle of its longest side
+            i, j = max(outline, key=lambda e: math.dist(pts[e[0]], pts[e[1]]))
+            a, b = np.asarray(pts[i]), np.asarray(pts[j])
+            d = b - a
             nrm = np.array([-d[1], d[0]]) / (float(np.hypot(*d)) or 1.0)
-            labels.append(Label(str(k), f"link:{k}", _vec(c + nrm * 4.0), "link"))
+            labels.append(Label(str(k), f"link:{k}", _vec((a + b) / 2 + nrm * 4.0), "link"))
+        elif pts:             # a block: beside its point
+            labels.append(Label(str(k), f"link:{k}", _vec(np.asarray(pts[0]) + np.array([0.0, 4.0])), "link"))
     hinges, blocks = _pairs_drawn(ks, key)
     drawn: list[Vec2] = []
     for p in hinges + [b for b, _ in blocks]:
@@ -224,7 +227,7 @@ def free_body_scene(ks, linkage, links: tuple[int, ...], key: str | None, forces
         ident = f"couple:{c.name}"
         ents.append(Polyline(f"{ident}:arc", tuple(arc[:-3]), "vectors"))
         ents.append(Arrow(ident, arc[-4], arc[-1], "load"))
-        labels.append(Label(force_tex(c.name), ident, _vec(o + np.array([0.0, COUPLE_MM + 3.0])), "point"))
+        labels.append(Label(force_tex(c.name), ident, _vec(o + np.array([0.0, COUPLE_MM])), "point"))
     values = {f"force:{f.name}": f.magnitude for f in forces}
     return Scene(name, (Scale("μl", mu_l, "м/мм"),), tuple(ents), tuple(labels), frozen(points), frozen(values))
 
