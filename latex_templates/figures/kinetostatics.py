@@ -34,8 +34,9 @@ def symbol(name: str, text: str = "\\text") -> str:
     return tex.replace("\\text{", text + "{") if text != "\\text" else tex
 
 
-#: The free-body diagrams' largest page size (mm): the text block's width, under half its height.
-FBD_MAX_W_MM, FBD_MAX_H_MM = 160.0, 120.0
+#: The free-body diagrams' largest page size (mm): the text block's width, 0,8 of its height (a tall group
+#: keeps room for its labels; the caption and a line of text fit under it).
+FBD_MAX_W_MM, FBD_MAX_H_MM = 160.0, 170.0
 
 
 def free_body_figure(scene):

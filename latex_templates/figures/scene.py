@@ -67,6 +67,7 @@ def _mathtext(tex: str) -> str:
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
         tex = active().localize_latex(tex)      # the note's language: F_{\\text{и}1} → F_{\\text{i}1}
         tex = tex.replace("\\text{", "\\mathrm{")
+        tex = tex.replace("'_{", "^{\\prime}_{")     # mathtext sets F'_{и2} as F′ then a lowered и2
         parts = tex.split(",")
         return ", ".join(f"${p}$" for p in parts)
     return tex

@@ -23,7 +23,7 @@ from .scene import Arrow, Circle, Entity, Label, Polyline, Scale, Scene, Segment
 
 #: The largest force arrow (paper mm) and the shortest; the hinge circles' radius; a block's size.
 ARROW_MM = 40.0
-MIN_ARROW_MM = 10.0
+MIN_ARROW_MM = 15.0
 HINGE_MM = 1.5
 BLOCK_MM = (12.0, 6.0)
 GUIDE_MM = 30.0
