@@ -217,17 +217,17 @@ def free_body_scene(ks, linkage, links: tuple[int, ...], key: str | None, forces
         ident = f"force:{f.name}"
         ents.append(Arrow(ident, _vec(a), _vec(b), f.role))
         labels.append(Label(force_tex(f.name), ident, _vec((a + b) / 2), "vector", (_vec(a), _vec(b))))
-    for c in couples:
-        o = np.asarray(mm(c.point))
+    for cp in couples:
+        o = np.asarray(mm(cp.point))
         a0, a1 = (math.radians(150.0), math.radians(390.0))
-        if c.value < 0:
+        if cp.value < 0:
             a0, a1 = a1, a0
         t = np.linspace(a0, a1, 25)
         arc = [_vec(o + COUPLE_MM * np.array([math.cos(x), math.sin(x)])) for x in t]
-        ident = f"couple:{c.name}"
+        ident = f"couple:{cp.name}"
         ents.append(Polyline(f"{ident}:arc", tuple(arc[:-3]), "vectors"))
         ents.append(Arrow(ident, arc[-4], arc[-1], "load"))
-        labels.append(Label(force_tex(c.name), ident, _vec(o + np.array([0.0, COUPLE_MM])), "point"))
+        labels.append(Label(force_tex(cp.name), ident, _vec(o + np.array([0.0, COUPLE_MM])), "point"))
     values = {f"force:{f.name}": f.magnitude for f in forces}
     return Scene(name, (Scale("μl", mu_l, "м/мм"),), tuple(ents), tuple(labels), frozen(points), frozen(values))
 
