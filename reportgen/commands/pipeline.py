@@ -109,6 +109,8 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
         results = build_results(project)
     task = project.task
     todo = _sheet_list(project) if sheets else []
+    if todo and parallel_possible():
+        _shared_imports()
     child = _Child.start(project, tmp, todo, cache) if todo and parallel_possible() else None
     pending = None
     try:
@@ -146,6 +148,16 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
         if pending is not None:
             pending.cancel()
     return results
+
+
+def _shared_imports() -> None:
+    """Load what both the note and the sheets use (matplotlib with the note's style, shapely, Jinja
+    and the catalogues) before the sheets' process is forked: the child inherits it instead of
+    importing it a second time (≈ 0.5 s of CPU); the note would import it next anyway."""
+    import shapely.geometry  # noqa: F401
+
+    import latex_templates.figures  # noqa: F401
+    import latex_templates.render  # noqa: F401
 
 
 def _sheet_list(project: Any) -> list[tuple[str, Any]]:
