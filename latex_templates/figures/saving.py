@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
+from reportgen.errors import ReportgenError
+
 #: The metadata that would make a PDF differ from run to run (None: not written).
 PDF_METADATA = {"CreationDate": None, "ModDate": None, "Producer": None}
 
@@ -31,8 +33,8 @@ def save_pdf(fig: Any, target: Path, box: Any = None) -> None:
     _release(fig)
 
 
-class _Measured(Exception):
-    """Stops a save once the tight bounding box is known (:func:`tight_box`)."""
+class _Measured(ReportgenError):
+    """Stops a save once the tight bounding box is known (:func:`tight_box`); never leaves it."""
 
 
 def tight_box(fig: Any) -> Any:
@@ -48,7 +50,7 @@ def tight_box(fig: Any) -> Any:
 
     def record(*args: Any, **kwargs: Any) -> Any:
         found["box"] = measure(*args, **kwargs)
-        raise _Measured
+        raise _Measured("the tight box is measured")
 
     fig.get_tightbbox = record
     try:
