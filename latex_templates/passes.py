@@ -18,6 +18,7 @@ from __future__ import annotations
 import subprocess
 import sys
 from pathlib import Path
+from typing import Callable
 
 #: Passes on the real figures before giving up on stable auxiliary files (latexmk's default is 5).
 MAX_PASSES = 5
@@ -45,7 +46,7 @@ def _run(cmd: list[str], cwd: Path) -> int:
     return subprocess.run(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL).returncode
 
 
-def drive(tex: Path, build_dir_name: str, go: "callable[[], bool]") -> int:  # type: ignore[valid-type]
+def drive(tex: Path, build_dir_name: str, go: Callable[[], bool]) -> int:
     """Pass 1 now, then (once ``go()`` says the figures are real) the passes until the auxiliary
     files are stable, then xdvipdfmx. Returns an exit status."""
     work = tex.parent

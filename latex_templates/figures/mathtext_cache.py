@@ -22,11 +22,13 @@ from typing import Any
 CACHE_SIZE = 4096
 
 _installed = False
+#: matplotlib's own ``_parse_cached`` (per parser object), kept for the tests' comparison.
+original: Any = None
 
 
 def share_parses() -> bool:
     """Install the process-wide parse cache (once); False when this matplotlib does not allow it."""
-    global _installed
+    global _installed, original
     if _installed:
         return True
     import matplotlib as mpl
@@ -42,6 +44,7 @@ def share_parses() -> bool:
     @functools.lru_cache(CACHE_SIZE)
     def parsed(output_type: str, rc: tuple, s: str, dpi: float, prop: Any, antialiased: bool,
                flags: Any) -> Any:
+        del rc                      # part of the key only: the parser reads the settings itself
         return inner(parsers[output_type], s, dpi, prop, antialiased, flags)
 
     def _parse_cached(self: Any, s: str, dpi: float, prop: Any, antialiased: bool, flags: Any) -> Any:
@@ -50,9 +53,10 @@ def share_parses() -> bool:
         rc = tuple(mpl.rcParams[k] for k in settings)
         return parsed(kind, rc, s, dpi, prop, antialiased, flags)
 
+    original = MathTextParser.__dict__["_parse_cached"]
     _parse_cached.reportgen_shared = True  # type: ignore[attr-defined]
     _parse_cached.cache_info = parsed.cache_info  # type: ignore[attr-defined]
     _parse_cached.cache_clear = parsed.cache_clear  # type: ignore[attr-defined]
-    MathTextParser._parse_cached = _parse_cached  # type: ignore[method-assign]
+    MathTextParser._parse_cached = _parse_cached  # type: ignore[attr-defined]
     _installed = True
     return True

@@ -5,7 +5,6 @@ told to, a failed pass keeps the .tex and the log and says where, and the early 
 same PDF as latexmk."""
 from __future__ import annotations
 
-import io
 import shutil
 import subprocess
 import sys
