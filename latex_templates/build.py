@@ -116,19 +116,66 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
                                 f"{APT_INSTALL}", kept=f"the LaTeX source {tex}")
     build_dir = work / BUILD_DIR
     build_dir.mkdir(exist_ok=True)
-    if not (build_dir / (tex.stem + ".aux")).exists():
-        toc = provisional_toc(tex.read_text(encoding="utf-8"))
-        if toc.strip():
-            (build_dir / (tex.stem + ".toc")).write_text(toc, encoding="utf-8")
-    env = dict(os.environ)
-    env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH",
-                                                             DEFAULT_SOURCE_DATE_EPOCH)
-    env["FORCE_SOURCE_DATE"] = "1"
+    _write_provisional_toc(tex, build_dir)
+    env = _tex_env(source_date_epoch)
     cmd = [exe, "-xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
            f"-outdir={BUILD_DIR}", tex.name]
     proc = subprocess.Popen(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
     return PendingPdf(tex, proc, strict_references)
+
+
+class PendingPasses(PendingPdf):
+    """xelatex's first pass running on placeholder figures (:mod:`latex_templates.passes`);
+    :meth:`figures_ready` lets it go on with the real ones; :meth:`wait` as for latexmk."""
+
+    def figures_ready(self) -> None:
+        stdin = self.proc.stdin
+        if stdin is None:
+            return
+        try:
+            stdin.write("1")
+            stdin.close()
+        except (BrokenPipeError, OSError):   # the first pass failed already: wait() says why
+            pass
+        self.proc.stdin = None
+
+
+def start_passes(tex_path: Path | str, *, strict_references: bool = True,
+                 source_date_epoch: str | None = None) -> PendingPasses:
+    """Start the first xelatex pass of a cold build now, on the figures' placeholders (see
+    :mod:`latex_templates.passes`); the later passes wait for :meth:`PendingPasses.figures_ready`.
+    Raise BuildError when TeX is missing."""
+    import sys
+
+    tex = Path(tex_path).resolve()
+    work = tex.parent
+    for program in ("xelatex", "xdvipdfmx"):
+        if shutil.which(program) is None:
+            raise BuildError(STAGE, f"no TeX: '{program}' was not found; install TeX Live with: "
+                                    f"{APT_INSTALL}", kept=f"the LaTeX source {tex}")
+    build_dir = work / BUILD_DIR
+    build_dir.mkdir(exist_ok=True)
+    _write_provisional_toc(tex, build_dir)
+    driver = Path(__file__).with_name("passes.py")      # by path: no package import, stdlib only
+    proc = subprocess.Popen([sys.executable, str(driver), tex.name, BUILD_DIR], cwd=work,
+                            env=_tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
+    return PendingPasses(tex, proc, strict_references)
+
+
+def _write_provisional_toc(tex: Path, build_dir: Path) -> None:
+    if not (build_dir / (tex.stem + ".aux")).exists():
+        toc = provisional_toc(tex.read_text(encoding="utf-8"))
+        if toc.strip():
+            (build_dir / (tex.stem + ".toc")).write_text(toc, encoding="utf-8")
+
+
+def _tex_env(source_date_epoch: str | None) -> dict[str, str]:
+    env = dict(os.environ)
+    env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH", DEFAULT_SOURCE_DATE_EPOCH)
+    env["FORCE_SOURCE_DATE"] = "1"
+    return env
 
 
 _HEADING_RE = re.compile(r"\\(notestructheading|section|subsection|subsubsection)\{")

@@ -595,4 +595,5 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
     )
     env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell, math_text_letters=math_text_letters,
                        fallback_glyph_classes=fallback_glyph_classes, t=_t)
-    return env
+    from .jinja_cache import use_cache
+    return use_cache(env)     # compiled templates from the build cache, when a build has one

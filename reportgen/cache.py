@@ -16,6 +16,8 @@ What, each under a key that is a SHA-256 of everything the entry depends on:
   always drawn again (cheap), its preview only when its DXF changed.
 - ``tex/<key>/``: LaTeX's auxiliary files of the last build of a task file (key = its absolute
   path): latexmk starts from them and runs only the passes the change needs (often one).
+- ``jinja/<key>.code``: the note's templates and catalogue snippets compiled by Jinja (key = the
+  source, its name, the syntax options, the Jinja and Python versions; ``latex_templates.jinja_cache``).
 
 Each kind keeps its newest entries only (``KEEP``). A cache that cannot be written is skipped.
 """

@@ -13,6 +13,10 @@ from matplotlib.ticker import FuncFormatter  # noqa: E402
 
 from reportgen.numbers import significant  # noqa: E402
 
+from .mathtext_cache import share_parses  # noqa: E402
+
+share_parses()   # a formula parsed once per process, not once per renderer (same bytes)
+
 STYLE: dict[Any, Any] = {
     # a list: matplotlib falls back to the next family for a glyph the first lacks (₁ in "О₁")
     "font.family": ["Liberation Serif", "DejaVu Serif"],

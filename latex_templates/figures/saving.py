@@ -9,21 +9,69 @@ the same bytes whichever process writes a figure.
 """
 from __future__ import annotations
 
+import os
 import sys
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
+from reportgen.errors import ReportgenError
+
 #: The metadata that would make a PDF differ from run to run (None: not written).
 PDF_METADATA = {"CreationDate": None, "ModDate": None, "Producer": None}
 
 
-def save_pdf(fig: Any, target: Path) -> None:
-    """Write ``fig`` to ``target`` as PDF (reproducible bytes) and let pyplot forget it."""
+def save_pdf(fig: Any, target: Path, box: Any = None) -> None:
+    """Write ``fig`` to ``target`` as PDF (reproducible bytes) and let pyplot forget it; ``box``:
+    its tight bounding box measured already (:func:`tight_box`), the same bytes as "tight"."""
     exact = getattr(fig, "reportgen_exact", False)
-    fig.savefig(target, format="pdf", bbox_inches=None if exact else "tight", metadata=PDF_METADATA)
+    target = Path(target)
+    part = target.with_name(f".{target.name}.part")  # then renamed: a reader sees a whole file
+    fig.savefig(part, format="pdf", bbox_inches=None if exact else (box or "tight"), metadata=PDF_METADATA)
+    os.replace(part, target)
     _release(fig)
+
+
+class _Measured(ReportgenError):
+    """Stops a save once the tight bounding box is known (:func:`tight_box`); never leaves it."""
+
+
+def tight_box(fig: Any) -> Any:
+    """The padded tight bounding box (inches) that saving ``fig`` as PDF with ``bbox_inches="tight"``
+    computes: matplotlib's own computation, stopped before anything is drawn. Saving afterwards with
+    this box skips that computation and writes the same bytes (tests/speed/test_figure_saving.py)."""
+    import io
+
+    import matplotlib as mpl
+
+    found: dict[str, Any] = {}
+    measure = fig.get_tightbbox
+
+    def record(*args: Any, **kwargs: Any) -> Any:
+        found["box"] = measure(*args, **kwargs)
+        raise _Measured("the tight box is measured")
+
+    fig.get_tightbbox = record
+    try:
+        fig.savefig(io.BytesIO(), format="pdf", bbox_inches="tight", metadata=PDF_METADATA)
+    except _Measured:
+        pass
+    finally:
+        del fig.get_tightbbox
+    if "box" not in found:           # pragma: no cover - a matplotlib that computes it elsewhere
+        return None
+    pad = mpl.rcParams["savefig.pad_inches"]
+    return found["box"].padded(pad, pad)
+
+
+def page_size_pt(fig: Any, box: Any = None) -> tuple[float, float]:
+    """The size (pt) of ``fig``'s PDF page: its figure size at a true scale, else its tight box."""
+    if getattr(fig, "reportgen_exact", False) or box is None:
+        w, h = fig.get_size_inches()
+    else:
+        w, h = box.width, box.height
+    return float(w) * 72.0, float(h) * 72.0
 
 
 def _release(fig: Any) -> None:
@@ -40,9 +88,22 @@ def _release(fig: Any) -> None:
 class FigureQueue:
     """Figures waiting to be saved, in the order the note placed them."""
     items: list[tuple[Any, Path]] = field(default_factory=list)
+    boxes: dict[int, Any] = field(default_factory=dict)   # id(fig) → its measured tight box
 
     def add(self, fig: Any, target: Path) -> None:
         self.items.append((fig, target))
+
+    def write_placeholders(self) -> None:
+        """Measure each figure's page and write an empty PDF of that size at its target, for a
+        first LaTeX pass while the figures are saved (:mod:`latex_templates.passes`); the measured
+        tight boxes are kept, so saving does not compute them again."""
+        from ..passes import placeholder_pdf
+
+        for fig, target in self.items:
+            box = None
+            if not getattr(fig, "reportgen_exact", False):
+                box = self.boxes[id(fig)] = tight_box(fig)
+            target.write_bytes(placeholder_pdf(*page_size_pt(fig, box)))
 
     def __len__(self) -> int:
         return len(self.items)
@@ -71,15 +132,15 @@ class FigureQueue:
         and returns a handle whose ``join()`` waits for it (and re-raises its error): that process
         saves one share while this one saves the other."""
         items, self.items = self.items, []
+        boxes = self.boxes
         if fork is None or len(items) < 2:
-            for fig, target in items:
-                save_pdf(fig, target)
+            _save_all(items, boxes)
             return
         queue = FigureQueue(items)
         mine, theirs = queue.shares(2)
-        child = fork(lambda: _save_all(theirs))
+        child = fork(lambda: _save_all(theirs, boxes))
         try:
-            _save_all(mine)
+            _save_all(mine, boxes)
         except BaseException:
             child.kill()
             raise
@@ -88,9 +149,9 @@ class FigureQueue:
             _release(fig)
 
 
-def _save_all(items: list[tuple[Any, Path]]) -> int:
+def _save_all(items: list[tuple[Any, Path]], boxes: dict[int, Any] | None = None) -> int:
     for fig, target in items:
-        save_pdf(fig, target)
+        save_pdf(fig, target, (boxes or {}).get(id(fig)))
     return len(items)
 
 

@@ -56,6 +56,8 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
 
     ``out`` must pass the output-folder rule (:mod:`reportgen.commands.outdir`) before anything is
     written."""
+    from latex_templates.jinja_cache import active as compiled_templates
+
     from .. import cache as build_cache
     from . import pipeline
 
@@ -67,14 +69,8 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
     store = build_cache.open_cache(task_path, pdf=pdf, sheets=sheets, latexmk=latexmk) if cache else None
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
     try:
-        if store is not None and store.restore_build(tmp):
-            progress.spans.append(pipeline.Span("from the cache", pipeline.MAIN, progress.origin, time.perf_counter()))
-            if not quiet:
-                print("  unchanged task: outputs from the cache", flush=True)
-        else:
-            pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
-            if store is not None:
-                store.store_build(tmp)
+        with compiled_templates(store.root if store is not None else None):
+            _build_into(tmp, project, progress, store, quiet=quiet, pdf=pdf, sheets=sheets, latexmk=latexmk)
     except ReportgenInputError:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
@@ -93,6 +89,21 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
         raise
     replace_folder(tmp, out)
     return progress.times
+
+
+def _build_into(tmp: Path, project: Project, progress: "Timeline", store, *, quiet: bool, pdf: bool,
+                sheets: bool, latexmk: str) -> None:
+    """The outputs into ``tmp``: from the cache when the task is unchanged, else built (and kept)."""
+    from . import pipeline
+
+    if store is not None and store.restore_build(tmp):
+        progress.spans.append(pipeline.Span("from the cache", pipeline.MAIN, progress.origin, time.perf_counter()))
+        if not quiet:
+            print("  unchanged task: outputs from the cache", flush=True)
+        return
+    pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
+    if store is not None:
+        store.store_build(tmp)
 
 
 def run(args: argparse.Namespace) -> int:

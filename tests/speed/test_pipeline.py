@@ -32,7 +32,7 @@ def _fail_in_the_sheets(monkeypatch):
             raise TaskError("mechanism.link[1].length", "made up for the test", "a positive length")
 
     monkeypatch.setattr(pipeline, "_sheet_list", lambda p: [("broken", Broken)] + list(original(p)))
-    monkeypatch.setattr(pipeline, "_note", lambda *_: None)
+    monkeypatch.setattr(pipeline, "_note", lambda *_, **__: (None, None))
 
 
 @pytest.mark.parametrize("jobs", ["2", "1"])
@@ -49,7 +49,7 @@ def test_an_error_in_the_sheets_comes_back_with_its_class_and_fields(tmp_path, m
 
 def test_the_sheets_run_in_parallel_with_the_note(tmp_path, monkeypatch):
     monkeypatch.setenv("REPORTGEN_JOBS", "2")
-    monkeypatch.setattr(pipeline, "_note", lambda *_: time.sleep(0.3))
+    monkeypatch.setattr(pipeline, "_note", lambda *_, **__: (time.sleep(0.3), None))
     timeline = pipeline.Timeline(quiet=True)
     build_cmd.build(str(PRESS), tmp_path / "out", quiet=True, pdf=False, timeline=timeline)
     lanes = {s.lane for s in timeline.spans}

@@ -93,4 +93,4 @@ def test_a_changed_number_rebuilt_with_the_cache_equals_an_uncached_build(builds
 
 
 def test_the_cache_holds_only_its_own_folders(builds):
-    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "previews", "tex"]
+    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "jinja", "previews", "tex"]

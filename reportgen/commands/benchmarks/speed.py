@@ -78,9 +78,12 @@ def critical_path_table(task_path: Path, quick: bool) -> Table:
     t.notes.append(f"the whole build: {end:.2f} s in this process (its imports done before); lanes: main = the "
                    "Python process (solve, the note's sections and report.tex, then its figures: half of them saved "
                    "by a second forked process meanwhile; results.json, then it waits), sheets = a forked process "
-                   "at a lower priority (DXF + PNG preview of each sheet), LaTeX = latexmk with xelatex")
-    t.notes.append("the critical path is main (solve → note's sections → figures) → LaTeX; the sheets overlap "
-                   "the note and LaTeX")
+                   "at a lower priority (DXF + PNG preview of each sheet), LaTeX = xelatex's passes and xdvipdfmx "
+                   "(latex_templates/passes.py; the first pass starts on placeholders of the figures' sizes while "
+                   "the figures are saved, the next ones once they are)")
+    t.notes.append("the critical path is main (solve → note's sections → figure sizes) → LaTeX (first pass beside "
+                   "the figures, then the passes on the real figures, xdvipdfmx); the sheets overlap the note and LaTeX")
+    t.notes.append(_load_note())
     if not pdf:
         t.notes.append("LaTeX not run (" + ("--quick" if quick else "latexmk not found") + ")")
     return t
@@ -126,7 +129,20 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
                    "latexmk, xelatex) — on 2 processors the wall time cannot be less than half of it")
     t.notes.append("incremental: each run changes the task's δ to a new value; the kinematics, kinetostatics and "
                    "gear previews come from the cache, LaTeX starts from the last build's aux files")
+    t.notes.append("cold: `--no-cache`, nothing read from or written to the cache (compiled templates, previews, "
+                   "LaTeX's aux files); warm and incremental: the cache as a student's second build has it")
+    t.notes.append(_load_note())
     return t
+
+
+def _load_note() -> str:
+    """The machine's load when a table was measured (other work shares the processors)."""
+    try:
+        one, five, _ = os.getloadavg()
+    except OSError:
+        return "load average: not known on this system"
+    return (f"load average at the end: {one:.1f} (1 min), {five:.1f} (5 min) on {os.cpu_count()} processors — "
+            "above the processor count the wall times are mostly waiting; compare the CPU times")
 
 
 def _one_number_changed(text: str, runs: int) -> list[str] | None:

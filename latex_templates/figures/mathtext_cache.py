@@ -1,0 +1,62 @@
+"""One cache of matplotlib's mathtext parses for the whole process, instead of one per renderer.
+
+Matplotlib caches a parsed formula (``MathTextParser._parse_cached``, 50 entries) under a key that
+includes the parser object, and every renderer makes its own parser: a figure saved with a tight
+bounding box parses each of its labels twice (one renderer measures, another draws), the sizes
+measured while the labels are placed are parsed again, and the letters that every figure shares
+(A, B, ω₁ …) are parsed again for every figure. Parsing (pyparsing) was about a fifth of the
+note's figure time.
+
+:func:`share_parses` keys the cache by what a parse depends on — the kind of output (vector or
+raster), the formula, dpi, font properties, antialiasing, the glyph-loading flags and the
+``mathtext.*`` settings — and not by the parser object, so the same formula is parsed once per
+process. A parse is a pure function of that key, so the output is the same bytes (checked by
+``tests/speed/test_mathtext_cache.py``). A matplotlib whose parser looks different is left alone.
+"""
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+#: Formulas kept (a note has a few hundred distinct labels and axis texts).
+CACHE_SIZE = 4096
+
+_installed = False
+#: matplotlib's own ``_parse_cached`` (per parser object), kept for the tests' comparison.
+original: Any = None
+
+
+def share_parses() -> bool:
+    """Install the process-wide parse cache (once); False when this matplotlib does not allow it."""
+    global _installed, original
+    if _installed:
+        return True
+    import matplotlib as mpl
+    from matplotlib.mathtext import MathTextParser
+
+    original = MathTextParser.__dict__.get("_parse_cached")
+    inner = getattr(original, "__wrapped__", None)
+    if inner is None or not hasattr(MathTextParser("path"), "_output_type"):
+        return False
+    settings = tuple(sorted(k for k in mpl.rcParams if k.startswith("mathtext.")))
+    parsers: dict[str, Any] = {}
+
+    @functools.lru_cache(CACHE_SIZE)
+    def parsed(output_type: str, rc: tuple, s: str, dpi: float, prop: Any, antialiased: bool,
+               flags: Any) -> Any:
+        del rc                      # part of the key only: the parser reads the settings itself
+        return inner(parsers[output_type], s, dpi, prop, antialiased, flags)
+
+    def _parse_cached(self: Any, s: str, dpi: float, prop: Any, antialiased: bool, flags: Any) -> Any:
+        kind = self._output_type
+        parsers.setdefault(kind, self)
+        rc = tuple(mpl.rcParams[k] for k in settings)
+        return parsed(kind, rc, s, dpi, prop, antialiased, flags)
+
+    original = MathTextParser.__dict__["_parse_cached"]
+    _parse_cached.reportgen_shared = True  # type: ignore[attr-defined]
+    _parse_cached.cache_info = parsed.cache_info  # type: ignore[attr-defined]
+    _parse_cached.cache_clear = parsed.cache_clear  # type: ignore[attr-defined]
+    MathTextParser._parse_cached = _parse_cached  # type: ignore[attr-defined]
+    _installed = True
+    return True

@@ -1,0 +1,102 @@
+"""xelatex's passes driven directly (``python -m latex_templates.passes``), so that the first pass can
+run while the note's figures are still being saved.
+
+The first pass of a cold build only writes the auxiliary files (contents, labels, page numbers);
+xelatex reads nothing of a figure but its size. ``reportgen build`` therefore writes a placeholder
+of each figure at its final size (:func:`placeholder_pdf`), starts this driver, saves the real
+figures meanwhile and then writes one byte to the driver's standard input: the driver runs the
+next passes on the real figures until the auxiliary files stop changing — latexmk's rule — and
+``xdvipdfmx`` makes the PDF from the last pass. The commands are latexmk's own, so the PDF is the
+same bytes; a placeholder of a slightly wrong size costs at most one more pass, never a different
+PDF, because the passes continue until the auxiliary files are stable on the real figures.
+
+Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3).
+Exit status: 0, or the failing program's status (its log says why).
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+from typing import Callable
+
+#: Passes on the real figures before giving up on stable auxiliary files (latexmk's default is 5).
+MAX_PASSES = 5
+#: Files of the output folder that are not auxiliary input of the next pass.
+_NOT_AUX = {".log", ".xdv", ".fls", ".pdf", ".fdb_latexmk"}
+CANCELLED = 3
+
+
+def xelatex_command(tex_name: str, build_dir: str) -> list[str]:
+    """The xelatex pass latexmk -xelatex runs (without ``-recorder``: it only writes the .fls)."""
+    return ["xelatex", "-no-pdf", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
+            f"-output-directory={build_dir}", tex_name]
+
+
+def xdvipdfmx_command(stem: str, build_dir: str) -> list[str]:
+    return ["xdvipdfmx", "-E", "-o", f"{build_dir}/{stem}.pdf", f"{build_dir}/{stem}.xdv"]
+
+
+def _aux_state(build_dir: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(build_dir.iterdir())
+            if p.is_file() and p.suffix not in _NOT_AUX}
+
+
+def _run(cmd: list[str], cwd: Path) -> int:
+    return subprocess.run(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL).returncode
+
+
+def drive(tex: Path, build_dir_name: str, go: Callable[[], bool]) -> int:
+    """Pass 1 now, then (once ``go()`` says the figures are real) the passes until the auxiliary
+    files are stable, then xdvipdfmx. Returns an exit status."""
+    work = tex.parent
+    build_dir = work / build_dir_name
+    status = _run(xelatex_command(tex.name, build_dir_name), work)
+    if status != 0:
+        return status
+    if not go():
+        return CANCELLED
+    for _ in range(MAX_PASSES):
+        before = _aux_state(build_dir)
+        status = _run(xelatex_command(tex.name, build_dir_name), work)
+        if status != 0:
+            return status
+        if _aux_state(build_dir) == before:
+            break
+    return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
+
+
+def placeholder_pdf(width_pt: float, height_pt: float) -> bytes:
+    """A one-page PDF of the given size with nothing on it (what xelatex reads of a figure)."""
+    objects = [b"<< /Type /Catalog /Pages 2 0 R >>",
+               b"<< /Type /Pages /Kids [3 0 R] /Count 1 >>",
+               b"<< /Type /Page /Parent 2 0 R /MediaBox [0 0 %.6f %.6f] /Contents 4 0 R "
+               b"/Resources << >> >>" % (width_pt, height_pt),
+               b"<< /Length 0 >>\nstream\n\nendstream"]
+    out = bytearray(b"%PDF-1.4\n")
+    offsets = []
+    for i, body in enumerate(objects, start=1):
+        offsets.append(len(out))
+        out += b"%d 0 obj\n" % i + body + b"\nendobj\n"
+    xref = len(out)
+    out += b"xref\n0 %d\n0000000000 65535 f \n" % (len(objects) + 1)
+    for off in offsets:
+        out += b"%010d 00000 n \n" % off
+    out += b"trailer\n<< /Size %d /Root 1 0 R >>\nstartxref\n%d\n%%%%EOF\n" % (len(objects) + 1, xref)
+    return bytes(out)
+
+
+def _go_from_stdin() -> bool:
+    return sys.stdin.buffer.read(1) == b"1"
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = sys.argv[1:] if argv is None else argv
+    if len(args) != 2:
+        print("usage: python -m latex_templates.passes TEX BUILD_DIR", file=sys.stderr)
+        return 2
+    return drive(Path(args[0]).resolve(), args[1], _go_from_stdin)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,122 @@
+"""xelatex's first pass on placeholders while the figures are saved (latex_templates/passes.py,
+FigureQueue.write_placeholders): the tight box measured first and then saved gives the bytes of a
+"tight" save, a placeholder has the figure's size, the driver waits for the figures and stops when
+told to, a failed pass keeps the .tex and the log and says where, and the early start writes the
+same PDF as latexmk."""
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from latex_templates import passes
+from latex_templates.build import start_passes
+from latex_templates.figures import new_figure
+from latex_templates.figures.saving import FigureQueue, page_size_pt, save_pdf, tight_box
+from reportgen.commands import build as build_cmd
+from reportgen.commands import pipeline
+from reportgen.errors import BuildError
+
+ROOT = Path(__file__).resolve().parents[2]
+PRESS = ROOT / "examples" / "press" / "task.toml"
+HAVE_TEX = all(shutil.which(p) for p in ("xelatex", "xdvipdfmx", "latexmk"))
+needs_tex = pytest.mark.skipif(not HAVE_TEX, reason="TeX Live (xelatex, xdvipdfmx, latexmk) is not installed")
+
+
+def _figure(i: int, exact: bool = False):
+    fig = new_figure(9, 6)
+    ax = fig.add_subplot()
+    ax.plot([0, 1, 2 + i], [0, i, 1], label=f"$\\omega_{{{i}}}$ кривая")
+    ax.set_title(f"рисунок {i}: $F_{{ур}}$ = {i},5")
+    ax.legend()
+    fig.reportgen_exact = exact
+    return fig
+
+
+def test_a_measured_tight_box_saves_the_bytes_of_a_tight_save(tmp_path):
+    tight, measured = tmp_path / "tight.pdf", tmp_path / "measured.pdf"
+    save_pdf(_figure(3), tight)
+    fig = _figure(3)
+    box = tight_box(fig)
+    assert box is not None and 0 < box.width < 9 / 2.54 + 1 and 0 < box.height < 6 / 2.54 + 1
+    save_pdf(fig, measured, box)
+    assert measured.read_bytes() == tight.read_bytes()
+
+
+def test_the_measuring_draws_nothing_and_leaves_the_figure_as_it_was(tmp_path):
+    fig = _figure(1)
+    tight_box(fig)
+    assert "get_tightbbox" not in vars(fig)            # the recording hook is gone
+    save_pdf(fig, tmp_path / "a.pdf")                   # still saves, as "tight"
+    save_pdf(_figure(1), tmp_path / "b.pdf")
+    assert (tmp_path / "a.pdf").read_bytes() == (tmp_path / "b.pdf").read_bytes()
+
+
+@pytest.mark.skipif(shutil.which("pdfinfo") is None, reason="poppler-utils is not installed")
+def test_a_placeholder_has_the_size_of_the_saved_figure(tmp_path):
+    queue = FigureQueue()
+    figs = [_figure(0), _figure(1, exact=True)]
+    for i, fig in enumerate(figs):
+        queue.add(fig, tmp_path / f"f{i}.pdf")
+    queue.write_placeholders()
+    placeholders = {p.name: _page_size(p) for p in tmp_path.glob("f*.pdf")}
+    queue.save()
+    assert not list(tmp_path.glob(".*.part"))          # saved by renaming a whole file into place
+    for name, size in placeholders.items():
+        real = _page_size(tmp_path / name)
+        assert size == pytest.approx(real, abs=1e-3), name
+    assert placeholders["f1.pdf"] == pytest.approx((9 / 2.54 * 72, 6 / 2.54 * 72), abs=1e-3)
+    assert page_size_pt(figs[1]) == pytest.approx(placeholders["f1.pdf"], abs=1e-3)
+
+
+def _page_size(pdf: Path) -> tuple[float, float]:
+    out = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, check=True).stdout
+    line = next(l for l in out.splitlines() if l.startswith("Page size:"))
+    w, _, h = line.split(":", 1)[1].split()[:3]
+    return float(w), float(h)
+
+
+MINIMAL = "\\documentclass{article}\\begin{document}\\tableofcontents\\section{A}x\\end{document}\n"
+
+
+@needs_tex
+@pytest.mark.parametrize("go, status", [(b"1", 0), (b"", passes.CANCELLED)])
+def test_the_driver_waits_for_the_figures_and_stops_when_told(tmp_path, go, status):
+    (tmp_path / "n.tex").write_text(MINIMAL, encoding="utf-8")
+    (tmp_path / "b").mkdir()
+    proc = subprocess.run([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path,
+                          input=go, capture_output=True)
+    assert proc.returncode == status
+    assert (tmp_path / "b" / "n.aux").is_file()        # the first pass ran either way
+    assert (tmp_path / "b" / "n.pdf").is_file() == (status == 0)
+    if status == 0:                                    # the contents line needed a second pass
+        assert "A" in (tmp_path / "b" / "n.toc").read_text(encoding="utf-8")
+
+
+@needs_tex
+def test_a_failed_first_pass_keeps_the_tex_and_the_log_and_says_where(tmp_path):
+    tex = tmp_path / "bad.tex"
+    tex.write_text("\\documentclass{article}\\begin{document}\\undefinedmacro\\end{document}\n", encoding="utf-8")
+    pending = start_passes(tex)
+    pending.figures_ready()
+    with pytest.raises(BuildError) as exc:
+        pending.wait()
+    assert "undefinedmacro" in exc.value.problem
+    assert str(tex) in exc.value.kept and "bad.log" in exc.value.kept
+    assert tex.is_file() and (tmp_path / "latex-build" / "bad.log").is_file()
+
+
+@needs_tex
+def test_the_early_first_pass_writes_the_pdf_latexmk_writes(tmp_path, monkeypatch):
+    monkeypatch.setenv("REPORTGEN_CACHE", "off")
+    early, late = pipeline.Timeline(quiet=True), pipeline.Timeline(quiet=True)
+    build_cmd.build(str(PRESS), tmp_path / "early", quiet=True, sheets=False, timeline=early)
+    build_cmd.build(str(PRESS), tmp_path / "late", quiet=True, sheets=False,
+                    latexmk=shutil.which("latexmk"), timeline=late)     # a named latexmk: run as it is
+    assert "note: figure sizes" in early.times and "note: figure sizes" not in late.times
+    assert (tmp_path / "early" / "report.pdf").read_bytes() == (tmp_path / "late" / "report.pdf").read_bytes()
+    assert (tmp_path / "early" / "latex-build" / "report.fdb_latexmk").exists() is False
+    assert (tmp_path / "late" / "latex-build" / "report.fdb_latexmk").is_file()
