@@ -18,6 +18,7 @@ from ..geometry import readonly
 from ..loads import StrokeWindow, external_loads, link_coordinate
 from ..roots import brent_root
 from .errors import DynamicsInputError
+from .memo import ReducedMemo
 from .reduction import constant_inertia, reduced_inertia, reduced_moment
 from ..tolerances import EDGE_ANGLE_TOL
 
@@ -101,6 +102,7 @@ class ProjectCycle:
         self.J_const = constant_inertia(self.linkage, self.crank_inertia)
         self.switching = self._switching_thetas()
         self.breaks = _breaks(list(self.switching) + list(self._law_thetas()))
+        self._memo = ReducedMemo(self._compute, elementwise=project.model.positions_independent)
 
     # -- angles ---------------------------------------------------------------------------------
     @property
@@ -166,13 +168,22 @@ class ProjectCycle:
         return out
 
     # -- reduced quantities ---------------------------------------------------------------------
-    def kinematics(self, theta: np.ndarray):
-        return self.project.kinematics_at(self.phi_of(np.atleast_1d(theta)))
+    def kinematics(self, theta: np.ndarray, accelerations: bool = True):
+        return self.project.model.solve(self.phi_of(np.atleast_1d(theta)), accelerations=accelerations)
 
-    def reduced(self, theta: np.ndarray) -> Reduced:
+    def reduced(self, theta: np.ndarray, with_dJ: bool = True) -> Reduced:
+        """M_red, J_red and dJ_red/dθ at ``theta`` (without ``with_dJ``, dJ is NaN and the
+        accelerations are not solved); values already computed for this cycle are not computed
+        again (:mod:`reportgen.dynamics.memo`)."""
         t = np.asarray(theta, dtype=float)
-        kin = self.kinematics(t.ravel())
+        M, J, dJ = self._memo(np.ascontiguousarray(t.ravel()), with_dJ)
+        if dJ is None:
+            dJ = np.full(t.size, np.nan)
+        return Reduced(M.reshape(t.shape), J.reshape(t.shape), dJ.reshape(t.shape))
+
+    def _compute(self, theta: np.ndarray, with_dJ: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        kin = self.kinematics(theta, accelerations=with_dJ)
         loads = external_loads(self.mechanism, self.linkage, self.project.model, kin, self.project.strokes)
         M = reduced_moment(loads, kin)
-        J, dJ = reduced_inertia(kin, self.linkage, self.crank_inertia)
-        return Reduced(M.reshape(t.shape), J.reshape(t.shape), dJ.reshape(t.shape))
+        J, dJ = reduced_inertia(kin, self.linkage, self.crank_inertia, with_dJ)
+        return M, J, dJ

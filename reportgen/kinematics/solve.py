@@ -128,6 +128,13 @@ class KinematicModel:
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality + " (at the sketch's crank angle)",
                                 self._feasible_dyads_only()) from None
 
+    @property
+    def positions_independent(self) -> bool:
+        """Whether every position is solved on its own, so that its values do not depend on the
+        other angles of the same call (closed-form dyads; a class III group's Newton iterations
+        run until the whole call converges)."""
+        return all(isinstance(s, DyadSolver) for s in self.solvers)
+
     # -- driver --------------------------------------------------------------------------------
     def _driver(self, q: np.ndarray, phi: np.ndarray) -> None:
         d = self.linkage.drive_link
@@ -330,8 +337,10 @@ class KinematicModel:
                 ok &= solver.solve(q, phi, strict=False) >= 0
         return _intervals(np.degrees(phi), ok)
 
-    def solve(self, phi) -> KinematicsResult:
-        """Positions, velocities and accelerations at the crank angles ``phi`` (rad)."""
+    def solve(self, phi, accelerations: bool = True) -> KinematicsResult:
+        """Positions, velocities and accelerations at the crank angles ``phi`` (rad); without
+        ``accelerations`` they are not solved (q̈, ε and every point's acceleration are NaN): for
+        the callers that read positions and velocities only (the dynamics' M_red and J_red)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         try:
             q, _ = self.positions(phi, strict=True)
@@ -341,7 +350,7 @@ class KinematicModel:
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality, feasible) from None
         jacobians: dict = {}
         qd = self.velocities(q, jacobians=jacobians)
-        qdd = self.accelerations(q, qd, jacobians=jacobians)
+        qdd = self.accelerations(q, qd, jacobians=jacobians) if accelerations else np.full_like(q, np.nan)
         return self._result(phi, q, qd, qdd)
 
     def _result(self, phi, q, qd, qdd) -> KinematicsResult:
