@@ -39,7 +39,13 @@ class Cycle(Protocol):
     J_const: float          # the constant part of J_red (Мерцалов's first group without flywheel)
     breaks: np.ndarray      # sorted break angles θ in [0, 2π], 0 and 2π included
 
-    def reduced(self, theta: np.ndarray) -> Reduced: ...
+    def reduced(self, theta: np.ndarray, with_dJ: bool = True) -> Reduced: ...
+
+
+def moment_and_inertia(cycle: Cycle, theta: np.ndarray) -> Reduced:
+    """M_red and J_red at ``theta`` for the callers that read no dJ_red/dθ (a project's cycle then
+    solves no accelerations; dJ may be NaN)."""
+    return cycle.reduced(theta, with_dJ=False)
 
 
 def _breaks(inner: list[float]) -> np.ndarray:
@@ -61,7 +67,7 @@ class FunctionCycle:
     def __post_init__(self) -> None:
         object.__setattr__(self, "breaks", _breaks(list(self.inner_breaks)))
 
-    def reduced(self, theta: np.ndarray) -> Reduced:
+    def reduced(self, theta: np.ndarray, with_dJ: bool = True) -> Reduced:   # noqa: ARG002 (dJ is cheap here)
         t = np.asarray(theta, dtype=float)
         return Reduced(*(np.broadcast_to(np.asarray(g(t), dtype=float), t.shape).copy()
                          for g in (self.M, self.J, self.dJ)))
