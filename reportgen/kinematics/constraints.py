@@ -55,9 +55,31 @@ def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
     return cons
 
 
-def world(q: np.ndarray, k: int, p: tuple[float, float]) -> np.ndarray:
+Trig = tuple[np.ndarray, np.ndarray]
+"""cos θ and sin θ of every body at every position, (N, bodies) each (:func:`trig_of`)."""
+
+
+def trig_of(q: np.ndarray) -> Trig:
+    """cos and sin of every body's angle, computed once per set of poses (the constraint rows of a
+    solve read each body's rotation many times; the same bits as computing them one by one)."""
+    th = q[:, :, 2]
+    return np.cos(th), np.sin(th)
+
+
+def arm(q: np.ndarray, k: int, p, trig: Trig | None = None) -> np.ndarray:
+    """R(θ_k)·p at every position, (N, 2): :func:`reportgen.geometry.rot`, from ``trig`` when given."""
+    if trig is None:
+        return rot(q[:, k, 2], p)
+    c, s = trig[0][:, k], trig[1][:, k]
+    out = np.empty((q.shape[0], 2))
+    out[:, 0] = c * p[0] - s * p[1]
+    out[:, 1] = s * p[0] + c * p[1]
+    return out
+
+
+def world(q: np.ndarray, k: int, p: tuple[float, float], trig: Trig | None = None) -> np.ndarray:
     """Position of local point p of body k: shape (N, 2)."""
-    return q[:, k, :2] + rot(q[:, k, 2], p)
+    return q[:, k, :2] + arm(q, k, p, trig)
 
 
 def residual(cons: list[Constraint], q: np.ndarray) -> np.ndarray:
@@ -75,24 +97,25 @@ def residual(cons: list[Constraint], q: np.ndarray) -> np.ndarray:
     return np.stack(out, axis=-1) if out else np.zeros((q.shape[0], 0))
 
 
-def _slide_frame(s: SlidePair, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _slide_frame(s: SlidePair, q: np.ndarray, trig: Trig | None = None
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Of a prismatic pair, all (N, 2): the guide line's normal n, the arms Rpa (the sliding point
     on its link) and Rl (the line's point on the guide), and d from the line's point to the sliding point."""
     a, g = s.link, s.guide
-    n = rot(q[:, g, 2], (-s.line_dir[1], s.line_dir[0]))
-    Rpa = rot(q[:, a, 2], s.point_local)
-    Rl = rot(q[:, g, 2], s.line_point)
+    n = arm(q, g, (-s.line_dir[1], s.line_dir[0]), trig)
+    Rpa = arm(q, a, s.point_local, trig)
+    Rl = arm(q, g, s.line_point, trig)
     d = q[:, a, :2] + Rpa - q[:, g, :2] - Rl
     return n, Rpa, Rl, d
 
 
-def jacobian_rows(c: Constraint, q: np.ndarray) -> list[dict[int, np.ndarray]]:
+def jacobian_rows(c: Constraint, q: np.ndarray, trig: Trig | None = None) -> list[dict[int, np.ndarray]]:
     """Rows of ∂Φ/∂q of one constraint: each row maps a body to its (N, 3) coefficients."""
     N = q.shape[0]
     one, zero = np.ones(N), np.zeros(N)
     if isinstance(c, RevoluteC):
-        Rpi = rot(q[:, c.i, 2], c.pi)
-        Rpj = rot(q[:, c.j, 2], c.pj)
+        Rpi = arm(q, c.i, c.pi, trig)
+        Rpj = arm(q, c.j, c.pj, trig)
         rx = {c.i: np.stack((one, zero, -Rpi[:, 1]), -1)}
         ry = {c.i: np.stack((zero, one, Rpi[:, 0]), -1)}
         rx[c.j] = rx.get(c.j, 0) + np.stack((-one, zero, Rpj[:, 1]), -1)
@@ -100,7 +123,7 @@ def jacobian_rows(c: Constraint, q: np.ndarray) -> list[dict[int, np.ndarray]]:
         return [rx, ry]
     s = c.s
     a, g = s.link, s.guide
-    n, Rpa, Rl, d = _slide_frame(s, q)
+    n, Rpa, Rl, d = _slide_frame(s, q, trig)
     r1 = {a: np.stack((n[:, 0], n[:, 1], _dot(n, perp(Rpa))), -1)}
     r1[g] = r1.get(g, 0) + np.stack((-n[:, 0], -n[:, 1], _dot(perp(n), d) - _dot(n, perp(Rl))), -1)
     r2 = {a: np.stack((zero, zero, one), -1)}
@@ -108,28 +131,29 @@ def jacobian_rows(c: Constraint, q: np.ndarray) -> list[dict[int, np.ndarray]]:
     return [r1, r2]
 
 
-def gamma(c: Constraint, q: np.ndarray, qd: np.ndarray) -> list[np.ndarray]:
+def gamma(c: Constraint, q: np.ndarray, qd: np.ndarray, trig: Trig | None = None) -> list[np.ndarray]:
     """Acceleration right-hand side γ of each row: J·q̈ = γ."""
     if isinstance(c, RevoluteC):
-        Rpi = rot(q[:, c.i, 2], c.pi)
-        Rpj = rot(q[:, c.j, 2], c.pj)
+        Rpi = arm(q, c.i, c.pi, trig)
+        Rpj = arm(q, c.j, c.pj, trig)
         wi2 = qd[:, c.i, 2] ** 2
         wj2 = qd[:, c.j, 2] ** 2
         gm = wi2[:, None] * Rpi - wj2[:, None] * Rpj
         return [gm[:, 0], gm[:, 1]]
     s = c.s
     a, g = s.link, s.guide
-    n, Rpa, Rl, d = _slide_frame(s, q)
+    n, Rpa, Rl, d = _slide_frame(s, q, trig)
     wa, wg = qd[:, a, 2], qd[:, g, 2]
     dd = qd[:, a, :2] + wa[:, None] * perp(Rpa) - qd[:, g, :2] - wg[:, None] * perp(Rl)
     g1 = (wg ** 2) * _dot(n, d) - 2 * wg * _dot(perp(n), dd) + _dot(n, (wa ** 2)[:, None] * Rpa - (wg ** 2)[:, None] * Rl)
     return [g1, np.zeros_like(g1)]
 
 
-def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int]) -> tuple[np.ndarray, list[list[dict[int, np.ndarray]]]]:
+def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int], trig: Trig | None = None
+             ) -> tuple[np.ndarray, list[list[dict[int, np.ndarray]]]]:
     """Jacobian restricted to the bodies ``cols`` (N, m, 3·len(cols)), plus all rows for the RHS."""
     N = q.shape[0]
-    rows_all = [jacobian_rows(c, q) for c in cons]
+    rows_all = [jacobian_rows(c, q, trig) for c in cons]
     m = sum(len(r) for r in rows_all)
     J = np.zeros((N, m, 3 * len(cols)))
     idx = {b: 3 * i for i, b in enumerate(cols)}

@@ -19,7 +19,7 @@ from ..linkage import Linkage, compile_linkage, sketch_q
 from ..numbers import clean_array
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
-from .constraints import assemble, gamma, known_terms, perp, rot, world
+from .constraints import Trig, arm, assemble, gamma, known_terms, perp, rot, trig_of, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
 from ..geometry import readonly as _ro
@@ -144,17 +144,17 @@ class KinematicModel:
         O = np.asarray(self.linkage.sketch[self.linkage.drive_axis])
         q[:, d, :2] = O - rot(th, b.local[self.linkage.drive_axis])
 
-    def _driver_vel(self, q: np.ndarray, qd: np.ndarray) -> None:
+    def _driver_vel(self, q: np.ndarray, qd: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
         p = self.linkage.bodies[d].local[self.linkage.drive_axis]
         qd[:, d, 2] = self.omega
-        qd[:, d, :2] = -self.omega * perp(rot(q[:, d, 2], p))
+        qd[:, d, :2] = -self.omega * perp(arm(q, d, p, trig))
 
-    def _driver_acc(self, q: np.ndarray, qdd: np.ndarray) -> None:
+    def _driver_acc(self, q: np.ndarray, qdd: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
         p = self.linkage.bodies[d].local[self.linkage.drive_axis]
         qdd[:, d, 2] = 0.0
-        qdd[:, d, :2] = self.omega ** 2 * rot(q[:, d, 2], p)
+        qdd[:, d, :2] = self.omega ** 2 * arm(q, d, p, trig)
 
     # -- branches --------------------------------------------------------------------------------
     def _choose_branches(self) -> None:
@@ -268,26 +268,29 @@ class KinematicModel:
                 ok &= solver.newton(q, phi, strict=strict) >= 0
         return q, ok
 
-    def velocities(self, q: np.ndarray, upto: int | None = None, jacobians: dict | None = None) -> np.ndarray:
-        """q̇ at the poses ``q``; ``jacobians`` (a dict) keeps each group's J for the accelerations."""
+    def velocities(self, q: np.ndarray, upto: int | None = None, jacobians: dict | None = None,
+                   trig: Trig | None = None) -> np.ndarray:
+        """q̇ at the poses ``q``; ``jacobians`` (a dict) keeps each group's J for the accelerations;
+        ``trig``: cos and sin of the poses' angles when the caller has them (:func:`trig_of`)."""
         qd = np.zeros_like(q)
-        self._driver_vel(q, qd)
-        return self._by_groups(q, qd, lambda _cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians)
+        self._driver_vel(q, qd, trig)
+        return self._by_groups(q, qd, lambda _cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians,
+                               trig)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None,
-                      jacobians: dict | None = None) -> np.ndarray:
+                      jacobians: dict | None = None, trig: Trig | None = None) -> np.ndarray:
         """q̈ at the poses ``q`` with velocities ``qd`` (``jacobians``: those the velocities kept)."""
         qdd = np.zeros_like(q)
-        self._driver_acc(q, qdd)
+        self._driver_acc(q, qdd, trig)
 
         def rhs(cons, rows, cols):
-            gm = np.stack([r for c in cons for r in gamma(c, q, qd)], axis=-1)
+            gm = np.stack([r for c in cons for r in gamma(c, q, qd, trig)], axis=-1)
             return gm - known_terms(rows, qdd, set(cols))
-        return self._by_groups(q, qdd, rhs, upto, jacobians)
+        return self._by_groups(q, qdd, rhs, upto, jacobians, trig)
 
     def _by_groups(self, q: np.ndarray, out: np.ndarray,
                    rhs: Callable[[list, list, list[int]], np.ndarray], upto: int | None,
-                   jacobians: dict | None = None) -> np.ndarray:
+                   jacobians: dict | None = None, trig: Trig | None = None) -> np.ndarray:
         """Solve the groups in order (the first ``upto`` of them): J·x = rhs(constraints, rows, columns)
         for each group's unknowns, written into ``out`` (the derivative the later groups read). The
         velocity and acceleration systems share J: a ``jacobians`` dict carries it from one to the other."""
@@ -299,7 +302,7 @@ class KinematicModel:
             if jacobians is not None and n_g in jacobians:
                 J, rows = jacobians[n_g]
             else:
-                J, rows = assemble(cons, q, cols)
+                J, rows = assemble(cons, q, cols, trig)
                 if jacobians is not None:
                     jacobians[n_g] = (J, rows)
             x = self._solve(J, rhs(cons, rows, cols), g, q)
@@ -349,22 +352,23 @@ class KinematicModel:
                 feasible = self.feasible_ranges()
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality, feasible) from None
         jacobians: dict = {}
-        qd = self.velocities(q, jacobians=jacobians)
-        qdd = self.accelerations(q, qd, jacobians=jacobians) if accelerations else np.full_like(q, np.nan)
-        return self._result(phi, q, qd, qdd)
+        trig = trig_of(q)
+        qd = self.velocities(q, jacobians=jacobians, trig=trig)
+        qdd = self.accelerations(q, qd, jacobians=jacobians, trig=trig) if accelerations else np.full_like(q, np.nan)
+        return self._result(phi, q, qd, qdd, trig)
 
-    def _result(self, phi, q, qd, qdd) -> KinematicsResult:
+    def _result(self, phi, q, qd, qdd, trig: Trig | None = None) -> KinematicsResult:
         lk = self.linkage
         points: dict[str, Callable[[], PointMotion]] = {}
         for k in sorted(lk.bodies):
             for name in lk.bodies[k].points:
                 if name in points or (k == 0):
                     continue
-                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name])
+                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name], trig)
         for name in lk.ground:
             if name not in points:
                 points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
-        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local)) for k in lk.moving}
+        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local), trig) for k in lk.moving}
         links = {k: LinkMotion(_ro(q[:, k, 2].copy()), _ro(qd[:, k, 2].copy()), _ro(qdd[:, k, 2].copy()))
                  for k in lk.moving}
         trans: dict[str, np.ndarray] = {}
@@ -396,8 +400,8 @@ class KinematicModel:
                 {k: lm(m) for k, m in links.items()})
 
     @staticmethod
-    def _point_motion(q, qd, qdd, k: int, p: tuple) -> PointMotion:
-        Rp = rot(q[:, k, 2], p)
+    def _point_motion(q, qd, qdd, k: int, p: tuple, trig: Trig | None = None) -> PointMotion:
+        Rp = arm(q, k, p, trig)
         w, e = qd[:, k, 2][:, None], qdd[:, k, 2][:, None]
         pos = q[:, k, :2] + Rp
         vel = qd[:, k, :2] + w * perp(Rp)
