@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Vec2", "vec2", "readonly", "rot", "rot_vec2", "perp", "cross", "dot"]
+__all__ = ["Vec2", "vec2", "readonly", "frozen", "rot", "rot_vec2", "perp", "cross", "dot"]
 
 #: A point or vector of the plane as plain floats (m in the task, mm on a drawing).
 Vec2 = tuple[float, float]
@@ -28,6 +28,13 @@ def readonly(a: Any, dtype: Any = float) -> np.ndarray:
     out = np.array(a, dtype=dtype)
     out.setflags(write=False)
     return out
+
+
+def frozen(a: np.ndarray) -> np.ndarray:
+    """``a`` itself made read-only, without a copy: for an array just computed and not shared
+    (:func:`readonly` copies, for arrays that someone else may still write to)."""
+    a.setflags(write=False)
+    return a
 
 
 def rot(theta: Any, p: Vec2 | np.ndarray) -> np.ndarray:

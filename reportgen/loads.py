@@ -104,7 +104,7 @@ def resistance_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsRe
     win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if linkage.omega >= 0 else -1.0)
     q = np.asarray(kin.q)
     working = win.on_working(kin.phi)
-    ends_q, _ = model.positions(np.array([strokes.phi_start, strokes.phi_end]))
+    ends_q = model.positions_kept((strokes.phi_start, strokes.phi_end))
     for i, ld in enumerate(mech.loads):
         if ld.kind != "resistance":
             continue

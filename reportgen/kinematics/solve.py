@@ -8,7 +8,8 @@ constant ω: θ₁ = φ − α, θ̇₁ = ω, θ̈₁ = 0.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from functools import cached_property
 from types import MappingProxyType
 from typing import Callable, Mapping
 
@@ -22,7 +23,7 @@ from ..task import Mechanism
 from .constraints import Trig, arm, assemble, gamma, known_terms, perp, rot, trig_of, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
-from ..geometry import readonly as _ro
+from ..geometry import frozen, readonly as _ro
 from ..tolerances import ABS_ROUNDOFF
 
 #: Largest crank step when following a class III+ group by continuation, rad.
@@ -77,7 +78,7 @@ def _deferred(fn: Callable, *args) -> Callable[[], PointMotion]:
 def _cleaned(make: Callable[[], PointMotion], v_scale: float, a_scale: float) -> PointMotion:
     """A point's motion with its round-off residue made exact zeros (see ``_without_residue``)."""
     m = make()
-    return PointMotion(m.pos, _ro(clean_array(m.vel, v_scale)), _ro(clean_array(m.acc, a_scale)))
+    return PointMotion(m.pos, frozen(clean_array(m.vel, v_scale)), frozen(clean_array(m.acc, a_scale)))
 
 
 def _fixed_point(xy, n: int) -> PointMotion:
@@ -96,8 +97,14 @@ class KinematicsResult:
     points: Mapping[str, PointMotion]
     coms: Mapping[int, PointMotion]
     links: Mapping[int, LinkMotion]
-    transmission_deg: Mapping[str, np.ndarray]
-    near_singular: tuple[tuple[int, str, float], ...] = field(default=())   # (index, group key, μ)
+    transmission_deg: Mapping[str, np.ndarray]      # computed when first read
+
+    @cached_property
+    def near_singular(self) -> tuple[tuple[int, str, float], ...]:
+        """(index, group key, μ) of every position where a group's transmission angle μ is below
+        ``NEAR_SINGULAR_DEG`` (group by group, in the order of the structure)."""
+        return tuple((int(i), key, float(mu[i])) for key, mu in self.transmission_deg.items()
+                     for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG))
 
     @property
     def phi_deg(self) -> np.ndarray:
@@ -201,6 +208,14 @@ class KinematicModel:
             margin = solver.solve(q, phi, strict=strict)
             ok &= margin >= 0
         return q, ok
+
+    def positions_kept(self, phi: tuple[float, ...]) -> np.ndarray:
+        """Poses at a few fixed crank angles asked again and again (the stroke's ends, read by the
+        resistance at every solve), computed once per model (read-only)."""
+        kept = self.__dict__.setdefault("_kept", {})
+        if phi not in kept:
+            kept[phi] = _ro(self.positions(np.array(phi, dtype=float))[0])
+        return kept[phi]
 
     def _step(self, ph: np.ndarray, prev_q: np.ndarray | None, dt: float, strict: bool) -> tuple[np.ndarray, bool]:
         """One position: dyads in closed form, class III+ groups by Newton from a prediction."""
@@ -369,19 +384,12 @@ class KinematicModel:
             if name not in points:
                 points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
         coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local), trig) for k in lk.moving}
-        links = {k: LinkMotion(_ro(q[:, k, 2].copy()), _ro(qd[:, k, 2].copy()), _ro(qdd[:, k, 2].copy()))
-                 for k in lk.moving}
-        trans: dict[str, np.ndarray] = {}
-        flags = []
-        for g in self.structure.groups[1:]:
-            mu = transmission_angle(lk, g, q)
-            trans[g.key] = _ro(mu)
-            for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG):
-                flags.append((int(i), g.key, float(mu[i])))
+        links = {k: LinkMotion(_ro(q[:, k, 2]), _ro(qd[:, k, 2]), _ro(qdd[:, k, 2])) for k in lk.moving}
+        trans = {g.key: _deferred(_transmission, lk, g, q) for g in self.structure.groups[1:]}
         points, coms, links = self._without_residue(points, coms, links)
-        return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), DerivedMotions(points),
-                                DerivedMotions(coms), MappingProxyType(links), MappingProxyType(trans),
-                                tuple(flags))
+        q = _ro(q)
+        return KinematicsResult(_ro(phi), self.omega, q, _ro(qd), _ro(qdd), DerivedMotions(points),
+                                DerivedMotions(coms), MappingProxyType(links), DerivedMotions(trans))
 
     def _without_residue(self, points, coms, links):
         """Velocities and accelerations that are round-off residue (a centre of mass on a fixed axis
@@ -393,7 +401,7 @@ class KinematicModel:
         v_scale, a_scale = w * size, w * w * size
 
         def lm(m: LinkMotion) -> LinkMotion:
-            return LinkMotion(m.angle, _ro(clean_array(m.omega, w)), _ro(clean_array(m.epsilon, w * w)))
+            return LinkMotion(m.angle, frozen(clean_array(m.omega, w)), frozen(clean_array(m.epsilon, w * w)))
 
         return ({n: _deferred(_cleaned, f, v_scale, a_scale) for n, f in points.items()},
                 {k: _deferred(_cleaned, f, v_scale, a_scale) for k, f in coms.items()},
@@ -403,10 +411,15 @@ class KinematicModel:
     def _point_motion(q, qd, qdd, k: int, p: tuple, trig: Trig | None = None) -> PointMotion:
         Rp = arm(q, k, p, trig)
         w, e = qd[:, k, 2][:, None], qdd[:, k, 2][:, None]
+        pR = perp(Rp)
         pos = q[:, k, :2] + Rp
-        vel = qd[:, k, :2] + w * perp(Rp)
-        acc = qdd[:, k, :2] + e * perp(Rp) - w * w * Rp
-        return PointMotion(_ro(pos), _ro(vel), _ro(acc))
+        vel = qd[:, k, :2] + w * pR
+        acc = qdd[:, k, :2] + e * pR - w * w * Rp
+        return PointMotion(frozen(pos), frozen(vel), frozen(acc))
+
+
+def _transmission(linkage: Linkage, g: Group, q: np.ndarray) -> np.ndarray:
+    return _ro(transmission_angle(linkage, g, q))
 
 
 def _intervals(deg: np.ndarray, ok: np.ndarray) -> tuple[tuple[float, float], ...]:
