@@ -89,3 +89,12 @@ def test_the_core_keeps_no_bare_division_floor() -> None:
     found = [str(p.relative_to(ROOT)) for p in (ROOT / "reportgen").rglob("*.py")
              if p.name != "tolerances.py" and re.search(r"(?<![\w.])1e-300", p.read_text(encoding="utf-8"))]
     assert not found, found
+
+
+def test_frozen_makes_the_array_itself_read_only() -> None:
+    from reportgen.geometry import frozen
+    a = np.arange(3.0)
+    b = frozen(a)
+    assert b is a and not a.flags.writeable
+    with pytest.raises(ValueError):
+        a[0] = 1.0

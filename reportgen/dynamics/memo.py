@@ -18,6 +18,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..geometry import frozen
+
 #: Calls kept (newest first searched); enough for the dynamics of one project.
 KEEP = 48
 
@@ -86,7 +88,4 @@ class ReducedMemo:
             self._known.append((new[order], Mn[order], Jn[order], None if dJn is None else dJn[order]))
             if len(self._known) > KEEP:
                 self._known.pop(0)
-        for a in (M, J, dJ):
-            if a is not None:
-                a.setflags(write=False)
-        return M, J, dJ
+        return frozen(M), frozen(J), (None if dJ is None else frozen(dJ))
