@@ -151,19 +151,44 @@ def gamma(c: Constraint, q: np.ndarray, qd: np.ndarray, trig: Trig | None = None
 
 def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int], trig: Trig | None = None
              ) -> tuple[np.ndarray, list[list[dict[int, np.ndarray]]]]:
-    """Jacobian restricted to the bodies ``cols`` (N, m, 3·len(cols)), plus all rows for the RHS."""
+    """Jacobian restricted to the bodies ``cols`` (N, m, 3·len(cols)), plus the rows' coefficients
+    of the other moving bodies (for the right-hand side, :func:`known_terms`).
+
+    The entries are those of :func:`jacobian_rows`, bit for bit (a second body's coefficients are
+    ``0 + x`` there, which turns −0.0 into 0.0: kept), written straight into J instead of being
+    stacked per row and copied (the solve's most frequent step)."""
     N = q.shape[0]
-    rows_all = [jacobian_rows(c, q, trig) for c in cons]
-    m = sum(len(r) for r in rows_all)
+    m = sum(c.rows for c in cons)
     J = np.zeros((N, m, 3 * len(cols)))
     idx = {b: 3 * i for i, b in enumerate(cols)}
+    rows_all: list[list[dict[int, np.ndarray]]] = []
     r = 0
-    for rows in rows_all:
-        for row in rows:
-            for b, coef in row.items():
+    for c in cons:
+        if isinstance(c, RevoluteC):
+            Rpi = arm(q, c.i, c.pi, trig)
+            Rpj = arm(q, c.j, c.pj, trig)
+            first = ((1.0, 0.0, -Rpi[:, 1]), (0.0, 1.0, Rpi[:, 0]))
+            second = ((-1.0, 0.0, 0 + Rpj[:, 1]), (0.0, -1.0, 0 + -Rpj[:, 0]))
+            bodies = (c.i, c.j)
+        else:
+            sp = c.s
+            n, Rpa, Rl, d = _slide_frame(sp, q, trig)
+            first = ((n[:, 0], n[:, 1], _dot(n, perp(Rpa))), (0.0, 0.0, 1.0))
+            second = ((0 + -n[:, 0], 0 + -n[:, 1], 0 + (_dot(perp(n), d) - _dot(n, perp(Rl)))), (0.0, 0.0, -1.0))
+            bodies = (sp.link, sp.guide)
+        rows: list[dict[int, np.ndarray]] = [{}, {}]
+        for b, coefs in zip(bodies, (first, second)):
+            for k, coef in enumerate(coefs):
                 if b in idx:
-                    J[:, r, idx[b]:idx[b] + 3] = coef
-            r += 1
+                    for t, v in enumerate(coef):
+                        J[:, r + k, idx[b] + t] = v
+                elif b != 0:
+                    out = np.empty((N, 3))
+                    for t, v in enumerate(coef):
+                        out[:, t] = v
+                    rows[k][b] = out
+        rows_all.append(rows)
+        r += c.rows
     return J, rows_all
 
 
