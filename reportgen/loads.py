@@ -27,7 +27,7 @@ from .kinematics.constraints import world
 from .kinematics.extremes import Strokes
 from .linkage import Linkage
 from .task import Mechanism
-from .geometry import readonly as _ro
+from .geometry import dot as _dot, readonly as _ro
 from .tolerances import ABS_ROUNDOFF
 
 
@@ -208,7 +208,7 @@ def power(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
         k = f.link
         r = np.asarray(f.point) - q[:, k, :2]
         v = qd[:, k, :2] + qd[:, k, 2][:, None] * np.stack((-r[:, 1], r[:, 0]), -1)
-        P += (np.asarray(f.vector) * v).sum(1)
+        P += _dot(np.asarray(f.vector), v)   # = (F·v).sum(1): two products and one sum, the same bits
     for m in loads.moments:
         P += np.asarray(m.value) * qd[:, m.link, 2]
     return P

@@ -19,7 +19,7 @@ import numpy as np
 from ..kinematics import KinematicsResult
 from ..linkage import Linkage
 from ..loads import LoadSet, power
-from ..geometry import readonly as _ro
+from ..geometry import dot as _dot, readonly as _ro
 
 
 def reduced_moment(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
@@ -37,7 +37,7 @@ def inertia_terms(kin: KinematicsResult, linkage: Linkage) -> Mapping[int, np.nd
             continue
         v = np.asarray(kin.coms[k].vel)
         om = np.asarray(kin.links[k].omega)
-        out[k] = _ro((b.mass * (v * v).sum(1) + b.inertia * om * om) / w2)
+        out[k] = _ro((b.mass * _dot(v, v) + b.inertia * om * om) / w2)
     return out
 
 
@@ -56,10 +56,10 @@ def reduced_inertia(kin: KinematicsResult, linkage: Linkage, crank_inertia: floa
             continue
         v = np.asarray(kin.coms[k].vel)
         om = np.asarray(kin.links[k].omega)
-        J += (b.mass * (v * v).sum(1) + b.inertia * om * om) / w ** 2
+        J += (b.mass * _dot(v, v) + b.inertia * om * om) / w ** 2
         if dJ is not None:
             a, eps = np.asarray(kin.coms[k].acc), np.asarray(kin.links[k].epsilon)
-            dJ += 2.0 * (b.mass * (v * a).sum(1) + b.inertia * om * eps) / w ** 3
+            dJ += 2.0 * (b.mass * _dot(v, a) + b.inertia * om * eps) / w ** 3
     return _ro(J), (None if dJ is None else _ro(dJ))
 
 

@@ -373,7 +373,10 @@ class KinematicModel:
         return self._result(phi, q, qd, qdd, trig)
 
     def _result(self, phi, q, qd, qdd, trig: Trig | None = None) -> KinematicsResult:
+        """The result over the solve's own arrays q, q̇, q̈ (made read-only in place, not copied:
+        the links' motions are views of them)."""
         lk = self.linkage
+        q, qd, qdd = frozen(q), frozen(qd), frozen(qdd)
         points: dict[str, Callable[[], PointMotion]] = {}
         for k in sorted(lk.bodies):
             for name in lk.bodies[k].points:
@@ -384,11 +387,10 @@ class KinematicModel:
             if name not in points:
                 points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
         coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local), trig) for k in lk.moving}
-        links = {k: LinkMotion(_ro(q[:, k, 2]), _ro(qd[:, k, 2]), _ro(qdd[:, k, 2])) for k in lk.moving}
+        links = {k: LinkMotion(q[:, k, 2], qd[:, k, 2], qdd[:, k, 2]) for k in lk.moving}
         trans = {g.key: _deferred(_transmission, lk, g, q) for g in self.structure.groups[1:]}
         points, coms, links = self._without_residue(points, coms, links)
-        q = _ro(q)
-        return KinematicsResult(_ro(phi), self.omega, q, _ro(qd), _ro(qdd), DerivedMotions(points),
+        return KinematicsResult(_ro(phi), self.omega, q, qd, qdd, DerivedMotions(points),
                                 DerivedMotions(coms), MappingProxyType(links), DerivedMotions(trans))
 
     def _without_residue(self, points, coms, links):
