@@ -32,7 +32,7 @@ class ReducedMemo:
         self._compute = compute
         self.elementwise = elementwise
         self._calls: dict[tuple[bytes, bool], tuple[np.ndarray, np.ndarray, np.ndarray | None]] = {}
-        # elementwise: (sorted θ, M, J, dJ or None), each sorted alike, newest last
+        # elementwise: (θ's bits as sorted int64 keys, M, J, dJ or None), in the keys' order, newest last
         self._known: list[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray | None]] = []
         self.computed = 0            # angles computed (for tests and benchmarks)
 
@@ -57,18 +57,20 @@ class ReducedMemo:
         return M, J, (dJ if with_dJ else None)
 
     def _elementwise(self, theta: np.ndarray, with_dJ: bool):
+        # angles are matched by their bits (as int64 keys, sorted): −0.0 and 0.0 are two angles here
+        keys = np.ascontiguousarray(theta, dtype=float).view(np.int64)
         n = theta.size
         M, J = np.empty(n), np.empty(n)
         dJ = np.empty(n) if with_dJ else None
         todo = np.arange(n)
-        for ts, Mk, Jk, dJk in reversed(self._known):
+        for ks, Mk, Jk, dJk in reversed(self._known):
             if todo.size == 0:
                 break
             if with_dJ and dJk is None:
                 continue
-            t = theta[todo]
-            pos = np.minimum(np.searchsorted(ts, t), ts.size - 1)
-            found = ts[pos] == t
+            k = keys[todo]
+            pos = np.minimum(np.searchsorted(ks, k), ks.size - 1)
+            found = ks[pos] == k
             if not found.any():
                 continue
             at, src = todo[found], pos[found]
@@ -78,14 +80,14 @@ class ReducedMemo:
                 dJ[at] = dJk[src]
             todo = todo[~found]
         if todo.size:
-            new = theta[todo]
-            Mn, Jn, dJn = self._fresh(new, with_dJ)
-            M[todo], J[todo] = Mn, Jn
+            # each new angle once (a search may ask for the same angle twice in one call)
+            uk, inv = np.unique(keys[todo], return_inverse=True)
+            Mn, Jn, dJn = self._fresh(uk.view(float), with_dJ)
+            M[todo], J[todo] = Mn[inv], Jn[inv]
             if dJ is not None:
                 assert dJn is not None
-                dJ[todo] = dJn
-            order = np.argsort(new, kind="stable")
-            self._known.append((new[order], Mn[order], Jn[order], None if dJn is None else dJn[order]))
+                dJ[todo] = dJn[inv]
+            self._known.append((uk, Mn, Jn, dJn))
             if len(self._known) > KEEP:
                 self._known.pop(0)
         return frozen(M), frozen(J), (None if dJ is None else frozen(dJ))

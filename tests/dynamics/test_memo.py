@@ -83,3 +83,18 @@ def test_class_iii_keeps_whole_calls_only():
     assert memo.computed == n
     cycle.reduced(theta[:10])                             # a part: computed with its own Newton run
     assert memo.computed == n + 10
+
+
+def test_the_memory_matches_angles_by_their_bits_and_computes_each_once():
+    calls = []
+
+    def compute(theta, with_dJ):
+        calls.append(theta.copy())
+        return np.cos(theta), np.sin(theta), np.copysign(1.0, theta)
+    memo = ReducedMemo(compute, elementwise=True)
+    M, J, dJ = memo(np.array([0.5, 0.0, 0.5, 0.25]), True)
+    assert [list(c) for c in calls] == [[0.0, 0.25, 0.5]]          # each angle once
+    _same(M, np.cos(np.array([0.5, 0.0, 0.5, 0.25])))
+    M2, J2, dJ2 = memo(np.array([-0.0, 0.25]), True)               # −0.0 is not 0.0
+    assert memo.computed == 4 and list(calls[-1]) == [-0.0]
+    _same(dJ2, np.array([-1.0, 1.0]))
