@@ -55,7 +55,7 @@ class DyadSolver:
         self.linkage = linkage
         self.group = group
         self.kind = group.kind
-        self.sigma = 1.0
+        self.sigma: float | np.ndarray = 1.0   # an array: one branch per position (both tried at once)
         self.cons = group_constraints(linkage, group)
         a, b = group.links
         self.a, self.b = a, b

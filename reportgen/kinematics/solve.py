@@ -171,21 +171,27 @@ class KinematicModel:
         self._driver(q, phi0)
         for solver, g in zip(self.solvers, self.structure.groups[1:]):
             if isinstance(solver, DyadSolver):
-                best: tuple[float, float, np.ndarray] | None = None
-                for sigma in (1.0, -1.0):
-                    solver.sigma = sigma
-                    qq = q.copy()
-                    solver.solve(qq, phi0, strict=True)
+                # both branches in one solve (rows σ = +1, −1; each position is solved on its own)
+                sigmas = (1.0, -1.0)
+                qq = np.repeat(q, 2, axis=0)
+                solver.sigma = np.array(sigmas)
+                try:
+                    solver.solve(qq, np.repeat(phi0, 2), strict=True)
+                finally:
+                    solver.sigma = 1.0
+                dist = [np.hypot(*(world(qq, k, self.linkage.bodies[k].local[name])
+                                   - np.asarray(self.linkage.sketch[name])).T)
+                        for k in g.links for name in self.linkage.bodies[k].points]
+                best: tuple[float, int] | None = None
+                for row in range(2):
                     err = 0.0
-                    for k in g.links:
-                        for name in self.linkage.bodies[k].points:
-                            w = world(qq, k, self.linkage.bodies[k].local[name])[0]
-                            err += float(np.hypot(*(w - np.asarray(self.linkage.sketch[name]))))
+                    for h in dist:
+                        err += float(h[row])
                     if best is None or err < best[0] - ABS_ROUNDOFF:
-                        best = (err, sigma, qq)
+                        best = (err, row)
                 assert best is not None
-                solver.sigma = best[1]
-                q = best[2]
+                solver.sigma = sigmas[best[1]]
+                q = qq[best[1]:best[1] + 1].copy()
             else:
                 for k in g.links:
                     q[:, k, :] = self._sketch_q[k]
