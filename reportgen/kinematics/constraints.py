@@ -160,6 +160,8 @@ def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int], trig: Trig 
     N = q.shape[0]
     m = sum(c.rows for c in cons)
     J = np.zeros((N, m, 3 * len(cols)))
+    if trig is None:
+        trig = trig_of(q)
     idx = {b: 3 * i for i, b in enumerate(cols)}
     rows_all: list[list[dict[int, np.ndarray]]] = []
     r = 0
