@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..geometry import dot as _dot, perp, rot
+from ..geometry import dot as _dot, frozen, perp, rot
 from ..linkage import Linkage, SlidePair
 
 
@@ -55,25 +55,37 @@ def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
     return cons
 
 
-Trig = tuple[np.ndarray, np.ndarray]
-"""cos θ and sin θ of every body at every position, (N, bodies) each (:func:`trig_of`)."""
+class Trig:
+    """cos θ and sin θ of every body at every position of one set of poses, (N, bodies) each, and the
+    arms R(θ_k)·p already computed from them (read-only: every reader makes new arrays of them)."""
+
+    __slots__ = ("cos", "sin", "arms")
+
+    def __init__(self, cos: np.ndarray, sin: np.ndarray) -> None:
+        self.cos, self.sin = cos, sin
+        self.arms: dict[tuple[int, tuple[float, float]], np.ndarray] = {}
 
 
 def trig_of(q: np.ndarray) -> Trig:
     """cos and sin of every body's angle, computed once per set of poses (the constraint rows of a
     solve read each body's rotation many times; the same bits as computing them one by one)."""
     th = q[:, :, 2]
-    return np.cos(th), np.sin(th)
+    return Trig(np.cos(th), np.sin(th))
 
 
 def arm(q: np.ndarray, k: int, p, trig: Trig | None = None) -> np.ndarray:
-    """R(θ_k)·p at every position, (N, 2): :func:`reportgen.geometry.rot`, from ``trig`` when given."""
+    """R(θ_k)·p at every position, (N, 2): :func:`reportgen.geometry.rot`, from ``trig`` when given
+    (each body and point once per solve)."""
     if trig is None:
         return rot(q[:, k, 2], p)
-    c, s = trig[0][:, k], trig[1][:, k]
-    out = np.empty((q.shape[0], 2))
-    out[:, 0] = c * p[0] - s * p[1]
-    out[:, 1] = s * p[0] + c * p[1]
+    key = (k, (float(p[0]), float(p[1])))
+    out = trig.arms.get(key)
+    if out is None:
+        c, s = trig.cos[:, k], trig.sin[:, k]
+        out = np.empty((q.shape[0], 2))
+        out[:, 0] = c * p[0] - s * p[1]
+        out[:, 1] = s * p[0] + c * p[1]
+        trig.arms[key] = frozen(out)
     return out
 
 
