@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from types import MappingProxyType
 from typing import Callable, Mapping
 
 import numpy as np
@@ -397,14 +396,13 @@ class KinematicModel:
         trans = {g.key: _deferred(_transmission, lk, g, q) for g in self.structure.groups[1:]}
         points, coms, links = self._without_residue(points, coms, links)
         return KinematicsResult(_ro(phi), self.omega, q, qd, qdd, DerivedMotions(points),
-                                DerivedMotions(coms), MappingProxyType(links), DerivedMotions(trans))
+                                DerivedMotions(coms), DerivedMotions(links), DerivedMotions(trans))
 
     def _without_residue(self, points, coms, links):
         """Velocities and accelerations that are round-off residue (a centre of mass on a fixed axis
         comes out at ~1e-16 m/s²) become exact zeros: residue against |ω1|·L, ω1²·L (L the size of
         the mechanism), |ω1|, ω1² (:func:`reportgen.numbers.clean_array`)."""
-        sketch = np.array(list(self.linkage.sketch.values()), dtype=float).reshape(-1, 2)
-        size = float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
+        size = self._size
         w = abs(self.omega) or 1.0
         v_scale, a_scale = w * size, w * w * size
 
@@ -413,7 +411,13 @@ class KinematicModel:
 
         return ({n: _deferred(_cleaned, f, v_scale, a_scale) for n, f in points.items()},
                 {k: _deferred(_cleaned, f, v_scale, a_scale) for k, f in coms.items()},
-                {k: lm(m) for k, m in links.items()})
+                {k: _deferred(lm, m) for k, m in links.items()})
+
+    @cached_property
+    def _size(self) -> float:
+        """The size L of the mechanism: the larger side of its sketch's bounding box (m)."""
+        sketch = np.array(list(self.linkage.sketch.values()), dtype=float).reshape(-1, 2)
+        return float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
 
     @staticmethod
     def _point_motion(q, qd, qdd, k: int, p: tuple, trig: Trig | None = None) -> PointMotion:
