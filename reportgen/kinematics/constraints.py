@@ -176,6 +176,9 @@ def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int], trig: Trig 
         trig = trig_of(q)
     idx = {b: 3 * i for i, b in enumerate(cols)}
     rows_all: list[list[dict[int, np.ndarray]]] = []
+    Row = tuple[float | np.ndarray, float | np.ndarray, float | np.ndarray]   # noqa: N806 (a local type)
+    first: tuple[Row, Row]
+    second: tuple[Row, Row]
     r = 0
     for c in cons:
         if isinstance(c, RevoluteC):
@@ -191,7 +194,8 @@ def assemble(cons: list[Constraint], q: np.ndarray, cols: list[int], trig: Trig 
             second = ((0 + -n[:, 0], 0 + -n[:, 1], 0 + (_dot(perp(n), d) - _dot(n, perp(Rl)))), (0.0, 0.0, -1.0))
             bodies = (sp.link, sp.guide)
         rows: list[dict[int, np.ndarray]] = [{}, {}]
-        for b, coefs in zip(bodies, (first, second)):
+        per_body: list[tuple[int, tuple[Row, Row]]] = [(bodies[0], first), (bodies[1], second)]
+        for b, coefs in per_body:
             for k, coef in enumerate(coefs):
                 if b in idx:
                     for t, v in enumerate(coef):
