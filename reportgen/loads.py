@@ -27,7 +27,7 @@ from .kinematics.constraints import world
 from .kinematics.extremes import Strokes
 from .linkage import Linkage
 from .task import Mechanism
-from .geometry import dot as _dot, readonly as _ro
+from .geometry import dot as _dot, frozen, readonly as _ro, shared
 from .tolerances import ABS_ROUNDOFF
 
 
@@ -136,9 +136,9 @@ def resistance_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsRe
             u = np.asarray(s.line_dir)
             vec = (-(ld.force * mag * direction))[:, None] * u[None, :]
             pt = world(q, ld.link, s.point_local)
-            forces.append(Force("Fпс", ld.link, s.point, _ro(pt), _ro(vec), "resistance"))
+            forces.append(Force("Fпс", ld.link, s.point, frozen(pt), frozen(vec), "resistance"))
         else:
-            moments.append(Moment("Mпс", ld.link, _ro(-(ld.moment or 0.0) * mag * direction), "resistance"))
+            moments.append(Moment("Mпс", ld.link, frozen(-(ld.moment or 0.0) * mag * direction), "resistance"))
     return LoadSet(tuple(forces), tuple(moments))
 
 
@@ -154,7 +154,7 @@ def gravity_loads(linkage: Linkage, kin: KinematicsResult) -> LoadSet:
         pt = kin.coms[k].pos
         vec = np.zeros_like(pt)
         vec[:, 1] = -m * linkage.g
-        forces.append(Force(f"G{k}", k, f"S{k}", _ro(pt), _ro(vec), "gravity"))
+        forces.append(Force(f"G{k}", k, f"S{k}", shared(pt), frozen(vec), "gravity"))
     return LoadSet(tuple(forces), ())
 
 
@@ -175,9 +175,9 @@ def constant_loads(mech: Mechanism, kin: KinematicsResult) -> LoadSet:
             else:
                 pt, where = kin.points[ld.point].pos, ld.point
             vec = np.broadcast_to(np.asarray(ld.vector, dtype=float), (N, 2))
-            forces.append(Force(name(f"F{ld.link}"), ld.link, where, _ro(pt), _ro(vec), "force"))
+            forces.append(Force(name(f"F{ld.link}"), ld.link, where, shared(pt), _ro(vec), "force"))
         elif ld.kind == "moment":
-            moments.append(Moment(name(f"M{ld.link}"), ld.link, _ro(np.full(N, float(ld.value or 0.0))), "moment"))
+            moments.append(Moment(name(f"M{ld.link}"), ld.link, frozen(np.full(N, float(ld.value or 0.0))), "moment"))
     return LoadSet(tuple(forces), tuple(moments))
 
 
@@ -187,10 +187,10 @@ def inertia_loads(linkage: Linkage, kin: KinematicsResult) -> LoadSet:
     for k in linkage.moving:
         b = linkage.bodies[k]
         if b.mass > 0:
-            forces.append(Force(f"Fи{k}", k, f"S{k}", _ro(kin.coms[k].pos), _ro(-b.mass * np.asarray(kin.coms[k].acc)),
+            forces.append(Force(f"Fи{k}", k, f"S{k}", shared(kin.coms[k].pos), frozen(-b.mass * np.asarray(kin.coms[k].acc)),
                                 "inertia"))
         if b.inertia > 0:
-            moments.append(Moment(f"Mи{k}", k, _ro(-b.inertia * np.asarray(kin.links[k].epsilon)), "inertia"))
+            moments.append(Moment(f"Mи{k}", k, frozen(-b.inertia * np.asarray(kin.links[k].epsilon)), "inertia"))
     return LoadSet(tuple(forces), tuple(moments))
 
 

@@ -98,3 +98,14 @@ def test_frozen_makes_the_array_itself_read_only() -> None:
     assert b is a and not a.flags.writeable
     with pytest.raises(ValueError):
         a[0] = 1.0
+
+
+def test_shared_keeps_a_read_only_array_and_copies_a_writable_one() -> None:
+    from reportgen.geometry import shared
+    ro = readonly([1.0, 2.0])
+    assert shared(ro) is ro
+    w = np.array([1.0, 2.0])
+    c = shared(w)
+    assert c is not w and not c.flags.writeable
+    w[0] = 5.0
+    assert c[0] == 1.0
