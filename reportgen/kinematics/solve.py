@@ -75,9 +75,24 @@ def _deferred(fn: Callable, *args) -> Callable[[], PointMotion]:
 
 
 def _cleaned(make: Callable[[], PointMotion], v_scale: float, a_scale: float) -> PointMotion:
-    """A point's motion with its round-off residue made exact zeros (see ``_without_residue``)."""
+    """A point's motion with its round-off residue made exact zeros (see ``_without_residue``); an
+    acceleration not solved (NaN) is kept as it is."""
     m = make()
-    return PointMotion(m.pos, frozen(clean_array(m.vel, v_scale)), frozen(clean_array(m.acc, a_scale)))
+    acc = m.acc if m.acc is _NO_ACC.get(m.acc.shape[0]) else frozen(clean_array(m.acc, a_scale))
+    return PointMotion(m.pos, frozen(clean_array(m.vel, v_scale)), acc)
+
+
+#: The accelerations of a solve without them: one NaN array per number of positions, shared.
+_NO_ACC: dict[int, np.ndarray] = {}
+
+
+def _no_acc(n: int) -> np.ndarray:
+    a = _NO_ACC.get(n)
+    if a is None:
+        if len(_NO_ACC) > 64:
+            _NO_ACC.clear()
+        a = _NO_ACC[n] = frozen(np.full((n, 2), np.nan))
+    return a
 
 
 def _fixed_point(xy, n: int) -> PointMotion:
@@ -375,9 +390,9 @@ class KinematicModel:
         trig = trig_of(q)
         qd = self.velocities(q, jacobians=jacobians, trig=trig)
         qdd = self.accelerations(q, qd, jacobians=jacobians, trig=trig) if accelerations else np.full_like(q, np.nan)
-        return self._result(phi, q, qd, qdd, trig)
+        return self._result(phi, q, qd, qdd, trig, accelerations)
 
-    def _result(self, phi, q, qd, qdd, trig: Trig | None = None) -> KinematicsResult:
+    def _result(self, phi, q, qd, qdd, trig: Trig | None = None, accelerations: bool = True) -> KinematicsResult:
         """The result over the solve's own arrays q, q̇, q̈ (made read-only in place, not copied:
         the links' motions are views of them)."""
         lk = self.linkage
@@ -387,11 +402,13 @@ class KinematicModel:
             for name in lk.bodies[k].points:
                 if name in points or (k == 0):
                     continue
-                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name], trig)
+                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name], trig,
+                                         accelerations)
         for name in lk.ground:
             if name not in points:
                 points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
-        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local), trig) for k in lk.moving}
+        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local), trig, accelerations)
+                for k in lk.moving}
         links = {k: LinkMotion(q[:, k, 2], qd[:, k, 2], qdd[:, k, 2]) for k in lk.moving}
         trans = {g.key: _deferred(_transmission, lk, g, q) for g in self.structure.groups[1:]}
         points, coms, links = self._without_residue(points, coms, links)
@@ -420,12 +437,16 @@ class KinematicModel:
         return float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
 
     @staticmethod
-    def _point_motion(q, qd, qdd, k: int, p: tuple, trig: Trig | None = None) -> PointMotion:
+    def _point_motion(q, qd, qdd, k: int, p: tuple, trig: Trig | None = None,
+                      accelerations: bool = True) -> PointMotion:
         Rp = arm(q, k, p, trig)
-        w, e = qd[:, k, 2][:, None], qdd[:, k, 2][:, None]
+        w = qd[:, k, 2][:, None]
         pR = perp(Rp)
         pos = q[:, k, :2] + Rp
         vel = qd[:, k, :2] + w * pR
+        if not accelerations:
+            return PointMotion(frozen(pos), frozen(vel), _no_acc(q.shape[0]))
+        e = qdd[:, k, 2][:, None]
         acc = qdd[:, k, :2] + e * pR - w * w * Rp
         return PointMotion(frozen(pos), frozen(vel), frozen(acc))
 

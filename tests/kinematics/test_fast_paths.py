@@ -85,7 +85,12 @@ def test_solve_without_accelerations_keeps_positions_and_velocities(model):
     assert _same_bits(lean.q, full.q) and _same_bits(lean.qd, full.qd)
     assert np.isnan(lean.qdd).all()
     for name in full.points:
+        assert _same_bits(lean.points[name].pos, full.points[name].pos)
         assert _same_bits(lean.points[name].vel, full.points[name].vel)
+        assert np.isnan(lean.points[name].acc).all() or not np.asarray(full.points[name].acc).any()
+    for k in full.coms:
+        assert _same_bits(lean.coms[k].vel, full.coms[k].vel)
+        assert _same_bits(lean.links[k].omega, full.links[k].omega) and np.isnan(lean.links[k].epsilon).all()
 
 
 def test_transmission_and_flags_read_lazily_match_the_groups(model):
