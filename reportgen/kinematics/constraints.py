@@ -56,32 +56,40 @@ def all_pair_constraints(linkage: Linkage) -> list[Constraint]:
 
 
 class Trig:
-    """cos θ and sin θ of every body at every position of one set of poses, (N, bodies) each, and the
-    arms R(θ_k)·p already computed from them (read-only: every reader makes new arrays of them)."""
+    """cos θ_k and sin θ_k of the bodies of one set of poses ``q`` (N positions), each computed when
+    first asked (a body's angle must be final by then: the position solvers ask only for bodies
+    already solved), and the arms R(θ_k)·p computed from them — each once per set of poses, kept
+    read-only (every reader makes new arrays of them). The same bits as ``rot`` one by one."""
 
-    __slots__ = ("cos", "sin", "arms")
+    __slots__ = ("q", "_cs", "arms")
 
-    def __init__(self, cos: np.ndarray, sin: np.ndarray) -> None:
-        self.cos, self.sin = cos, sin
+    def __init__(self, q: np.ndarray) -> None:
+        self.q = q
+        self._cs: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         self.arms: dict[tuple[int, tuple[float, float]], np.ndarray] = {}
+
+    def cs(self, k: int) -> tuple[np.ndarray, np.ndarray]:
+        v = self._cs.get(k)
+        if v is None:
+            th = self.q[:, k, 2]
+            v = self._cs[k] = (np.cos(th), np.sin(th))
+        return v
 
 
 def trig_of(q: np.ndarray) -> Trig:
-    """cos and sin of every body's angle, computed once per set of poses (the constraint rows of a
-    solve read each body's rotation many times; the same bits as computing them one by one)."""
-    th = q[:, :, 2]
-    return Trig(np.cos(th), np.sin(th))
+    """The cos/sin (and arms) of the poses ``q``, computed as they are read (:class:`Trig`)."""
+    return Trig(q)
 
 
 def arm(q: np.ndarray, k: int, p, trig: Trig | None = None) -> np.ndarray:
     """R(θ_k)·p at every position, (N, 2): :func:`reportgen.geometry.rot`, from ``trig`` when given
-    (each body and point once per solve)."""
+    (each body and point once per set of poses; ``trig`` must be that of ``q``)."""
     if trig is None:
         return rot(q[:, k, 2], p)
     key = (k, (float(p[0]), float(p[1])))
     out = trig.arms.get(key)
     if out is None:
-        c, s = trig.cos[:, k], trig.sin[:, k]
+        c, s = trig.cs(k)
         out = np.empty((q.shape[0], 2))
         out[:, 0] = c * p[0] - s * p[1]
         out[:, 1] = s * p[0] + c * p[1]

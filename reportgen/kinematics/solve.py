@@ -19,7 +19,7 @@ from ..linkage import Linkage, compile_linkage, sketch_q
 from ..numbers import clean_array
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
-from .constraints import Trig, arm, assemble, gamma, known_terms, perp, rot, trig_of, world
+from .constraints import Trig, arm, assemble, gamma, known_terms, perp, trig_of, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
 from ..geometry import frozen, readonly as _ro
@@ -157,13 +157,13 @@ class KinematicModel:
         return all(isinstance(s, DyadSolver) for s in self.solvers)
 
     # -- driver --------------------------------------------------------------------------------
-    def _driver(self, q: np.ndarray, phi: np.ndarray) -> None:
+    def _driver(self, q: np.ndarray, phi: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
         b = self.linkage.bodies[d]
         th = phi - self.alpha
         q[:, d, 2] = th
         O = np.asarray(self.linkage.sketch[self.linkage.drive_axis])
-        q[:, d, :2] = O - rot(th, b.local[self.linkage.drive_axis])
+        q[:, d, :2] = O - arm(q, d, b.local[self.linkage.drive_axis], trig)
 
     def _driver_vel(self, q: np.ndarray, qd: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
@@ -216,18 +216,26 @@ class KinematicModel:
     # -- positions, velocities, accelerations ---------------------------------------------------
     def positions(self, phi: np.ndarray, strict: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """Poses at the crank angles ``phi``; also a mask of the positions where all groups assemble."""
+        q, ok, _ = self._positions(phi, strict)
+        return q, ok
+
+    def _positions(self, phi: np.ndarray, strict: bool = True) -> tuple[np.ndarray, np.ndarray, Trig]:
+        """:meth:`positions` and the cos/sin cache of the poses (filled as the groups are solved: each
+        body's rotation computed once for the positions, the velocities and the accelerations)."""
         phi = np.asarray(phi, dtype=float)
-        if any(isinstance(s, NewtonSolver) for s in self.solvers):
-            return self._positions_by_continuation(phi, strict)
+        if not self.positions_independent:
+            q, ok = self._positions_by_continuation(phi, strict)
+            return q, ok, trig_of(q)
         N = phi.size
         q = np.zeros((N, self.nb, 3))
-        self._driver(q, phi)
+        trig = trig_of(q)
+        self._driver(q, phi, trig)
         ok = np.ones(N, dtype=bool)
         for solver in self.solvers:
             assert isinstance(solver, DyadSolver)  # a NewtonSolver went by continuation above
-            margin = solver.solve(q, phi, strict=strict)
+            margin = solver.solve(q, phi, strict=strict, trig=trig)
             ok &= margin >= 0
-        return q, ok
+        return q, ok, trig
 
     def positions_kept(self, phi: tuple[float, ...]) -> np.ndarray:
         """Poses at a few fixed crank angles asked again and again (the stroke's ends, read by the
@@ -381,13 +389,12 @@ class KinematicModel:
         the callers that read positions and velocities only (the dynamics' M_red and J_red)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         try:
-            q, _ = self.positions(phi, strict=True)
+            q, _, trig = self._positions(phi, strict=True)
         except AssemblyError as exc:
             with np.errstate(invalid="ignore", divide="ignore"):
                 feasible = self.feasible_ranges()
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality, feasible) from None
         jacobians: dict = {}
-        trig = trig_of(q)
         qd = self.velocities(q, jacobians=jacobians, trig=trig)
         qdd = self.accelerations(q, qd, jacobians=jacobians, trig=trig) if accelerations else np.full_like(q, np.nan)
         return self._result(phi, q, qd, qdd, trig, accelerations)
