@@ -163,3 +163,15 @@ def test_strokes_in_lockstep_equal_the_sequential_search(name, monkeypatch):
     monkeypatch.setattr(type(m), "positions_independent", property(lambda self: False))
     sequential = find_strokes(m)
     assert dataclasses.astuple(lockstep) == dataclasses.astuple(sequential)
+
+
+def test_positions_with_the_cos_sin_cache_equal_the_plain_solvers(model):
+    """The position solvers fill the solve's cos/sin cache as each group is solved; without the
+    cache (``trig=None``) every rotation is computed by ``rot`` afresh: the same bits."""
+    if not model.positions_independent:
+        pytest.skip("class III goes by continuation (its cache is made after the positions)")
+    q = np.zeros((ANGLES.size, model.nb, 3))
+    model._driver(q, ANGLES)
+    for solver in model.solvers:
+        solver.solve(q, ANGLES, strict=True)
+    assert _same_bits(model.positions(ANGLES)[0], q)
