@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Vec2", "vec2", "readonly", "rot", "rot_vec2", "perp", "cross", "dot"]
+__all__ = ["Vec2", "vec2", "readonly", "frozen", "shared", "rot", "rot_vec2", "perp", "cross", "dot"]
 
 #: A point or vector of the plane as plain floats (m in the task, mm on a drawing).
 Vec2 = tuple[float, float]
@@ -28,6 +28,19 @@ def readonly(a: Any, dtype: Any = float) -> np.ndarray:
     out = np.array(a, dtype=dtype)
     out.setflags(write=False)
     return out
+
+
+def frozen(a: np.ndarray) -> np.ndarray:
+    """``a`` itself made read-only, without a copy: for an array just computed and not shared
+    (:func:`readonly` copies, for arrays that someone else may still write to)."""
+    a.setflags(write=False)
+    return a
+
+
+def shared(a: np.ndarray) -> np.ndarray:
+    """``a`` itself when it is read-only already (nobody can change it: a result's array), else a
+    read-only copy (:func:`readonly`)."""
+    return a if isinstance(a, np.ndarray) and not a.flags.writeable and a.dtype == float else readonly(a)
 
 
 def rot(theta: Any, p: Vec2 | np.ndarray) -> np.ndarray:

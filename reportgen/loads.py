@@ -27,7 +27,7 @@ from .kinematics.constraints import world
 from .kinematics.extremes import Strokes
 from .linkage import Linkage
 from .task import Mechanism
-from .geometry import readonly as _ro
+from .geometry import dot as _dot, frozen, readonly as _ro, shared
 from .tolerances import ABS_ROUNDOFF
 
 
@@ -104,7 +104,7 @@ def resistance_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsRe
     win = StrokeWindow(strokes.phi_start, strokes.phi_end, 1.0 if linkage.omega >= 0 else -1.0)
     q = np.asarray(kin.q)
     working = win.on_working(kin.phi)
-    ends_q, _ = model.positions(np.array([strokes.phi_start, strokes.phi_end]))
+    ends_q = model.positions_kept((strokes.phi_start, strokes.phi_end))
     for i, ld in enumerate(mech.loads):
         if ld.kind != "resistance":
             continue
@@ -136,9 +136,9 @@ def resistance_loads(mech: Mechanism, linkage: Linkage, model, kin: KinematicsRe
             u = np.asarray(s.line_dir)
             vec = (-(ld.force * mag * direction))[:, None] * u[None, :]
             pt = world(q, ld.link, s.point_local)
-            forces.append(Force("Fпс", ld.link, s.point, _ro(pt), _ro(vec), "resistance"))
+            forces.append(Force("Fпс", ld.link, s.point, frozen(pt), frozen(vec), "resistance"))
         else:
-            moments.append(Moment("Mпс", ld.link, _ro(-(ld.moment or 0.0) * mag * direction), "resistance"))
+            moments.append(Moment("Mпс", ld.link, frozen(-(ld.moment or 0.0) * mag * direction), "resistance"))
     return LoadSet(tuple(forces), tuple(moments))
 
 
@@ -154,7 +154,7 @@ def gravity_loads(linkage: Linkage, kin: KinematicsResult) -> LoadSet:
         pt = kin.coms[k].pos
         vec = np.zeros_like(pt)
         vec[:, 1] = -m * linkage.g
-        forces.append(Force(f"G{k}", k, f"S{k}", _ro(pt), _ro(vec), "gravity"))
+        forces.append(Force(f"G{k}", k, f"S{k}", shared(pt), frozen(vec), "gravity"))
     return LoadSet(tuple(forces), ())
 
 
@@ -175,9 +175,9 @@ def constant_loads(mech: Mechanism, kin: KinematicsResult) -> LoadSet:
             else:
                 pt, where = kin.points[ld.point].pos, ld.point
             vec = np.broadcast_to(np.asarray(ld.vector, dtype=float), (N, 2))
-            forces.append(Force(name(f"F{ld.link}"), ld.link, where, _ro(pt), _ro(vec), "force"))
+            forces.append(Force(name(f"F{ld.link}"), ld.link, where, shared(pt), _ro(vec), "force"))
         elif ld.kind == "moment":
-            moments.append(Moment(name(f"M{ld.link}"), ld.link, _ro(np.full(N, float(ld.value or 0.0))), "moment"))
+            moments.append(Moment(name(f"M{ld.link}"), ld.link, frozen(np.full(N, float(ld.value or 0.0))), "moment"))
     return LoadSet(tuple(forces), tuple(moments))
 
 
@@ -187,10 +187,10 @@ def inertia_loads(linkage: Linkage, kin: KinematicsResult) -> LoadSet:
     for k in linkage.moving:
         b = linkage.bodies[k]
         if b.mass > 0:
-            forces.append(Force(f"Fи{k}", k, f"S{k}", _ro(kin.coms[k].pos), _ro(-b.mass * np.asarray(kin.coms[k].acc)),
+            forces.append(Force(f"Fи{k}", k, f"S{k}", shared(kin.coms[k].pos), frozen(-b.mass * np.asarray(kin.coms[k].acc)),
                                 "inertia"))
         if b.inertia > 0:
-            moments.append(Moment(f"Mи{k}", k, _ro(-b.inertia * np.asarray(kin.links[k].epsilon)), "inertia"))
+            moments.append(Moment(f"Mи{k}", k, frozen(-b.inertia * np.asarray(kin.links[k].epsilon)), "inertia"))
     return LoadSet(tuple(forces), tuple(moments))
 
 
@@ -208,7 +208,7 @@ def power(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
         k = f.link
         r = np.asarray(f.point) - q[:, k, :2]
         v = qd[:, k, :2] + qd[:, k, 2][:, None] * np.stack((-r[:, 1], r[:, 0]), -1)
-        P += (np.asarray(f.vector) * v).sum(1)
+        P += _dot(np.asarray(f.vector), v)   # = (F·v).sum(1): two products and one sum, the same bits
     for m in loads.moments:
         P += np.asarray(m.value) * qd[:, m.link, 2]
     return P

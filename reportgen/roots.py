@@ -4,7 +4,8 @@ than the whole solve of a variant).
 - :func:`brent_root`: Brent's method (R. P. Brent, «Algorithms for Minimization without
   Derivatives», 1973, ch. 4, the procedure *zero*): bisection, secant and inverse quadratic
   interpolation, keeping a bracket [b, c] with f(b)·f(c) ≤ 0; stops when half the bracket is
-  within ``xtol + rtol·|b|`` (scipy's ``brentq`` criterion).
+  within ``xtol + rtol·|b|`` (scipy's ``brentq`` criterion). :func:`brent_roots` runs several
+  searches in lockstep, one vectorised evaluation per step for all of them.
 - :func:`extremes`: the largest / smallest value of continuous functions near the best grid node,
   refined on both neighbouring intervals by vectorised sampling: every round samples ``SAMPLES``
   points across each current bracket in *one* call of the (vectorised) function for all searches
@@ -15,7 +16,7 @@ than the whole solve of a variant).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Generator, Sequence
 
 import numpy as np
 
@@ -40,7 +41,47 @@ class RootNotBracketedError(ComputationError, ValueError):
 def brent_root(f: Callable[..., float], a: float, b: float, args: tuple = (), *, xtol: float = BRENT_XTOL,
                rtol: float = BRENT_RTOL, maxiter: int = 200) -> float:
     """A root of f in [a, b] (f(a)·f(b) ≤ 0) by Brent's method, to ``xtol + rtol·|x|``."""
-    fa, fb = float(f(a, *args)), float(f(b, *args))
+    steps = _brent(a, b, xtol, rtol, maxiter)
+    x = next(steps)
+    while True:
+        try:
+            x = steps.send(float(f(x, *args)))
+        except StopIteration as done:
+            return done.value
+
+
+def brent_roots(f: Callable[[np.ndarray], np.ndarray], brackets: Sequence[tuple[float, float]], *,
+                xtol: float = BRENT_XTOL, rtol: float = BRENT_RTOL, maxiter: int = 200,
+                known: Sequence[tuple[float, float]] | None = None) -> list[float]:
+    """:func:`brent_root` on several brackets in lockstep: each step evaluates the vectorised ``f``
+    once, at the next abscissa of every search still running. Every search takes exactly the
+    steps it would take alone, so the roots are the same bits as one by one when ``f`` computes
+    each abscissa on its own (its value does not depend on the others of the call). ``known``:
+    f at the ends of each bracket, when the caller has them (they are not evaluated again)."""
+    searches = [_brent(a, b, xtol, rtol, maxiter, *(known[i] if known is not None else ())) for i, (a, b)
+                in enumerate(brackets)]
+    roots: list[float | None] = [None] * len(searches)
+    asks = {i: next(sr) for i, sr in enumerate(searches)}
+    while asks:
+        idx = list(asks)
+        vals = np.asarray(f(np.array([asks[i] for i in idx], dtype=float)), dtype=float)
+        for i, v in zip(idx, vals):
+            try:
+                asks[i] = searches[i].send(float(v))
+            except StopIteration as done:
+                roots[i] = done.value
+                del asks[i]
+    return [float(r) for r in roots if r is not None]
+
+
+def _brent(a: float, b: float, xtol: float, rtol: float, maxiter: int, fa: float | None = None,
+           fb: float | None = None) -> Generator[float, float, float]:
+    """Brent's method as a coroutine: yields each abscissa to evaluate, is sent f there, returns
+    the root (so that one search or several in lockstep share the same steps)."""
+    if fa is None:
+        fa = yield a
+    if fb is None:
+        fb = yield b
     if fa == 0.0:
         return a
     if fb == 0.0:
@@ -81,7 +122,7 @@ def brent_root(f: Callable[..., float], a: float, b: float, args: tuple = (), *,
             d = e = m
         a, fa = b, fb
         b += d if abs(d) > tol else (tol if m > 0 else -tol)
-        fb = float(f(b, *args))
+        fb = float((yield b))
     raise ComputationError("Brent's method", f"no convergence in {maxiter} steps on [{a}, {b}]")
 
 

@@ -15,7 +15,8 @@ link with three legs). The order is the number of external pairs.
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -64,10 +65,24 @@ class Structure:
     p1: int
     p2: int
     W: int
-    W_numeric: int
-    redundant: int
     groups: tuple[Group, ...]
     mechanism_class: int
+    linkage: Linkage = field(repr=False, compare=False)
+
+    @cached_property
+    def _numerical(self) -> tuple[int, int]:
+        return numerical_mobility(self.linkage)
+
+    @property
+    def W_numeric(self) -> int:
+        """W from the rank of the constraint Jacobian at the sketch (computed when first read: the
+        solve does not need it)."""
+        return self._numerical[0]
+
+    @property
+    def redundant(self) -> int:
+        """Redundant constraints: rows of the Jacobian less its rank (computed when first read)."""
+        return self._numerical[1]
 
     @property
     def formula(self) -> str:
@@ -214,7 +229,6 @@ def numerical_mobility(linkage: Linkage) -> tuple[int, int]:
 def analyse_structure(linkage: Linkage) -> Structure:
     """Chebyshev's W, numerical W, and the decomposition into the driver and Assur groups."""
     n, p1, p2, W = chebyshev(linkage)
-    W_num, redundant = numerical_mobility(linkage)
     d = linkage.drive_link
     known = frozenset({0, d})
     driver_pairs = _pairs_of(linkage, frozenset({d}), frozenset({0}))
@@ -253,6 +267,7 @@ def analyse_structure(linkage: Linkage) -> Structure:
                               f"point in the points of both links it joins)")
             else:
                 cause = "a pair is missing or the links are attached to nothing already known"
+            W_num, redundant = numerical_mobility(linkage)
             if W_num != W:
                 cause += (f"; the rank of the constraint equations gives W = {W_num} with {redundant} redundant "
                           f"constraint(s) (e.g. a parallel link of a parallelogram)")
@@ -266,4 +281,4 @@ def analyse_structure(linkage: Linkage) -> Structure:
         raise StructureError(f"the mechanism has W = 3·{n} − 2·{p1} − {p2} = {W} by Chebyshev; "
                              f"reportgen analyses mechanisms with one driver (W = 1)", (), None)
     mclass = max(g.group_class for g in groups)
-    return Structure(n, p1, p2, W, W_num, redundant, tuple(groups), mclass)
+    return Structure(n, p1, p2, W, tuple(groups), mclass, linkage)

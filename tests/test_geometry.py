@@ -89,3 +89,23 @@ def test_the_core_keeps_no_bare_division_floor() -> None:
     found = [str(p.relative_to(ROOT)) for p in (ROOT / "reportgen").rglob("*.py")
              if p.name != "tolerances.py" and re.search(r"(?<![\w.])1e-300", p.read_text(encoding="utf-8"))]
     assert not found, found
+
+
+def test_frozen_makes_the_array_itself_read_only() -> None:
+    from reportgen.geometry import frozen
+    a = np.arange(3.0)
+    b = frozen(a)
+    assert b is a and not a.flags.writeable
+    with pytest.raises(ValueError):
+        a[0] = 1.0
+
+
+def test_shared_keeps_a_read_only_array_and_copies_a_writable_one() -> None:
+    from reportgen.geometry import shared
+    ro = readonly([1.0, 2.0])
+    assert shared(ro) is ro
+    w = np.array([1.0, 2.0])
+    c = shared(w)
+    assert c is not w and not c.flags.writeable
+    w[0] = 5.0
+    assert c[0] == 1.0

@@ -18,6 +18,7 @@ from ..geometry import readonly
 from ..loads import StrokeWindow, external_loads, link_coordinate
 from ..roots import brent_root
 from .errors import DynamicsInputError
+from .memo import ReducedMemo
 from .reduction import constant_inertia, reduced_inertia, reduced_moment
 from ..tolerances import EDGE_ANGLE_TOL
 
@@ -38,7 +39,13 @@ class Cycle(Protocol):
     J_const: float          # the constant part of J_red (Мерцалов's first group without flywheel)
     breaks: np.ndarray      # sorted break angles θ in [0, 2π], 0 and 2π included
 
-    def reduced(self, theta: np.ndarray) -> Reduced: ...
+    def reduced(self, theta: np.ndarray, with_dJ: bool = True) -> Reduced: ...
+
+
+def moment_and_inertia(cycle: Cycle, theta: np.ndarray) -> Reduced:
+    """M_red and J_red at ``theta`` for the callers that read no dJ_red/dθ (a project's cycle then
+    solves no accelerations; dJ may be NaN)."""
+    return cycle.reduced(theta, with_dJ=False)
 
 
 def _breaks(inner: list[float]) -> np.ndarray:
@@ -60,7 +67,7 @@ class FunctionCycle:
     def __post_init__(self) -> None:
         object.__setattr__(self, "breaks", _breaks(list(self.inner_breaks)))
 
-    def reduced(self, theta: np.ndarray) -> Reduced:
+    def reduced(self, theta: np.ndarray, with_dJ: bool = True) -> Reduced:   # noqa: ARG002 (dJ is cheap here)
         t = np.asarray(theta, dtype=float)
         return Reduced(*(np.broadcast_to(np.asarray(g(t), dtype=float), t.shape).copy()
                          for g in (self.M, self.J, self.dJ)))
@@ -101,6 +108,7 @@ class ProjectCycle:
         self.J_const = constant_inertia(self.linkage, self.crank_inertia)
         self.switching = self._switching_thetas()
         self.breaks = _breaks(list(self.switching) + list(self._law_thetas()))
+        self._memo = ReducedMemo(self._compute, elementwise=project.model.positions_independent)
 
     # -- angles ---------------------------------------------------------------------------------
     @property
@@ -166,13 +174,22 @@ class ProjectCycle:
         return out
 
     # -- reduced quantities ---------------------------------------------------------------------
-    def kinematics(self, theta: np.ndarray):
-        return self.project.kinematics_at(self.phi_of(np.atleast_1d(theta)))
+    def kinematics(self, theta: np.ndarray, accelerations: bool = True):
+        return self.project.model.solve(self.phi_of(np.atleast_1d(theta)), accelerations=accelerations)
 
-    def reduced(self, theta: np.ndarray) -> Reduced:
+    def reduced(self, theta: np.ndarray, with_dJ: bool = True) -> Reduced:
+        """M_red, J_red and dJ_red/dθ at ``theta`` (without ``with_dJ``, dJ is NaN and the
+        accelerations are not solved); values already computed for this cycle are not computed
+        again (:mod:`reportgen.dynamics.memo`)."""
         t = np.asarray(theta, dtype=float)
-        kin = self.kinematics(t.ravel())
+        M, J, dJ = self._memo(np.ascontiguousarray(t.ravel()), with_dJ)
+        if dJ is None:
+            dJ = np.full(t.size, np.nan)
+        return Reduced(M.reshape(t.shape), J.reshape(t.shape), dJ.reshape(t.shape))
+
+    def _compute(self, theta: np.ndarray, with_dJ: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        kin = self.kinematics(theta, accelerations=with_dJ)
         loads = external_loads(self.mechanism, self.linkage, self.project.model, kin, self.project.strokes)
         M = reduced_moment(loads, kin)
-        J, dJ = reduced_inertia(kin, self.linkage, self.crank_inertia)
-        return Reduced(M.reshape(t.shape), J.reshape(t.shape), dJ.reshape(t.shape))
+        J, dJ = reduced_inertia(kin, self.linkage, self.crank_inertia, with_dJ)
+        return M, J, dJ

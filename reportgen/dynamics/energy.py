@@ -13,7 +13,7 @@ from collections.abc import Callable
 
 import numpy as np
 from ..roots import EXTREME_XTOL, extremes
-from .cycle import TWO_PI, Cycle
+from .cycle import TWO_PI, Cycle, moment_and_inertia
 from .quadrature import DEFAULT_ORDER, cumulative, gauss_legendre, integrate_intervals, split_at
 
 
@@ -25,7 +25,7 @@ class EnergyProfile:
         self.order = order
         nodes = np.union1d(np.asarray(grid, dtype=float), cycle.breaks)
         self.nodes = nodes[(nodes >= 0.0) & (nodes <= TWO_PI)]
-        self._M = lambda t: cycle.reduced(t).M
+        self._M = lambda t: moment_and_inertia(cycle, t).M
         self.A_nodes = cumulative(self._M, self.nodes, cycle.breaks, order)
         self.work_cycle = float(self.A_nodes[-1])
         self.M_drive = -self.work_cycle / TWO_PI
@@ -49,7 +49,7 @@ class EnergyProfile:
         x, w = gauss_legendre(self.order)
         half = 0.5 * (pr - pl)
         gl = (0.5 * (pr + pl))[:, None] + half[:, None] * x[None, :]
-        r = self.cycle.reduced(np.concatenate((gl.ravel(), t)))
+        r = moment_and_inertia(self.cycle, np.concatenate((gl.ravel(), t)))
         piece = half * (r.M[:gl.size].reshape(gl.shape) @ w)
         rest = np.zeros(t.size)
         np.add.at(rest, owner, piece)

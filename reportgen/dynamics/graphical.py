@@ -27,7 +27,7 @@ import numpy as np
 
 from ..scenes.boxes import GraphLayout
 from ..scenes.scales import PLAN_SERIES, round_up
-from .cycle import TWO_PI, Cycle
+from .cycle import TWO_PI, Cycle, moment_and_inertia
 from ..geometry import readonly as _ro
 from ..tolerances import RTOL_EQUAL, RTOL_ROUNDOFF
 
@@ -106,7 +106,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
                scales: dict | None = None) -> dict:
     wm = cycle.omega_m
     mid = 0.5 * (theta[:-1] + theta[1:])
-    r = cycle.reduced(np.concatenate((theta, mid)))
+    r = moment_and_inertia(cycle, np.concatenate((theta, mid)))
     M, Mmid = r.M[:theta.size], r.M[theta.size:]
     J = r.J[:theta.size]
     s = dict(scales or {})

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry import readonly
-from .cycle import Cycle
+from .cycle import Cycle, moment_and_inertia
 from ..roots import brent_root, extremes
 from .energy import EnergyProfile
 from .errors import DynamicsInputError
@@ -52,7 +52,7 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
     """ω(θ) of the steady cycle with mean speed ω_m = (ω_max + ω_min)/2 = the nominal crank speed."""
     wm = cycle.omega_m
     nodes, E = profile.nodes, profile.delta_E_nodes
-    J = cycle.reduced(nodes).J + J_fly
+    J = moment_and_inertia(cycle, nodes).J + J_fly
     u_lo = -2.0 * float(E.min())
 
     def mean_speed(u: float, En: np.ndarray, Jn: np.ndarray) -> float:
@@ -85,7 +85,7 @@ def steady_motion(cycle: Cycle, profile: EnergyProfile, J_fly: float, grid: np.n
     Eg, Jg = profile.state(grid)
     w_grid = readonly(_omega(u, Eg, Jg + J_fly))
     g = readonly(grid)
-    J0 = float(cycle.reduced(np.array([0.0])).J[0]) + J_fly
+    J0 = float(moment_and_inertia(cycle, np.array([0.0])).J[0]) + J_fly
     mean = 0.5 * (w_hi + w_lo)
     return SteadyMotion(g, w_grid, math.sqrt(u / J0), w_hi, w_lo, t_hi, t_lo, mean, (w_hi - w_lo) / mean,
                         (wm * (1 - delta_target / 2), wm * (1 + delta_target / 2)), J_fly)

@@ -19,7 +19,7 @@ import numpy as np
 from ..kinematics import KinematicsResult
 from ..linkage import Linkage
 from ..loads import LoadSet, power
-from ..geometry import readonly as _ro
+from ..geometry import dot as _dot, readonly as _ro
 
 
 def reduced_moment(loads: LoadSet, kin: KinematicsResult) -> np.ndarray:
@@ -37,26 +37,30 @@ def inertia_terms(kin: KinematicsResult, linkage: Linkage) -> Mapping[int, np.nd
             continue
         v = np.asarray(kin.coms[k].vel)
         om = np.asarray(kin.links[k].omega)
-        out[k] = _ro((b.mass * (v * v).sum(1) + b.inertia * om * om) / w2)
+        out[k] = _ro((b.mass * _dot(v, v) + b.inertia * om * om) / w2)
     return out
 
 
-def reduced_inertia(kin: KinematicsResult, linkage: Linkage, crank_inertia: float) -> tuple[np.ndarray, np.ndarray]:
+def reduced_inertia(kin: KinematicsResult, linkage: Linkage, crank_inertia: float,
+                    with_dJ: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
     """(J_red, dJ_red/dθ) at every position: ``crank_inertia`` (rotor, gears) plus every link's
     own share — the crank's own mass and J_S1 included (they are not part of ``crank_inertia``,
-    which TASK_FORMAT.md defines as the rotor and gears reduced to the crank)."""
+    which TASK_FORMAT.md defines as the rotor and gears reduced to the crank). Without ``with_dJ``
+    dJ is None and the accelerations are not read (a solve of positions and velocities only)."""
     w = abs(kin.omega1)
     J = np.full(kin.phi.size, float(crank_inertia))
-    dJ = np.zeros(kin.phi.size)
+    dJ = np.zeros(kin.phi.size) if with_dJ else None
     for k in linkage.moving:
         b = linkage.bodies[k]
         if b.mass <= 0 and b.inertia <= 0:
             continue
-        v, a = np.asarray(kin.coms[k].vel), np.asarray(kin.coms[k].acc)
-        om, eps = np.asarray(kin.links[k].omega), np.asarray(kin.links[k].epsilon)
-        J += (b.mass * (v * v).sum(1) + b.inertia * om * om) / w ** 2
-        dJ += 2.0 * (b.mass * (v * a).sum(1) + b.inertia * om * eps) / w ** 3
-    return _ro(J), _ro(dJ)
+        v = np.asarray(kin.coms[k].vel)
+        om = np.asarray(kin.links[k].omega)
+        J += (b.mass * _dot(v, v) + b.inertia * om * om) / w ** 2
+        if dJ is not None:
+            a, eps = np.asarray(kin.coms[k].acc), np.asarray(kin.links[k].epsilon)
+            dJ += 2.0 * (b.mass * _dot(v, a) + b.inertia * om * eps) / w ** 3
+    return _ro(J), (None if dJ is None else _ro(dJ))
 
 
 def constant_inertia(linkage: Linkage, crank_inertia: float) -> float:

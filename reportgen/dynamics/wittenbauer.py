@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..roots import extremes
-from .cycle import Cycle
+from .cycle import Cycle, moment_and_inertia
 from .energy import EnergyProfile
 
 
@@ -65,7 +65,7 @@ def wittenbauer_and_merzalov(cycle: Cycle, profile: EnergyProfile, delta: float)
     w_hi, w_lo = wm * (1.0 + delta / 2.0), wm * (1.0 - delta / 2.0)
     nodes = profile.nodes
     E = profile.delta_E_nodes
-    J = cycle.reduced(nodes).J
+    J = moment_and_inertia(cycle, nodes).J
 
     def T(st):
         E_t, J_t = st

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import ReportgenError
-from ..roots import brent_root
+from ..roots import brent_root, brent_roots
 from .constraints import rot, world
 from .solve import KinematicModel
 from ..tolerances import CONSTRUCTION_TOL, ROOT_XTOL
@@ -82,10 +82,54 @@ def output_coordinate(model: KinematicModel, out: Output, q: np.ndarray, qd: np.
     return x if qd is None else (x, qd[:, out.link, 2])
 
 
-def _velocity_at(model: KinematicModel, out: Output, phi: float) -> float:
-    q, _ = model.positions(np.array([phi]))
+def _velocities_at(model: KinematicModel, out: Output, phi: np.ndarray) -> np.ndarray:
+    """The output's velocity at the crank angles ``phi`` (one solve)."""
+    q, _ = model.positions(np.asarray(phi, dtype=float))
     qd = model.velocities(q)
-    return float(output_coordinate(model, out, q, qd)[1][0])
+    return output_coordinate(model, out, q, qd)[1]
+
+
+def _velocity_at(model: KinematicModel, out: Output, phi: float) -> float:
+    return float(_velocities_at(model, out, np.array([phi]))[0])
+
+
+def _roots_of_velocity(model: KinematicModel, out: Output, grid: np.ndarray, v: np.ndarray, sgn: float
+                       ) -> list[float]:
+    """The crank angles where the output's velocity is zero: each sign change on the grid refined by
+    Brent's method. A model that solves every position on its own is evaluated at all brackets at
+    once (the ends together, then the searches in lockstep: the same steps and bits as one by one)."""
+    found: list[float | None] = []
+    brackets: list[tuple[int, float, float]] = []
+    for i in range(GRID):
+        j = (i + 1) % GRID
+        a, b = grid[i], grid[i] + sgn * 2 * math.pi / GRID
+        if v[i] == 0.0:
+            found.append(grid[i])
+        elif v[i] * v[j] < 0:
+            lo, hi = (a, b) if a < b else (b, a)
+            brackets.append((len(found), lo, hi))
+            found.append(None)
+    if not brackets:
+        return [float(r) for r in found if r is not None]
+    if model.positions_independent:
+        ends = _velocities_at(model, out, np.array([x for _, lo, hi in brackets for x in (lo, hi)]))
+        f_ends = [(float(ends[2 * k]), float(ends[2 * k + 1])) for k in range(len(brackets))]
+    else:
+        f_ends = [(_velocity_at(model, out, lo), _velocity_at(model, out, hi)) for _, lo, hi in brackets]
+    search = [k for k, (flo, fhi) in enumerate(f_ends) if flo * fhi < 0]
+    for k, (flo, fhi) in enumerate(f_ends):
+        if k not in search:   # a grid point sits on the dead centre itself (|v| at rounding level)
+            _, lo, hi = brackets[k]
+            found[brackets[k][0]] = lo if abs(flo) <= abs(fhi) else hi
+    if model.positions_independent:
+        refined = brent_roots(lambda ph: _velocities_at(model, out, ph), [brackets[k][1:] for k in search],
+                              xtol=ROOT_XTOL, known=[f_ends[k] for k in search])
+    else:
+        refined = [brent_root(lambda ph: _velocity_at(model, out, ph), *brackets[k][1:], xtol=ROOT_XTOL)
+                   for k in search]
+    for k, r in zip(search, refined):
+        found[brackets[k][0]] = r
+    return [float(r) for r in found if r is not None]
 
 
 def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
@@ -97,20 +141,7 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
     q, _ = model.positions(grid)
     qd = model.velocities(q)
     x, v = output_coordinate(model, out, q, qd)
-    roots = []
-    for i in range(GRID):
-        j = (i + 1) % GRID
-        a, b = grid[i], grid[i] + sgn * 2 * math.pi / GRID
-        if v[i] == 0.0:
-            roots.append(grid[i])
-        elif v[i] * v[j] < 0:
-            lo, hi = (a, b) if a < b else (b, a)
-            f = lambda ph: _velocity_at(model, out, ph)  # noqa: E731
-            flo, fhi = f(lo), f(hi)
-            if flo * fhi < 0:
-                roots.append(brent_root(f, lo, hi, xtol=ROOT_XTOL))
-            else:   # a grid point sits on the dead centre itself (|v| at rounding level)
-                roots.append(lo if abs(flo) <= abs(fhi) else hi)
+    roots = _roots_of_velocity(model, out, grid, v, sgn)
     if len(roots) < 2:
         raise NoExtremesError("the output link has no extreme positions (it turns fully)")
     rq, _ = model.positions(np.array(roots))

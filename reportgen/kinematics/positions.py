@@ -24,7 +24,7 @@ from ..geometry import cross as _cross, dot as _dot
 from ..linkage import Linkage
 from ..structure import Group, Pair
 from ..tolerances import ABS_ROUNDOFF, NEWTON_REL_TOL, RTOL_EQUAL
-from .constraints import Constraint, RevoluteC, SlideC, assemble, perp, residual, revolute, rot, world
+from .constraints import Constraint, RevoluteC, SlideC, Trig, arm, assemble, perp, residual, revolute, world
 
 #: Newton on class III+ groups: iteration cap (its step tolerance: tolerances.NEWTON_REL_TOL).
 NEWTON_MAX_ITER = 50
@@ -40,12 +40,13 @@ def group_constraints(linkage: Linkage, group: Group) -> list[Constraint]:
     return cons
 
 
-def set_pose_two_points(q: np.ndarray, k: int, pl: tuple, ql: tuple, wp: np.ndarray, wq: np.ndarray) -> None:
+def set_pose_two_points(q: np.ndarray, k: int, pl: tuple, ql: tuple, wp: np.ndarray, wq: np.ndarray,
+                        trig: Trig | None = None) -> None:
     """Pose of body k from the world positions of two of its points."""
     ang_local = math.atan2(ql[1] - pl[1], ql[0] - pl[0])
     th = np.arctan2(wq[:, 1] - wp[:, 1], wq[:, 0] - wp[:, 0]) - ang_local
     q[:, k, 2] = th
-    q[:, k, :2] = wp - rot(th, pl)
+    q[:, k, :2] = wp - arm(q, k, pl, trig)      # R(θ_k)·pl from the angle just stored
 
 
 class DyadSolver:
@@ -55,7 +56,7 @@ class DyadSolver:
         self.linkage = linkage
         self.group = group
         self.kind = group.kind
-        self.sigma = 1.0
+        self.sigma: float | np.ndarray = 1.0   # an array: one branch per position (both tried at once)
         self.cons = group_constraints(linkage, group)
         a, b = group.links
         self.a, self.b = a, b
@@ -77,33 +78,35 @@ class DyadSolver:
             return q[:, s.guide, 2] + s.rel_angle
         return q[:, s.link, 2] - s.rel_angle
 
-    def _line_of_point(self, q: np.ndarray, pair: Pair, k: int, theta_k: np.ndarray, point: str
+    def _line_of_point(self, q: np.ndarray, pair: Pair, k: int, point: str, trig: Trig | None = None
                        ) -> tuple[np.ndarray, np.ndarray]:
         """The world line (origin, unit direction) on which ``point`` of body k must lie, given θ_k,
         from the slide ``pair`` between k and a body of known pose."""
         s = self.linkage.slides[pair.slide]
         pk = self._local(k, point)
         if s.link == k:   # k slides on the known guide's line
-            L0 = world(q, s.guide, s.line_point)
-            u = rot(q[:, s.guide, 2], s.line_dir)
-            off = rot(theta_k, (pk[0] - s.point_local[0], pk[1] - s.point_local[1]))
+            L0 = world(q, s.guide, s.line_point, trig)
+            u = arm(q, s.guide, s.line_dir, trig)
+            off = arm(q, k, (pk[0] - s.point_local[0], pk[1] - s.point_local[1]), trig)
             return L0 + off, u
         # the known body's point slides on k's line
-        D = world(q, s.link, s.point_local)
-        u = rot(theta_k, s.line_dir)
-        off = rot(theta_k, (pk[0] - s.line_point[0], pk[1] - s.line_point[1]))
+        D = world(q, s.link, s.point_local, trig)
+        u = arm(q, k, s.line_dir, trig)
+        off = arm(q, k, (pk[0] - s.line_point[0], pk[1] - s.line_point[1]), trig)
         return D + off, u
 
     # -- solving ---------------------------------------------------------------------------------
-    def solve(self, q: np.ndarray, phi: np.ndarray, strict: bool = True) -> np.ndarray:
-        """Fill the group's poses; return the assembly margin (≥ 0 where it assembles)."""
+    def solve(self, q: np.ndarray, phi: np.ndarray, strict: bool = True, trig: Trig | None = None) -> np.ndarray:
+        """Fill the group's poses; return the assembly margin (≥ 0 where it assembles). ``trig``:
+        the cos/sin cache of ``q`` (:class:`~reportgen.kinematics.constraints.Trig`), when the
+        caller keeps one for the whole solve."""
         kind = self.kind
         if kind == "RRR":
-            return self._rrr(q, phi, strict)
+            return self._rrr(q, phi, strict, trig)
         if kind == "RRP":
-            return self._rrp(q, phi, strict)
+            return self._rrp(q, phi, strict, trig)
         if kind == "RPR":
-            return self._rpr(q, phi, strict)
+            return self._rpr(q, phi, strict, trig)
         return self._linear(q, phi, strict)
 
     def _fail(self, phi: np.ndarray, margin: np.ndarray, text) -> None:
@@ -112,11 +115,11 @@ class DyadSolver:
             i = int(bad[0])
             raise AssemblyError(f"{self.group.label} {self.kind}", math.degrees(phi[i]) % 360.0, text(i))
 
-    def _rrr(self, q, phi, strict):
+    def _rrr(self, q, phi, strict, trig=None):
         a, b = self.a, self.b
         pa, pb, pi = self.ext_of[a], self.ext_of[b], self.internal
-        P = world(q, self._known_body(pa, a), self._local(self._known_body(pa, a), pa.point))
-        S = world(q, self._known_body(pb, b), self._local(self._known_body(pb, b), pb.point))
+        P = world(q, self._known_body(pa, a), self._local(self._known_body(pa, a), pa.point), trig)
+        S = world(q, self._known_body(pb, b), self._local(self._known_body(pb, b), pb.point), trig)
         la = math.dist(self._local(a, pa.point), self._local(a, pi.point))
         lb = math.dist(self._local(b, pb.point), self._local(b, pi.point))
         d = S - P
@@ -131,19 +134,20 @@ class DyadSolver:
         x = (la * la - lb * lb + D * D) / (2 * Ds)
         h = np.sqrt(np.clip((la - x) * (la + x), 0.0, None))
         Q = P + x[:, None] * e + (self.sigma * h)[:, None] * perp(e)
-        set_pose_two_points(q, a, self._local(a, pa.point), self._local(a, pi.point), P, Q)
-        set_pose_two_points(q, b, self._local(b, pb.point), self._local(b, pi.point), S, Q)
+        set_pose_two_points(q, a, self._local(a, pa.point), self._local(a, pi.point), P, Q, trig)
+        set_pose_two_points(q, b, self._local(b, pb.point), self._local(b, pi.point), S, Q, trig)
         return margin
 
-    def _rrp(self, q, phi, strict):
+    def _rrp(self, q, phi, strict, trig=None):
         a, b = self.a, self.b
         # r: the link with the external revolute; p: the link with the external slide
         r, p = (a, b) if self.ext_of[a].kind == "R" else (b, a)
         pr, pp, pi = self.ext_of[r], self.ext_of[p], self.internal
         kr = self._known_body(pr, r)
-        P = world(q, kr, self._local(kr, pr.point))
+        P = world(q, kr, self._local(kr, pr.point), trig)
         th_p = self._angle_from_slide(q, pp, p)
-        L0, u = self._line_of_point(q, pp, p, th_p, pi.point)
+        q[:, p, 2] = th_p           # (the link's angle first: the line of its point turns with it)
+        L0, u = self._line_of_point(q, pp, p, pi.point, trig)
         l = math.dist(self._local(r, pr.point), self._local(r, pi.point))
         w = P - L0
         along = _dot(w, u)
@@ -156,18 +160,17 @@ class DyadSolver:
                 f"{pr.point}{pi.point} = {l:.4g} m"))
         t = np.sqrt(np.clip((l - delta) * (l + delta), 0.0, None))
         Q = F + (self.sigma * t)[:, None] * u
-        set_pose_two_points(q, r, self._local(r, pr.point), self._local(r, pi.point), P, Q)
-        q[:, p, 2] = th_p
-        q[:, p, :2] = Q - rot(th_p, self._local(p, pi.point))
+        set_pose_two_points(q, r, self._local(r, pr.point), self._local(r, pi.point), P, Q, trig)
+        q[:, p, :2] = Q - arm(q, p, self._local(p, pi.point), trig)
         return margin
 
-    def _rpr(self, q, phi, strict):
+    def _rpr(self, q, phi, strict, trig=None):
         s = self.linkage.slides[self.internal.slide]
         g, sl = s.guide, s.link
         pg, ps = self.ext_of[g], self.ext_of[sl]
         kg, ks = self._known_body(pg, g), self._known_body(ps, sl)
-        G = world(q, kg, self._local(kg, pg.point))
-        H = world(q, ks, self._local(ks, ps.point))
+        G = world(q, kg, self._local(kg, pg.point), trig)
+        H = world(q, ks, self._local(ks, ps.point), trig)
         gp, hp = self._local(g, pg.point), self._local(sl, ps.point)
         c = s.rel_angle
         cc, sc = math.cos(c), math.sin(c)
@@ -184,9 +187,9 @@ class DyadSolver:
         ratio = np.clip(e / np.where(rho > 0, rho, np.nan), -1.0, 1.0)
         psi = np.arctan2(Dv[:, 1], Dv[:, 0]) - math.atan2(n0[1], n0[0]) - self.sigma * np.arccos(ratio)
         q[:, g, 2] = psi
-        q[:, g, :2] = G - rot(psi, gp)
+        q[:, g, :2] = G - arm(q, g, gp, trig)
         q[:, sl, 2] = psi + c
-        q[:, sl, :2] = H - rot(psi + c, hp)
+        q[:, sl, :2] = H - arm(q, sl, hp, trig)
         return margin
 
     def _linear(self, q, phi, strict):

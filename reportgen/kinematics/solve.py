@@ -8,8 +8,8 @@ constant ω: θ₁ = φ − α, θ̇₁ = ω, θ̈₁ = 0.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from types import MappingProxyType
+from dataclasses import dataclass
+from functools import cached_property
 from typing import Callable, Mapping
 
 import numpy as np
@@ -19,10 +19,10 @@ from ..linkage import Linkage, compile_linkage, sketch_q
 from ..numbers import clean_array
 from ..structure import Group, Structure, analyse_structure
 from ..task import Mechanism
-from .constraints import assemble, gamma, known_terms, perp, rot, world
+from .constraints import Trig, arm, assemble, gamma, known_terms, perp, trig_of, world
 from .positions import DyadSolver, NewtonSolver, group_constraints
 from .transmission import NEAR_SINGULAR_DEG, transmission_angle
-from ..geometry import readonly as _ro
+from ..geometry import frozen, readonly as _ro
 from ..tolerances import ABS_ROUNDOFF
 
 #: Largest crank step when following a class III+ group by continuation, rad.
@@ -75,9 +75,24 @@ def _deferred(fn: Callable, *args) -> Callable[[], PointMotion]:
 
 
 def _cleaned(make: Callable[[], PointMotion], v_scale: float, a_scale: float) -> PointMotion:
-    """A point's motion with its round-off residue made exact zeros (see ``_without_residue``)."""
+    """A point's motion with its round-off residue made exact zeros (see ``_without_residue``); an
+    acceleration not solved (NaN) is kept as it is."""
     m = make()
-    return PointMotion(m.pos, _ro(clean_array(m.vel, v_scale)), _ro(clean_array(m.acc, a_scale)))
+    acc = m.acc if m.acc is _NO_ACC.get(m.acc.shape[0]) else frozen(clean_array(m.acc, a_scale))
+    return PointMotion(m.pos, frozen(clean_array(m.vel, v_scale)), acc)
+
+
+#: The accelerations of a solve without them: one NaN array per number of positions, shared.
+_NO_ACC: dict[int, np.ndarray] = {}
+
+
+def _no_acc(n: int) -> np.ndarray:
+    a = _NO_ACC.get(n)
+    if a is None:
+        if len(_NO_ACC) > 64:
+            _NO_ACC.clear()
+        a = _NO_ACC[n] = frozen(np.full((n, 2), np.nan))
+    return a
 
 
 def _fixed_point(xy, n: int) -> PointMotion:
@@ -96,8 +111,14 @@ class KinematicsResult:
     points: Mapping[str, PointMotion]
     coms: Mapping[int, PointMotion]
     links: Mapping[int, LinkMotion]
-    transmission_deg: Mapping[str, np.ndarray]
-    near_singular: tuple[tuple[int, str, float], ...] = field(default=())   # (index, group key, μ)
+    transmission_deg: Mapping[str, np.ndarray]      # computed when first read
+
+    @cached_property
+    def near_singular(self) -> tuple[tuple[int, str, float], ...]:
+        """(index, group key, μ) of every position where a group's transmission angle μ is below
+        ``NEAR_SINGULAR_DEG`` (group by group, in the order of the structure)."""
+        return tuple((int(i), key, float(mu[i])) for key, mu in self.transmission_deg.items()
+                     for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG))
 
     @property
     def phi_deg(self) -> np.ndarray:
@@ -128,26 +149,33 @@ class KinematicModel:
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality + " (at the sketch's crank angle)",
                                 self._feasible_dyads_only()) from None
 
+    @property
+    def positions_independent(self) -> bool:
+        """Whether every position is solved on its own, so that its values do not depend on the
+        other angles of the same call (closed-form dyads; a class III group's Newton iterations
+        run until the whole call converges)."""
+        return all(isinstance(s, DyadSolver) for s in self.solvers)
+
     # -- driver --------------------------------------------------------------------------------
-    def _driver(self, q: np.ndarray, phi: np.ndarray) -> None:
+    def _driver(self, q: np.ndarray, phi: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
         b = self.linkage.bodies[d]
         th = phi - self.alpha
         q[:, d, 2] = th
         O = np.asarray(self.linkage.sketch[self.linkage.drive_axis])
-        q[:, d, :2] = O - rot(th, b.local[self.linkage.drive_axis])
+        q[:, d, :2] = O - arm(q, d, b.local[self.linkage.drive_axis], trig)
 
-    def _driver_vel(self, q: np.ndarray, qd: np.ndarray) -> None:
+    def _driver_vel(self, q: np.ndarray, qd: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
         p = self.linkage.bodies[d].local[self.linkage.drive_axis]
         qd[:, d, 2] = self.omega
-        qd[:, d, :2] = -self.omega * perp(rot(q[:, d, 2], p))
+        qd[:, d, :2] = -self.omega * perp(arm(q, d, p, trig))
 
-    def _driver_acc(self, q: np.ndarray, qdd: np.ndarray) -> None:
+    def _driver_acc(self, q: np.ndarray, qdd: np.ndarray, trig: Trig | None = None) -> None:
         d = self.linkage.drive_link
         p = self.linkage.bodies[d].local[self.linkage.drive_axis]
         qdd[:, d, 2] = 0.0
-        qdd[:, d, :2] = self.omega ** 2 * rot(q[:, d, 2], p)
+        qdd[:, d, :2] = self.omega ** 2 * arm(q, d, p, trig)
 
     # -- branches --------------------------------------------------------------------------------
     def _choose_branches(self) -> None:
@@ -157,21 +185,27 @@ class KinematicModel:
         self._driver(q, phi0)
         for solver, g in zip(self.solvers, self.structure.groups[1:]):
             if isinstance(solver, DyadSolver):
-                best: tuple[float, float, np.ndarray] | None = None
-                for sigma in (1.0, -1.0):
-                    solver.sigma = sigma
-                    qq = q.copy()
-                    solver.solve(qq, phi0, strict=True)
+                # both branches in one solve (rows σ = +1, −1; each position is solved on its own)
+                sigmas = (1.0, -1.0)
+                qq = np.repeat(q, 2, axis=0)
+                solver.sigma = np.array(sigmas)
+                try:
+                    solver.solve(qq, np.repeat(phi0, 2), strict=True)
+                finally:
+                    solver.sigma = 1.0
+                dist = [np.hypot(*(world(qq, k, self.linkage.bodies[k].local[name])
+                                   - np.asarray(self.linkage.sketch[name])).T)
+                        for k in g.links for name in self.linkage.bodies[k].points]
+                best: tuple[float, int] | None = None
+                for row in range(2):
                     err = 0.0
-                    for k in g.links:
-                        for name in self.linkage.bodies[k].points:
-                            w = world(qq, k, self.linkage.bodies[k].local[name])[0]
-                            err += float(np.hypot(*(w - np.asarray(self.linkage.sketch[name]))))
+                    for h in dist:
+                        err += float(h[row])
                     if best is None or err < best[0] - ABS_ROUNDOFF:
-                        best = (err, sigma, qq)
+                        best = (err, row)
                 assert best is not None
-                solver.sigma = best[1]
-                q = best[2]
+                solver.sigma = sigmas[best[1]]
+                q = qq[best[1]:best[1] + 1].copy()
             else:
                 for k in g.links:
                     q[:, k, :] = self._sketch_q[k]
@@ -182,18 +216,34 @@ class KinematicModel:
     # -- positions, velocities, accelerations ---------------------------------------------------
     def positions(self, phi: np.ndarray, strict: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """Poses at the crank angles ``phi``; also a mask of the positions where all groups assemble."""
+        q, ok, _ = self._positions(phi, strict)
+        return q, ok
+
+    def _positions(self, phi: np.ndarray, strict: bool = True) -> tuple[np.ndarray, np.ndarray, Trig]:
+        """:meth:`positions` and the cos/sin cache of the poses (filled as the groups are solved: each
+        body's rotation computed once for the positions, the velocities and the accelerations)."""
         phi = np.asarray(phi, dtype=float)
-        if any(isinstance(s, NewtonSolver) for s in self.solvers):
-            return self._positions_by_continuation(phi, strict)
+        if not self.positions_independent:
+            q, ok = self._positions_by_continuation(phi, strict)
+            return q, ok, trig_of(q)
         N = phi.size
         q = np.zeros((N, self.nb, 3))
-        self._driver(q, phi)
+        trig = trig_of(q)
+        self._driver(q, phi, trig)
         ok = np.ones(N, dtype=bool)
         for solver in self.solvers:
             assert isinstance(solver, DyadSolver)  # a NewtonSolver went by continuation above
-            margin = solver.solve(q, phi, strict=strict)
+            margin = solver.solve(q, phi, strict=strict, trig=trig)
             ok &= margin >= 0
-        return q, ok
+        return q, ok, trig
+
+    def positions_kept(self, phi: tuple[float, ...]) -> np.ndarray:
+        """Poses at a few fixed crank angles asked again and again (the stroke's ends, read by the
+        resistance at every solve), computed once per model (read-only)."""
+        kept = self.__dict__.setdefault("_kept", {})
+        if phi not in kept:
+            kept[phi] = _ro(self.positions(np.array(phi, dtype=float))[0])
+        return kept[phi]
 
     def _step(self, ph: np.ndarray, prev_q: np.ndarray | None, dt: float, strict: bool) -> tuple[np.ndarray, bool]:
         """One position: dyads in closed form, class III+ groups by Newton from a prediction."""
@@ -261,26 +311,29 @@ class KinematicModel:
                 ok &= solver.newton(q, phi, strict=strict) >= 0
         return q, ok
 
-    def velocities(self, q: np.ndarray, upto: int | None = None, jacobians: dict | None = None) -> np.ndarray:
-        """q̇ at the poses ``q``; ``jacobians`` (a dict) keeps each group's J for the accelerations."""
+    def velocities(self, q: np.ndarray, upto: int | None = None, jacobians: dict | None = None,
+                   trig: Trig | None = None) -> np.ndarray:
+        """q̇ at the poses ``q``; ``jacobians`` (a dict) keeps each group's J for the accelerations;
+        ``trig``: cos and sin of the poses' angles when the caller has them (:func:`trig_of`)."""
         qd = np.zeros_like(q)
-        self._driver_vel(q, qd)
-        return self._by_groups(q, qd, lambda _cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians)
+        self._driver_vel(q, qd, trig)
+        return self._by_groups(q, qd, lambda _cons, rows, cols: -known_terms(rows, qd, set(cols)), upto, jacobians,
+                               trig)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, upto: int | None = None,
-                      jacobians: dict | None = None) -> np.ndarray:
+                      jacobians: dict | None = None, trig: Trig | None = None) -> np.ndarray:
         """q̈ at the poses ``q`` with velocities ``qd`` (``jacobians``: those the velocities kept)."""
         qdd = np.zeros_like(q)
-        self._driver_acc(q, qdd)
+        self._driver_acc(q, qdd, trig)
 
         def rhs(cons, rows, cols):
-            gm = np.stack([r for c in cons for r in gamma(c, q, qd)], axis=-1)
+            gm = np.stack([r for c in cons for r in gamma(c, q, qd, trig)], axis=-1)
             return gm - known_terms(rows, qdd, set(cols))
-        return self._by_groups(q, qdd, rhs, upto, jacobians)
+        return self._by_groups(q, qdd, rhs, upto, jacobians, trig)
 
     def _by_groups(self, q: np.ndarray, out: np.ndarray,
                    rhs: Callable[[list, list, list[int]], np.ndarray], upto: int | None,
-                   jacobians: dict | None = None) -> np.ndarray:
+                   jacobians: dict | None = None, trig: Trig | None = None) -> np.ndarray:
         """Solve the groups in order (the first ``upto`` of them): J·x = rhs(constraints, rows, columns)
         for each group's unknowns, written into ``out`` (the derivative the later groups read). The
         velocity and acceleration systems share J: a ``jacobians`` dict carries it from one to the other."""
@@ -292,7 +345,7 @@ class KinematicModel:
             if jacobians is not None and n_g in jacobians:
                 J, rows = jacobians[n_g]
             else:
-                J, rows = assemble(cons, q, cols)
+                J, rows = assemble(cons, q, cols, trig)
                 if jacobians is not None:
                     jacobians[n_g] = (J, rows)
             x = self._solve(J, rhs(cons, rows, cols), g, q)
@@ -330,70 +383,83 @@ class KinematicModel:
                 ok &= solver.solve(q, phi, strict=False) >= 0
         return _intervals(np.degrees(phi), ok)
 
-    def solve(self, phi) -> KinematicsResult:
-        """Positions, velocities and accelerations at the crank angles ``phi`` (rad)."""
+    def solve(self, phi, accelerations: bool = True) -> KinematicsResult:
+        """Positions, velocities and accelerations at the crank angles ``phi`` (rad); without
+        ``accelerations`` they are not solved (q̈, ε and every point's acceleration are NaN): for
+        the callers that read positions and velocities only (the dynamics' M_red and J_red)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         try:
-            q, _ = self.positions(phi, strict=True)
+            q, _, trig = self._positions(phi, strict=True)
         except AssemblyError as exc:
             with np.errstate(invalid="ignore", divide="ignore"):
                 feasible = self.feasible_ranges()
             raise AssemblyError(exc.group, exc.phi_deg, exc.inequality, feasible) from None
         jacobians: dict = {}
-        qd = self.velocities(q, jacobians=jacobians)
-        qdd = self.accelerations(q, qd, jacobians=jacobians)
-        return self._result(phi, q, qd, qdd)
+        qd = self.velocities(q, jacobians=jacobians, trig=trig)
+        qdd = self.accelerations(q, qd, jacobians=jacobians, trig=trig) if accelerations else np.full_like(q, np.nan)
+        return self._result(phi, q, qd, qdd, trig, accelerations)
 
-    def _result(self, phi, q, qd, qdd) -> KinematicsResult:
+    def _result(self, phi, q, qd, qdd, trig: Trig | None = None, accelerations: bool = True) -> KinematicsResult:
+        """The result over the solve's own arrays q, q̇, q̈ (made read-only in place, not copied:
+        the links' motions are views of them)."""
         lk = self.linkage
+        q, qd, qdd = frozen(q), frozen(qd), frozen(qdd)
         points: dict[str, Callable[[], PointMotion]] = {}
         for k in sorted(lk.bodies):
             for name in lk.bodies[k].points:
                 if name in points or (k == 0):
                     continue
-                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name])
+                points[name] = _deferred(self._point_motion, q, qd, qdd, k, lk.bodies[k].local[name], trig,
+                                         accelerations)
         for name in lk.ground:
             if name not in points:
                 points[name] = _deferred(_fixed_point, lk.sketch[name], phi.size)
-        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local)) for k in lk.moving}
-        links = {k: LinkMotion(_ro(q[:, k, 2].copy()), _ro(qd[:, k, 2].copy()), _ro(qdd[:, k, 2].copy()))
-                 for k in lk.moving}
-        trans: dict[str, np.ndarray] = {}
-        flags = []
-        for g in self.structure.groups[1:]:
-            mu = transmission_angle(lk, g, q)
-            trans[g.key] = _ro(mu)
-            for i in np.flatnonzero(mu < NEAR_SINGULAR_DEG):
-                flags.append((int(i), g.key, float(mu[i])))
+        coms = {k: _deferred(self._point_motion, q, qd, qdd, k, tuple(lk.bodies[k].com_local), trig, accelerations)
+                for k in lk.moving}
+        links = {k: LinkMotion(q[:, k, 2], qd[:, k, 2], qdd[:, k, 2]) for k in lk.moving}
+        trans = {g.key: _deferred(_transmission, lk, g, q) for g in self.structure.groups[1:]}
         points, coms, links = self._without_residue(points, coms, links)
-        return KinematicsResult(_ro(phi), self.omega, _ro(q), _ro(qd), _ro(qdd), DerivedMotions(points),
-                                DerivedMotions(coms), MappingProxyType(links), MappingProxyType(trans),
-                                tuple(flags))
+        return KinematicsResult(_ro(phi), self.omega, q, qd, qdd, DerivedMotions(points),
+                                DerivedMotions(coms), DerivedMotions(links), DerivedMotions(trans))
 
     def _without_residue(self, points, coms, links):
         """Velocities and accelerations that are round-off residue (a centre of mass on a fixed axis
         comes out at ~1e-16 m/s²) become exact zeros: residue against |ω1|·L, ω1²·L (L the size of
         the mechanism), |ω1|, ω1² (:func:`reportgen.numbers.clean_array`)."""
-        sketch = np.array(list(self.linkage.sketch.values()), dtype=float).reshape(-1, 2)
-        size = float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
+        size = self._size
         w = abs(self.omega) or 1.0
         v_scale, a_scale = w * size, w * w * size
 
         def lm(m: LinkMotion) -> LinkMotion:
-            return LinkMotion(m.angle, _ro(clean_array(m.omega, w)), _ro(clean_array(m.epsilon, w * w)))
+            return LinkMotion(m.angle, frozen(clean_array(m.omega, w)), frozen(clean_array(m.epsilon, w * w)))
 
         return ({n: _deferred(_cleaned, f, v_scale, a_scale) for n, f in points.items()},
                 {k: _deferred(_cleaned, f, v_scale, a_scale) for k, f in coms.items()},
-                {k: lm(m) for k, m in links.items()})
+                {k: _deferred(lm, m) for k, m in links.items()})
+
+    @cached_property
+    def _size(self) -> float:
+        """The size L of the mechanism: the larger side of its sketch's bounding box (m)."""
+        sketch = np.array(list(self.linkage.sketch.values()), dtype=float).reshape(-1, 2)
+        return float(np.ptp(sketch, axis=0).max()) if len(sketch) > 1 else 1.0
 
     @staticmethod
-    def _point_motion(q, qd, qdd, k: int, p: tuple) -> PointMotion:
-        Rp = rot(q[:, k, 2], p)
-        w, e = qd[:, k, 2][:, None], qdd[:, k, 2][:, None]
+    def _point_motion(q, qd, qdd, k: int, p: tuple, trig: Trig | None = None,
+                      accelerations: bool = True) -> PointMotion:
+        Rp = arm(q, k, p, trig)
+        w = qd[:, k, 2][:, None]
+        pR = perp(Rp)
         pos = q[:, k, :2] + Rp
-        vel = qd[:, k, :2] + w * perp(Rp)
-        acc = qdd[:, k, :2] + e * perp(Rp) - w * w * Rp
-        return PointMotion(_ro(pos), _ro(vel), _ro(acc))
+        vel = qd[:, k, :2] + w * pR
+        if not accelerations:
+            return PointMotion(frozen(pos), frozen(vel), _no_acc(q.shape[0]))
+        e = qdd[:, k, 2][:, None]
+        acc = qdd[:, k, :2] + e * pR - w * w * Rp
+        return PointMotion(frozen(pos), frozen(vel), frozen(acc))
+
+
+def _transmission(linkage: Linkage, g: Group, q: np.ndarray) -> np.ndarray:
+    return _ro(transmission_angle(linkage, g, q))
 
 
 def _intervals(deg: np.ndarray, ok: np.ndarray) -> tuple[tuple[float, float], ...]:
