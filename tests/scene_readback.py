@@ -15,13 +15,41 @@ from reportgen.taskfile import load_task
 ROOT = Path(__file__).resolve().parents[1]
 
 
+# Drawing a sheet costs seconds of CPU; the tests that read the same example's sheet back (tests/scenes,
+# tests/sheet1) share one drawing per test process, so that `make check` stays within a minute. The
+# objects are only read by those tests (a Project's stages are immutable, a drawn sheet is saved and
+# read back, never edited).
+_PROJECTS: dict[str, Project] = {}
+_CONTENTS: dict[tuple[str, str], Any] = {}
+_SHEETS: dict[tuple[str, str, int], tuple[Any, Any]] = {}
+
+
+def example_project(example: str) -> Project:
+    """The project of ``examples/<example>/task.toml``, loaded once per test process."""
+    if example not in _PROJECTS:
+        _PROJECTS[example] = Project(load_task(ROOT / "examples" / example / "task.toml"))
+    return _PROJECTS[example]
+
+
+def drawn_sheet(example: str, sheet: Any, number: int, folder: Path) -> tuple[Any, Any]:
+    """(the drawn sheet, its DXF read back) of an example's sheet ``number`` of 4, drawn once per test
+    process (saved into ``folder`` the first time)."""
+    key = (example, sheet.__name__, number)
+    if key not in _SHEETS:
+        drawn = sheet.draw(example_project(example), number, 4)
+        path = folder / f"sheet{number}.dxf"
+        drawn.save(path)
+        _SHEETS[key] = (drawn, ezdxf.readfile(path))
+    return _SHEETS[key]
+
+
 def part_and_sheet(example: str, part: Any, sheet: Any, number: int, folder: Path) -> tuple[Project, Any, Any]:
     """(project, the part's content, the sheet's DXF read back) of an example: both from one project."""
-    project = Project(load_task(ROOT / "examples" / example / "task.toml"))
-    content = part.content(project)
-    path = folder / f"sheet{number}.dxf"
-    sheet.draw(project, number, 4).save(path)
-    return project, content, ezdxf.readfile(path)
+    project = example_project(example)
+    key = (example, part.__name__)
+    if key not in _CONTENTS:
+        _CONTENTS[key] = part.content(project)
+    return project, _CONTENTS[key], drawn_sheet(example, sheet, number, folder)[1]
 
 
 def polyline_length(points) -> float:

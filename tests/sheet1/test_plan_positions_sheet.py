@@ -9,7 +9,6 @@ import math
 import re
 from pathlib import Path
 
-import ezdxf
 import numpy as np
 import pytest
 from shapely.geometry import Point
@@ -19,10 +18,8 @@ from drawings.sheets import kinematics as sheet1
 from latex_templates import NoteBuilder
 from latex_templates.compose import compose
 from latex_templates.render import Strings
-from reportgen.project import Project
 from reportgen.scenes.scene import Arrow
-from reportgen.taskfile import load_task
-from scene_readback import dxf_vectors
+from scene_readback import drawn_sheet, dxf_vectors, example_project
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3")
@@ -30,16 +27,15 @@ EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3")
 
 @pytest.fixture(scope="module", params=EXAMPLES)
 def built(request, tmp_path_factory):
-    project = Project(load_task(ROOT / "examples" / request.param / "task.toml"))
+    project = example_project(request.param)
     out = tmp_path_factory.mktemp(request.param)
     sections, _ = compose(project, Strings("ru"), only=("linkage",))
     note = NoteBuilder(project.task.document)
     for s in sections:
         note.add_section(s.section)
     tex = note.render(out).read_text(encoding="utf-8")
-    sheet = sheet1.draw(project, 1, 4)
-    sheet.save(out / "sheet1.dxf")
-    return project, tex, sheet, ezdxf.readfile(out / "sheet1.dxf")
+    sheet, doc = drawn_sheet(request.param, sheet1, 1, out)
+    return project, tex, sheet, doc
 
 
 def _number(s: str) -> float:

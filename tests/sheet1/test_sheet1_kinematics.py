@@ -19,6 +19,7 @@ from drawings.scenes import kinematics_labels as rl
 from reportgen.plans import build_plans
 from reportgen.project import Project
 from reportgen.taskfile import load_task
+from scene_readback import drawn_sheet, example_project
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3")
@@ -29,12 +30,9 @@ def project_of(name: str) -> Project:
 
 
 @pytest.fixture(scope="module")
-def sheets():
-    out = {}
-    for name in EXAMPLES:
-        project = project_of(name)
-        out[name] = (project, kinematics.draw(project, 1, 4))
-    return out
+def sheets(tmp_path_factory):
+    return {name: (example_project(name), drawn_sheet(name, kinematics, 1, tmp_path_factory.mktemp(name))[0])
+            for name in EXAMPLES}
 
 
 @pytest.mark.parametrize("name", EXAMPLES)
