@@ -23,6 +23,7 @@ from reportgen.kinetostatics.reactions import pair_name, perp
 from ..words import symbol, tr
 from reportgen.scenes.forces import polygon_scene
 from reportgen.scenes.scene import Arrow as SceneArrow
+from reportgen.scenes.scene import Circle as SceneCircle
 from reportgen.scenes.scene import Scene
 from reportgen.scenes.scene import Segment as SceneSegment
 from reportgen.tolerances import ABS_ZERO, TINY
@@ -162,12 +163,19 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
                     view.segment(e.a, e.b, "hidden")
                 else:
                     view.arrow(e.a, e.b, None, head_mm=min(4.0, e.length))
+            elif isinstance(e, SceneSegment):
+                view.segment(e.a, e.b, "hidden" if e.kind == "hidden" else "thin" if e.kind == "thin" else "contour")
+            elif isinstance(e, SceneCircle):
+                view.circle_mm(e.c, e.r, "thin")
         inside = view.rect.polygon()
+        for lb in scene.labels:            # a detail's letter and heading at their own places first
+            if lb.role in ("detail", "detail-title"):
+                view.text_mm(view.transform(lb.at), detail_text(lb), 5.0, "center")
         for lb in scene.labels:
             if lb.along is None:
                 continue
             a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            rich = rl.Rich(plain(lb.anchor.split(":", 1)[1]))
+            rich = rl.Rich(plain(lb.anchor.rsplit(":", 1)[1]))
             if lb.leader:
                 mid = view.transform(lb.at)
                 normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
@@ -184,6 +192,16 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
                      tr("sheets.kv05", v1=format_significant(mu.value, 4)), 3.5, "bottom-center")
         return view
     return Panel(name, w, h, paint)
+
+
+def detail_text(lb) -> str:
+    """A polygon detail's letter (``polygons.letters`` of the sheet's language) or its heading
+    «А (5:1)» (:func:`reportgen.scenes.forces.polygon_details`)."""
+    from ..words import decimal_mark
+    letters = tr("polygons.letters")
+    index, _, ratio = lb.text.partition(" ")
+    letter = letters[int(index) % len(letters)]
+    return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
 
 
 def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:

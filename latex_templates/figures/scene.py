@@ -62,6 +62,21 @@ def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = T
     return min(1.0, fit)
 
 
+#: Roles of labels set at their own point (the letter of a polygon's detail on its shelf, the detail's
+#: heading «А (5:1)»): placed first, the others kept clear of them.
+FIXED_ROLES = ("detail", "detail-title")
+
+
+def fixed_text(lb: Label) -> str:
+    """The text of a label of :data:`FIXED_ROLES`: the detail's index as its letter in the note's
+    alphabet (``polygons.letters``), the heading as «letter (ratio)» with the language's decimal mark."""
+    from ..parts import decimal_mark
+    letters = str(active().raw("polygons.letters"))
+    index, _, ratio = lb.text.partition(" ")
+    letter = letters[int(index) % len(letters)]
+    return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
+
+
 def _mathtext(tex: str) -> str:
     """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
@@ -254,8 +269,15 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     boxes: list = []
     lines = _lines(scene)
     others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
+    for i, lb in enumerate(scene.labels):          # the fixed ones first: the others avoid them
+        if lb.role not in FIXED_ROLES:
+            continue
+        w, hh = sizes[i] if sizes is not None and i in sizes else _text_size(fixed_text(lb), h)
+        b = (lb.at[0] - w / 2, lb.at[1] - hh / 2, lb.at[0] + w / 2, lb.at[1] + hh / 2)
+        boxes.append(b)
+        out.append((lb, lb.at, PlacedLabel(lb.text, lb.anchor, b, 0.0, False)))
     for i, lb in enumerate(scene.labels):
-        if lb.role not in roles:
+        if lb.role not in roles or lb.role in FIXED_ROLES:
             continue
         size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
         c, b, leader = _place(lb, size, boxes, centre, gap, lines, others)
@@ -320,6 +342,9 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
                                     facecolor=colour, edgecolor=colour, lw=0.3, zorder=3))
     texts = {}
     for lb, c, _pl in labels:
+        if lb.role in FIXED_ROLES:
+            texts[id(lb)] = ax.text(c[0], c[1], fixed_text(lb), fontsize=LABEL_PT, ha="center", va="center", zorder=6)
+            continue
         t = ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
                     style="italic" if lb.role == "point" else "normal",
                     color="tab:blue" if lb.role == "number" else "black", zorder=6)
