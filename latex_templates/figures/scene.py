@@ -163,6 +163,41 @@ def _lines(scene: Scene) -> list:
     return out
 
 
+def _seg_point(p, seg) -> float:
+    (x0, y0), (x1, y1) = seg
+    dx, dy = x1 - x0, y1 - y0
+    m = dx * dx + dy * dy
+    t = 0.0 if m == 0.0 else min(1.0, max(0.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / m))
+    return math.hypot(p[0] - x0 - t * dx, p[1] - y0 - t * dy)
+
+
+def box_segment_distance(b, seg) -> float:
+    """Distance (mm) between the box ``b`` (x0, y0, x1, y1) and the segment ``seg``."""
+    if _crosses(b, seg):
+        return 0.0
+    corners = ((b[0], b[1]), (b[2], b[1]), (b[2], b[3]), (b[0], b[3]))
+    return min([_dist_box(q, b) for q in seg] + [_seg_point(c, seg) for c in corners])
+
+
+def _along_one_line(own, other) -> bool:
+    """Do two vectors lie on one line, overlapping (then their names share the room beside it)?"""
+    (ax, ay), (bx, by) = own
+    n = math.hypot(bx - ax, by - ay)
+    if n == 0.0:
+        return False
+    off = max(abs((x - ax) * (by - ay) - (y - ay) * (bx - ax)) for x, y in other) / n
+    return off < 0.5 and min(_seg_point(other[0], own), _seg_point(other[1], own),
+                             _seg_point(own[0], other), _seg_point(own[1], other)) < 0.5
+
+
+def _own_vector(box, own, rivals, margin: float) -> bool:
+    """Is ``box`` nearer (by ``margin``) to its vector ``own`` than to any of the ``rivals`` (the
+    figure's other named vectors not lying along it)? A name nearer to another vector reads as its."""
+    d = box_segment_distance(box, own)
+    return all(box_segment_distance(box, r) >= d + margin for r in rivals
+               if r != own and not _along_one_line(own, r))
+
+
 def _leader_candidates(lb: Label, w: float, h: float, gap: float,
                        offs: tuple[float, ...] = (4.0, 6.0, 8.0, 11.0)) -> list[tuple[float, float]]:
     """Centres round the anchor (a point, or the middle of a vector: across it first) for a label
@@ -192,7 +227,7 @@ def _own(box, p, others: list, margin: float) -> bool:
 
 
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
-           lines: list | None = None, others: list | None = None):
+           lines: list | None = None, others: list | None = None, rivals: list | None = None):
     """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
     scene's middle first, nearest first, and nearer to it than to any of the ``others``), or
     beside the middle of a vector on either side; where every such box hits one, farther out on a
@@ -235,6 +270,8 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 continue
             if point and not leader and others and not _own(box, lb.at, others, 0.75 * gap):
                 continue
+            if not point and not leader and rivals and not _own_vector(box, lb.along, rivals, 0.75 * gap):
+                continue
             near = [s for s in (lines or ()) if min(s[0][0], s[1][0]) <= box[2] and max(s[0][0], s[1][0]) >= box[0]
                     and min(s[0][1], s[1][1]) <= box[3] and max(s[0][1], s[1][1]) >= box[1]]
             hits = sum(1 for s in near if _crosses(box, s))
@@ -269,6 +306,7 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     boxes: list = []
     lines = _lines(scene)
     others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
+    rivals = [lb.along for lb in scene.labels if lb.role == "vector" and lb.along is not None]
     for i, lb in enumerate(scene.labels):          # the fixed ones first: the others avoid them
         if lb.role not in FIXED_ROLES:
             continue
@@ -280,7 +318,7 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
         if lb.role not in roles or lb.role in FIXED_ROLES:
             continue
         size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
-        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others)
+        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others, rivals)
         boxes.append(b)
         out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), leader)))
     return out
