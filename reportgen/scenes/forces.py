@@ -103,17 +103,18 @@ class PolygonDetail:
         return gost_scales.label((self.ratio, 1.0))
 
 
-def _sides(polygon) -> list[tuple[str, np.ndarray, np.ndarray, bool]]:
-    """(name, tail, head, read diagonal) of every drawn vector of the polygon, mm."""
+def _sides(polygon) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
+    """(name, tail, head, style: "load", "found" or "read" for a diagonal) of every drawn vector of
+    the polygon, mm."""
     out = []
     for v in polygon.vectors:
         a, e = np.asarray(v.start_mm, float), np.asarray(v.end_mm, float)
         if float(np.hypot(*(e - a))) >= MM_EPS:
-            out.append((v.name, a, e, False))
+            out.append((v.name, a, e, "load" if v.known else "found"))
     for v in polygon.extra:
         a, b = diagonal(polygon, v)
         if float(np.hypot(*(b - a))) >= MM_EPS:
-            out.append((v.name, np.asarray(a, float), np.asarray(b, float), True))
+            out.append((v.name, np.asarray(a, float), np.asarray(b, float), "read"))
     return out
 
 
@@ -231,16 +232,16 @@ def _detail_entities(det: PolygonDetail, sides) -> tuple[list[Entity], list[Labe
     ents: list[Entity] = []
     labels: list[Label] = []
     tag = f"detail{det.index}"
-    for name, a, b, read in sides:
+    for name, a, b, style in sides:
         span = _clip(a, b, c, det.radius)
         if span is None:
             continue
         t0, t1 = span
         p, q = (_pt(at + (a + (b - a) * t - c) * k) for t in (t0, t1))
-        if read:
+        if style == "read":
             ents.append(Segment(f"{tag}:read:{name}", p, q, "hidden"))
         elif t1 >= 1.0 - MM_EPS:
-            ents.append(Arrow(f"{tag}:vec:{name}", p, q, "load"))
+            ents.append(Arrow(f"{tag}:vec:{name}", p, q, style))
         else:
             ents.append(Segment(f"{tag}:vec:{name}", p, q, "vectors"))
         if name in det.names:

@@ -31,10 +31,17 @@ MIN_ARROW_MM = 7.0
 CROWD_MM = 3.0
 
 
+#: Lying over another arrow hides its head and its name: it counts this many times as much as lying
+#: over the lever's contour (:func:`_crowding`).
+ARROW_WEIGHT = 3.0
+
+
 def _crowding(way, own: np.ndarray, drawn: list, points: list) -> tuple[float, float]:
-    """How much the arrow ``way`` (tail, head; mm) lies over what is drawn: the length of the lines
-    ``drawn`` within CROWD_MM of it (sampled along it), then the number of other image points
-    (``points``, its own point ``own`` left out) within CROWD_MM of it. The pulling way wins a tie."""
+    """How much the arrow ``way`` (tail, head; mm) lies over what is drawn: the length of it within
+    CROWD_MM of the lines ``drawn`` ((tail, head, weight): the contour 1, an arrow
+    :data:`ARROW_WEIGHT`; sampled along it, the heaviest line at each sample), then the number of
+    other image points (``points``, its own point ``own`` left out) within CROWD_MM of it. The
+    pulling way wins a tie."""
     a, b = way
     n = 16
     over = 0.0
@@ -43,8 +50,7 @@ def _crowding(way, own: np.ndarray, drawn: list, points: list) -> tuple[float, f
         q = a + (b - a) * k / n
         if float(np.hypot(*(q - own))) < CROWD_MM:
             continue
-        if any(_seg_dist(q, s0, s1) < CROWD_MM for s0, s1 in drawn):
-            over += step
+        over += step * max([w for s0, s1, w in drawn if _seg_dist(q, s0, s1) < CROWD_MM] + [0.0])
     near = sum(1 for p in points if float(np.hypot(*(p - own))) > CROWD_MM and _seg_dist(p, a, b) < CROWD_MM)
     return (round(over, 6), float(near))
 
@@ -85,7 +91,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
     mu_f = round_scale(max([float(np.hypot(*v)) for _, _, v, _, _ in loads] + [ABS_ZERO]), LEVER_ARROW_MM, FORCE_SERIES)
     labels: list[Label] = []
     n_arm = 0
-    drawn = [(np.asarray(e.a, float), np.asarray(e.b, float)) for e in ents if isinstance(e, Segment)
+    drawn = [(np.asarray(e.a, float), np.asarray(e.b, float), 1.0) for e in ents if isinstance(e, Segment)
              and e.kind == "contour"]
     others = [np.asarray(p, float) for p in points.values()] + [np.zeros(2)]
     order = sorted(range(len(loads)), key=lambda i: -float(np.hypot(*loads[i][2])))
@@ -99,7 +105,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
         pull, push = (img, img + d), (img - d, img)
         way = min((pull, push), key=lambda w: _crowding(w, img, drawn, others))
         ways[i] = way
-        drawn.append(way)
+        drawn.append((way[0], way[1], ARROW_WEIGHT))
     for i, (name, img, v, arm, style) in enumerate(loads):
         mag = float(np.hypot(*v))
         if mag <= 0:
