@@ -67,6 +67,11 @@ def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = T
 FIXED_ROLES = ("detail", "detail-title")
 
 
+#: Scenes whose vectors' names are kept nearer to their own vector than to any other named vector
+#: (the force polygons and the lever, issue 12; tests/labels checks the same figures).
+OWN_VECTOR_SCENES = ("polygon", "lever")
+
+
 def fixed_text(lb: Label) -> str:
     """The text of a label of :data:`FIXED_ROLES`: the detail's index as its letter in the note's
     alphabet (``polygons.letters``), the heading as «letter (ratio)» with the language's decimal mark."""
@@ -306,7 +311,8 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     boxes: list = []
     lines = _lines(scene)
     others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
-    rivals = [lb.along for lb in scene.labels if lb.role == "vector" and lb.along is not None]
+    rivals = [lb.along for lb in scene.labels if lb.role == "vector" and lb.along is not None] \
+        if scene.name.startswith(OWN_VECTOR_SCENES) else []
     for i, lb in enumerate(scene.labels):          # the fixed ones first: the others avoid them
         if lb.role not in FIXED_ROLES:
             continue
