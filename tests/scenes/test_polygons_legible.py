@@ -183,3 +183,29 @@ def test_lever_arrows_do_not_lie_over_each_other(example):
     found = [(e.id, f.id, round(_over(e, f), 1)) for i, e in enumerate(arrows) for f in arrows[i + 1:]
              if _over(e, f) > 3.0]
     assert not found, found
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_sheet_names_the_balancing_force_on_the_lever(example):
+    """Sheet 2 (the control work's sheet) draws F_ур on the lever and names it: a label of the view
+    «lever» names a line with one end at the point the sheet letters as the crank pin's image."""
+    from drawings.sheets import available_sheets
+    from drawings.words import language, symbol, use_catalogue
+    from latex_templates.render import Strings
+    from reportgen.commands.pipeline import draw_sheet
+    project = _project(example)
+    todo = available_sheets(project)
+    number, mod = next((i, m) for i, (s, m) in enumerate(todo, 1) if "kinetostatics" in s or "control" in s)
+    sheet = draw_sheet(project, mod, number, len(todo))
+    use_catalogue(Strings)
+    with language(project.task.document.language):
+        fb = symbol("Fур")
+    records = [r for r in sheet.annotations.labels if r.view == "lever"]
+    pin = project.kinetostatics.reactions.crank_pin.lower()
+    at = [r.anchor for r in records if r.text == pin and r.anchor.geom_type == "Point"]
+    named = [r.anchor for r in records if r.text == fb and r.anchor.geom_type in ("LineString", "MultiLineString")]
+    assert len(at) == 1 and len(named) == 1, ([r.text for r in records], fb)
+    lines = named[0].geoms if named[0].geom_type == "MultiLineString" else [named[0]]
+    ends = [c for ln in lines for c in (ln.coords[0], ln.coords[-1])]
+    assert min(math.dist(c, at[0].coords[0]) for c in ends) < 1e-6
