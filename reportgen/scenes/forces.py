@@ -190,9 +190,9 @@ def _detail_place(c, R: float, lo, hi, taken, box: tuple[float, float]) -> np.nd
     best = None
     for rank, p in enumerate(cands):
         for _ in range(20):               # slide along the box's side past the details already placed
-            box = (p[0] - R, p[1] - R, p[0] + R, p[1] + R + t)
-            hit = [o for o in taken if not (box[2] + g <= o[0] or o[2] + g <= box[0] or box[3] + g <= o[1]
-                                            or o[3] + g <= box[1])]
+            room = (p[0] - R, p[1] - R, p[0] + R, p[1] + R + t)
+            hit = [o for o in taken if not (room[2] + g <= o[0] or o[2] + g <= room[0] or room[3] + g <= o[1]
+                                            or o[3] + g <= room[1])]
             if not hit:
                 break
             if rank < 2:
