@@ -172,9 +172,12 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
         view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
                      tr("sheets.kv05", v1=format_significant(mu.value, 4)), 3.5, "bottom-center")
         inside = view.rect.polygon()
-        for lb in scene.labels:            # a detail's letter and heading at their own places first
+        for lb in scene.labels:            # a detail's letter, heading and scale at their own places first
             if lb.role in ("detail", "detail-title"):
                 view.text_mm(view.transform(lb.at), detail_text(lb), 5.0, "center")
+            elif lb.role == "detail-scale":
+                view.text_mm(view.transform(lb.at), tr("sheets.kv05", v1=format_significant(
+                    scene.scale(f"μF:{lb.text}").value, 4)), 3.5, "center")
         rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
                        for lb in scene.labels if lb.along is not None)
         for lb in scene.labels:

@@ -64,7 +64,7 @@ def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = T
 
 #: Roles of labels set at their own point (the letter of a polygon's detail on its shelf, the detail's
 #: heading «А (5:1)»): placed first, the others kept clear of them.
-FIXED_ROLES = ("detail", "detail-title")
+FIXED_ROLES = ("detail", "detail-title", "detail-scale")
 
 
 #: Scenes whose vectors' names are kept nearer to their own vector than to any other named vector
@@ -72,10 +72,16 @@ FIXED_ROLES = ("detail", "detail-title")
 OWN_VECTOR_SCENES = ("polygon", "lever")
 
 
-def fixed_text(lb: Label) -> str:
+def fixed_text(lb: Label, scene: Scene | None = None) -> str:
     """The text of a label of :data:`FIXED_ROLES`: the detail's index as its letter in the note's
-    alphabet (``polygons.letters``), the heading as «letter (ratio)» with the language's decimal mark."""
+    alphabet (``polygons.letters``), the heading as «letter (ratio)» with the language's decimal mark,
+    the detail's scale «μF = 2 Н/мм» (``polygons.detail_scale``, from the ``scene``'s scales)."""
+    from markupsafe import Markup
+
     from ..parts import decimal_mark
+    if lb.role == "detail-scale":
+        mu = scene.scale(f"μF:{lb.text}").value if scene is not None else 0.0
+        return str(active().text("polygons.detail_scale", mu=Markup(f"{mu:.6g}".replace(".", decimal_mark()))))
     letters = str(active().raw("polygons.letters"))
     index, _, ratio = lb.text.partition(" ")
     letter = letters[int(index) % len(letters)]
@@ -313,13 +319,19 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
     rivals = [lb.along for lb in scene.labels if lb.role == "vector" and lb.along is not None] \
         if scene.name.startswith(OWN_VECTOR_SCENES) else []
-    for i, lb in enumerate(scene.labels):          # the fixed ones first: the others avoid them
-        if lb.role not in FIXED_ROLES:
-            continue
-        w, hh = sizes[i] if sizes is not None and i in sizes else _text_size(fixed_text(lb), h)
-        b = (lb.at[0] - w / 2, lb.at[1] - hh / 2, lb.at[0] + w / 2, lb.at[1] + hh / 2)
+    fixed = sorted((i for i, lb in enumerate(scene.labels) if lb.role in FIXED_ROLES),
+                   key=lambda i: scene.labels[i].at[1])
+    for i in fixed:          # the fixed ones first, the lowest first, each moved up clear of those below
+        lb = scene.labels[i]
+        w, hh = sizes[i] if sizes is not None and i in sizes else _text_size(fixed_text(lb, scene), h)
+        c = (lb.at[0], lb.at[1])
+        b = (c[0] - w / 2, c[1] - hh / 2, c[0] + w / 2, c[1] + hh / 2)
+        while _boxes_hit(b, boxes):
+            top = max(o[3] for o in boxes if not (b[2] <= o[0] or o[2] <= b[0] or b[3] <= o[1] or o[3] <= b[1]))
+            c = (c[0], top + hh / 2 + gap / 2)
+            b = (c[0] - w / 2, c[1] - hh / 2, c[0] + w / 2, c[1] + hh / 2)
         boxes.append(b)
-        out.append((lb, lb.at, PlacedLabel(lb.text, lb.anchor, b, 0.0, False)))
+        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, 0.0, False)))
     for i, lb in enumerate(scene.labels):
         if lb.role not in roles or lb.role in FIXED_ROLES:
             continue
@@ -387,7 +399,7 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
     texts = {}
     for lb, c, _pl in labels:
         if lb.role in FIXED_ROLES:
-            texts[id(lb)] = ax.text(c[0], c[1], fixed_text(lb), fontsize=LABEL_PT, ha="center", va="center", zorder=6)
+            texts[id(lb)] = ax.text(c[0], c[1], fixed_text(lb, scene), fontsize=LABEL_PT, ha="center", va="center", zorder=6)
             continue
         t = ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
                     style="italic" if lb.role == "point" else "normal",

@@ -10,8 +10,8 @@ as an enlarged detail — a *выносной элемент* of ГОСТ 2.305 
 them with the detail's letter on a leader's shelf, beside the polygon the circle's content enlarged
 k:1 (k a ГОСТ 2.302 enlargement for which μF/k is a round force scale, the smallest that draws the
 shortest of them at least :data:`LEGIBLE_MM` long), headed «А (5:1)»; the small vectors are named
-in the detail, not on the polygon. :func:`polygon_details` is the rule; the note's text names each
-detail with its ratio and μF/k."""
+in the detail, not on the polygon; under the heading the detail's μF/k. :func:`polygon_details` is
+the rule; the note's text names each detail with its ratio and μF/k."""
 from __future__ import annotations
 
 import math
@@ -40,7 +40,7 @@ DETAIL_MARGIN_MM = 1.5
 DETAIL_MAX_MM = 70.0
 #: Gap between the polygon and a detail, and room for the detail's heading above it, mm.
 DETAIL_GAP_MM = 10.0
-DETAIL_TITLE_MM = 8.0
+DETAIL_TITLE_MM = 14.0
 #: The leader to the detail's letter: its slanted part and its shelf, mm.
 DETAIL_LEADER_MM = (7.0, 6.0)
 
@@ -261,7 +261,9 @@ def _detail_entities(det: PolygonDetail, sides) -> tuple[list[Entity], list[Labe
     labels.append(Label(str(det.index), f"{tag}:shelf", _pt((p1 + p2) / 2 + np.array([0.0, 2.5])), "detail"))
     R = det.radius * k
     labels.append(Label(f"{det.index} {det.ratio_text}", f"{tag}:title",
-                        _pt(at + np.array([0.0, R + DETAIL_TITLE_MM / 2])), "detail-title"))
+                        _pt(at + np.array([0.0, R + DETAIL_TITLE_MM * 0.75])), "detail-title"))
+    labels.append(Label(str(det.index), f"{tag}:scale", _pt(at + np.array([0.0, R + DETAIL_TITLE_MM * 0.3])),
+                        "detail-scale"))
     return ents, labels
 
 
