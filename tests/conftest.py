@@ -49,6 +49,10 @@ SLOW_TESTS = (
     "tests/taskfile/test_taskfile_fuzz.py::test_mutated_valid_tasks",
     "tests/sheet1/test_sheet1_kinematics.py::test_scale_captions_come_from_the_results",
     "tests/sheet1/test_sheet1_kinematics.py::test_registered_and_drawn",
+    # sheet 1 drawn with 1, 2 and 3 plan positions for every linkage example (15 sheets)
+    "tests/sheet1/test_plan_pairs_layout.py::test_drawn_at_the_notes_scale_with_the_small_plans",
+    "tests/sheet1/test_plan_pairs_layout.py::test_each_acceleration_plan_beside_its_velocity_plan",
+    "tests/sheet1/test_plan_pairs_layout.py::test_nothing_overlaps_or_leaves_the_field",
     "tests/kinetostatics_presentation/test_kst_sheet.py::test_kst_sheet_audit_and_overlaps",
     "tests/dynamics_presentation/test_dyn_note.py::test_analysed_position_is_the_solvers",
     "tests/dynamics_presentation/test_dyn_note.py::test_numbers_are_the_results",

@@ -44,3 +44,37 @@ def dxf_vectors(doc) -> list[float]:
             if 0 < ahead < 5.0 and float(np.hypot(*(t - b - u * ahead))) < 1e-6:
                 out.append(float(np.hypot(*(t - a))))
     return out
+
+
+def dxf_arrows(doc) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The arrows on the sheet as (tail, tip) in sheet mm: a LINE on layer «vectors» and the SOLID
+    head whose tip continues it (as :func:`dxf_vectors` finds them)."""
+    msp = doc.modelspace()
+    tips = [np.array(e.dxf.vtx0)[:2] for e in msp.query("SOLID[layer=='vectors']")]
+    out = []
+    for ln in msp.query("LINE[layer=='vectors']"):
+        a, b = np.array(ln.dxf.start)[:2], np.array(ln.dxf.end)[:2]
+        u = (b - a) / (np.hypot(*(b - a)) or 1.0)
+        for t in tips:
+            ahead = float(np.dot(t - b, u))
+            if 0 < ahead < 5.0 and float(np.hypot(*(t - b - u * ahead))) < 1e-6:
+                out.append((a, t))
+    return out
+
+
+def common_shift(pairs: list[tuple[np.ndarray, np.ndarray]], drawn: list[tuple[np.ndarray, np.ndarray]],
+                 tol: float = 0.01) -> np.ndarray | None:
+    """The one translation (sheet mm) that puts every (tail, tip) of ``pairs`` (a scene's arrows,
+    scene mm) onto an arrow of ``drawn`` (the sheet's), or None: the same arrows at the same places
+    relative to each other."""
+    if not pairs:
+        return None
+    a0, b0 = max(pairs, key=lambda p: float(np.hypot(*(p[1] - p[0]))))
+    for ta, tb in drawn:
+        t = ta - a0
+        if float(np.hypot(*(tb - b0 - t))) > tol:
+            continue
+        if all(any(float(np.hypot(*(da - a - t))) < tol and float(np.hypot(*(db - b - t))) < tol
+                   for da, db in drawn) for a, b in pairs):
+            return t
+    return None

@@ -187,12 +187,33 @@ def place_small_letters(view: View, scene: Scene, helper: set[str], height: floa
         view.line(view.transform.inverse(p), view.transform.inverse((q.x, q.y)), "thin")
 
 
-#: Title and caption strips of the small plans' view, mm.
-SMALL_TITLE_MM, SMALL_CAPTION_MM = 14.0, 12.0
+#: Title and caption strips of the small plans' view, mm; a title in two lines takes
+#: ``SMALL_TITLE_LINE_MM`` more.
+SMALL_TITLE_MM, SMALL_CAPTION_MM, SMALL_TITLE_LINE_MM = 14.0, 12.0, 8.0
+#: Height of the small plans' title and caption letters, mm.
+SMALL_TITLE_H = 5.0
 
 
 def small_title(plans: list[Plan]) -> str:
     return tr("sheets.kp01", v1=len(plans) - 1)
+
+
+def title_lines(text: str, width: float, height: float = SMALL_TITLE_H) -> list[str]:
+    """``text`` in one line if it fits ``width`` (less 10 mm), else split at the space that makes
+    the longer of two lines shortest."""
+    if style.text_width(text, height) + 10.0 <= width or " " not in text:
+        return [text]
+    words = text.split(" ")
+    splits = [(" ".join(words[:k]), " ".join(words[k:])) for k in range(1, len(words))]
+    return list(min(splits, key=lambda ab: max(style.text_width(t, height) for t in ab)))
+
+
+def _lines_width(lines: list[str]) -> float:
+    return max(style.text_width(t, SMALL_TITLE_H) for t in lines) + 10.0
+
+
+def small_title_strip(lines: list[str]) -> float:
+    return SMALL_TITLE_MM + SMALL_TITLE_LINE_MM * (len(lines) - 1)
 
 
 def small_caption(plans: list[Plan]) -> str:
@@ -210,17 +231,18 @@ def small_cell(plans: list[Plan]) -> tuple[float, float]:
 
 
 def small_grids(plans: list[Plan], max_width: float) -> list[tuple[int, float, float]]:
-    """Grids of the small plans to try: (columns, width, height) for 1–4 rows."""
+    """Grids of the small plans to try: (columns, width, height) for 1–6 rows."""
     cw, ch = small_cell(plans)
     n = len(plans)
     out: list[tuple[int, float, float]] = []
-    for rows in range(1, 5):
+    for rows in range(1, 7):
         cols = math.ceil(n / rows)
         if any(c == cols for c, _, _ in out) or cols * cw > max_width:
             continue
         rows = math.ceil(n / cols)
-        w = max(cols * cw, style.text_width(small_title(plans), 5.0) + 10.0)
-        out.append((cols, w, rows * ch + SMALL_TITLE_MM + SMALL_CAPTION_MM))
+        lines = title_lines(small_title(plans), cols * cw)
+        w = max(cols * cw, _lines_width(lines), style.text_width(small_caption(plans), SMALL_TITLE_H) + 10.0)
+        out.append((cols, w, rows * ch + small_title_strip(lines) + SMALL_CAPTION_MM))
     return out
 
 
@@ -229,16 +251,20 @@ def place_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], col
     """All velocity plans in ``rect``, a grid of ``cols`` equal cells numbered by position, the
     cells sharing out the rectangle."""
     holder = sheet.place_view("plans_all", rect, Transform())
-    holder.title(small_title(plans))
-    holder.text_mm((rect.center[0], rect.y0 + 4.0), small_caption(plans), 5.0, "bottom-center")
+    lines = title_lines(small_title(plans), rect.width)
+    for k, line in enumerate(lines):     # the title, in two lines if the grid is narrower than it
+        holder.text_mm((rect.center[0], rect.y1 - SMALL_TITLE_H - 1.0 - k * SMALL_TITLE_LINE_MM), line,
+                       SMALL_TITLE_H, "bottom-center")
+    holder.text_mm((rect.center[0], rect.y0 + 4.0), small_caption(plans), SMALL_TITLE_H, "bottom-center")
+    strip = small_title_strip(lines)
     n = len(plans)
     rows = math.ceil(n / cols)
     cw = rect.width / cols
-    ch = (rect.height - SMALL_TITLE_MM - SMALL_CAPTION_MM) / rows
+    ch = (rect.height - strip - SMALL_CAPTION_MM) / rows
     for i, plan in enumerate(plans):
         r, c = divmod(i, cols)
         x0 = rect.x0 + c * cw
-        y1 = rect.y1 - SMALL_TITLE_MM - r * ch
+        y1 = rect.y1 - strip - r * ch
         cell = Rect(x0, y1 - ch, x0 + cw, y1)
         e = extent(plan)
         cx, cy = (e[0] + e[2]) / 2, (e[1] + e[3]) / 2

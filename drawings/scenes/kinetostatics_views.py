@@ -1,5 +1,5 @@
-"""Views of sheet 2 (kinetostatics): a group or the crank cut out at μl with its forces at a stated
-force scale, a force polygon at its μF (the replica's, so the sheet and the note read the same
+"""Views of sheet 2 (kinetostatics): a group or the crank cut out at μl with its forces at their
+schematic lengths (the free-body scenes of :mod:`reportgen.scenes.free_body`, which the note draws too), a force polygon at its μF (the replica's, so the sheet and the note read the same
 lengths), and Zhukovsky's lever (the turned velocity plan with the loads and their arms).
 
 Each view is first a :class:`Panel` — its size and a function that draws it into a given rectangle —
@@ -13,26 +13,21 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-from shapely.geometry import LineString, Point
+from shapely.geometry import LineString, MultiLineString, Point
 
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
-from reportgen.kinetostatics.graphical import round_scale
-from reportgen.kinetostatics.reactions import pair_name, perp
 from ..words import symbol, tr
 from reportgen.scenes.forces import polygon_scene
 from reportgen.scenes.scene import Arrow as SceneArrow
 from reportgen.scenes.scene import Circle as SceneCircle
+from reportgen.scenes.scene import Polyline as ScenePolyline
 from reportgen.scenes.scene import Scene
 from reportgen.scenes.scene import Segment as SceneSegment
-from reportgen.tolerances import ABS_ZERO, TINY
 
 from drawings.scenes import kinematics_labels as rl
 
-#: The longest force arrow on a group's view, mm; arrows are never shorter than MIN_ARROW_MM.
-ARROW_MM = 45.0
-MIN_ARROW_MM = 7.0
 #: Room around a view's drawing for labels, and the title / caption strips, mm.
 PAD_MM = 10.0
 TITLE_MM = 10.0
@@ -76,71 +71,72 @@ class Panel:
         return self.paint(sheet, rect)
 
 
-@dataclass
-class Arrow:
-    point: np.ndarray          # m
-    vector: np.ndarray         # N
-    name: str
-    dashed: bool = False
-
-
-def arrow_scale(arrows: list[Arrow]) -> float:
-    """μF of a group's view: a round scale that draws the largest force within ARROW_MM."""
-    return round_scale(max([float(np.hypot(*a.vector)) for a in arrows] + [ABS_ZERO]), ARROW_MM)
-
-
-def arrow_end(a: Arrow, mu_f: float, mu_l: float) -> np.ndarray:
-    """The model point of an arrow's tip: its length at μF, at least MIN_ARROW_MM."""
-    mag = float(np.hypot(*a.vector))
-    mm = max(mag / mu_f, MIN_ARROW_MM)
-    return np.asarray(a.point, float) + a.vector / (mag + TINY) * mm * mu_l
-
-
 def _title_and_scales(view: View, title: str, upper: str, lower: str) -> None:
-    """The view's title, and two scale captions (e.g. μl and μF) at its bottom."""
+    """The view's title, and two captions (e.g. μl and μF) at its bottom."""
     view.title(title)
     view.text_mm((view.rect.center[0], view.rect.y0 + 9.0), upper, 3.5, "bottom-center")
     view.text_mm((view.rect.center[0], view.rect.y0 + 3.0), lower, 3.5, "bottom-center")
 
 
-def free_body_panel(name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
-                    hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
-                    arrows: list[Arrow], mu_l: float) -> Panel:
-    """A cut-out group (or the crank) at μl with its forces at a round μF."""
-    mu_f = arrow_scale(arrows)
-    pts = [p for s in segments for p in s] + hinges + [np.asarray(a.point) for a in arrows] + \
-        [arrow_end(a, mu_f, mu_l) for a in arrows]
-    arr = np.array(pts)
-    lo, hi = arr.min(0), arr.max(0)
-    scale = 1.0 / mu_l                        # sheet mm per metre
-    w = max((hi[0] - lo[0]) * scale + 2 * PAD_MM, 110.0)
-    h = (hi[1] - lo[1]) * scale + 2 * PAD_MM + TITLE_MM + CAPTION_MM
+def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
+    """A free-body diagram's scene (:mod:`reportgen.scenes.free_body`, the note draws the same):
+    the group (or the crank) cut out at μl, its hinges and blocks, every force at its point at the
+    scene's schematic length (:func:`reportgen.scenes.free_body.schematic_length`, the caption
+    says so), each named beside its own arrow, the points' letters and the links' numbers."""
+    x0, y0, x1, y1 = scene.bounds()
+    lo, hi = np.array([x0, y0]), np.array([x1, y1])
+    w = max(hi[0] - lo[0] + 2 * PAD_MM, 110.0)
+    h = hi[1] - lo[1] + 2 * PAD_MM + TITLE_MM + CAPTION_MM
 
     def paint(sheet: Sheet, rect: Rect) -> View:
-        cx = rect.x0 + (rect.width - (hi[0] - lo[0]) * scale) / 2
-        cy = rect.y0 + CAPTION_MM + (rect.height - CAPTION_MM - TITLE_MM - (hi[1] - lo[1]) * scale) / 2
-        view = sheet.place_view(name, rect, Transform(scale, (float(lo[0]), float(lo[1])), (cx, cy)))
-        for a, b in segments:
-            view.segment(a, b, "contour", trim_mm=(HINGE_MM, HINGE_MM))
-        for p in hinges:
-            view.hinge(p, HINGE_MM)
-        for p, ang in sliders:
-            view.slider(p, ang, 12.0, 6.0, guide_mm=None, hinge_mm=HINGE_MM)
-        for arw in arrows:
-            view.arrow(arw.point, arrow_end(arw, mu_f, mu_l), plain(arw.name), head_mm=4.0, label_height=LABEL_MM)
-        for letter, p in letters.items():
-            view.label(p, letter, 5.0, prefer_deg=135.0)
-        _title_and_scales(view, title, tr("sheets.kv03", v1=format_significant(mu_l, 4)),
-                          tr("sheets.kv04", v1=format_significant(mu_f, 4)))
+        cx = rect.x0 + (rect.width - (hi[0] - lo[0])) / 2
+        cy = rect.y0 + CAPTION_MM + (rect.height - CAPTION_MM - TITLE_MM - (hi[1] - lo[1])) / 2
+        view = sheet.place_view(name, rect, Transform(1.0, (float(lo[0]), float(lo[1])), (cx, cy)))
+        for e in scene.entities:
+            if isinstance(e, SceneSegment):
+                view.segment(e.a, e.b, e.kind, trim_mm=e.trim)
+            elif isinstance(e, SceneCircle):
+                view.hinge(e.c, e.r)
+            elif isinstance(e, ScenePolyline):
+                view.polyline(e.points, e.kind, closed=e.closed)
+        for e in scene.entities:
+            if isinstance(e, SceneArrow):
+                view.arrow(e.a, e.b, None, head_mm=min(4.0, e.length))
+        inside = view.rect.polygon()
+
+        def line_of(prefix: str):
+            """What a link's number or a couple's name names: its lines (sheet mm)."""
+            parts = [[view.transform(p) for p in ((e.a, e.b) if isinstance(e, SceneSegment) else e.points)]
+                     for e in scene.entities if e.id.startswith(prefix) and isinstance(e, (SceneSegment, ScenePolyline))]
+            return MultiLineString(parts) if parts else None
+
+        for lb in scene.labels:
+            if lb.role == "point":
+                kind, ident = lb.anchor.split(":", 1)
+                if kind == "point":
+                    view.label(lb.at, ident, 5.0, prefer_deg=135.0)
+                else:                # a couple's name over its arc
+                    arc = next((e.points for e in scene.entities if e.id == f"{lb.anchor}:arc"
+                                and isinstance(e, ScenePolyline)), ())
+                    place_label(view, [np.asarray(lb.at)] + [np.asarray(q) for q in arc[::3]], plain(ident),
+                                LABEL_MM, names=line_of(lb.anchor))
+        for lb in scene.labels:
+            if lb.role == "link":
+                named = line_of(f"link{lb.text}:")
+                if named is None:      # a link drawn at one point (a block): its block's outline
+                    blocks = [e for e in scene.entities if isinstance(e, ScenePolyline) and e.id.startswith("block:")]
+                    near = min(blocks, key=lambda e: min(math.dist(q, lb.at) for q in e.points), default=None)
+                    named = None if near is None else line_of(near.id)
+                place_label(view, [np.asarray(lb.at)], lb.text, LABEL_MM, names=named)
+        for lb in scene.labels:
+            if lb.role != "vector" or lb.along is None:
+                continue
+            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
+            place_vector_name(view, a, b, rl.Rich(plain(lb.anchor.split(":", 1)[1])), LABEL_MM, inside)
+        _title_and_scales(view, title, tr("sheets.kv03", v1=format_significant(scene.scale("μl").value, 4)),
+                          tr("fbd.arrows"))
         return view
     return Panel(name, w, h, paint)
-
-
-def free_body_view(sheet: Sheet, name: str, title: str, segments: list[tuple[np.ndarray, np.ndarray]],
-                   hinges: list[np.ndarray], sliders: list[tuple[np.ndarray, float]], letters: dict[str, np.ndarray],
-                   arrows: list[Arrow], mu_l: float, preferred: str) -> View:
-    """:func:`free_body_panel` packed near ``preferred`` and drawn."""
-    return free_body_panel(name, title, segments, hinges, sliders, letters, arrows, mu_l).place(sheet, preferred)
 
 
 def polygon_panel(name: str, title: str, polygon) -> Panel:
@@ -298,9 +294,10 @@ def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tup
     rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, names=line)
 
 
-def place_label(view: View, anchors: list[np.ndarray], text: str, height: float) -> None:
+def place_label(view: View, anchors: list[np.ndarray], text: str, height: float, names=None) -> None:
     """A label near the first anchor (model points) where a box of 16 directions × 3 distances
-    overlaps no text and crosses no line; else :meth:`Canvas.label` at the first anchor."""
+    overlaps no text and crosses no line; else :meth:`Canvas.label` at the first anchor. ``names``:
+    what it names (a geometry, sheet mm) when that is not the anchor point (a link, an arc)."""
     from drawings import style
     from drawings.primitives import text_box
     w = style.text_width(text, height)
@@ -314,9 +311,9 @@ def place_label(view: View, anchors: list[np.ndarray], text: str, height: float)
                 if not view.rect.polygon().contains(box):
                     continue
                 if view.annotations.hits_box(box) == 0 and view.annotations.crossings(box) == 0:
-                    view.text_mm(c, text, height, "center", names=Point(p))
+                    view.text_mm(c, text, height, "center", names=names if names is not None else Point(p))
                     return
-    view.label(anchors[0], text, height)
+    view.label(anchors[0], text, height, names=names)
 
 
 def lever_panel(name: str, scene: Scene) -> Panel:
@@ -366,81 +363,3 @@ def lever_panel(name: str, scene: Scene) -> Panel:
 def lever_view(sheet: Sheet, name: str, scene: Scene, preferred: str) -> View:
     """:func:`lever_panel` packed near ``preferred`` and drawn."""
     return lever_panel(name, scene).place(sheet, preferred)
-
-
-def group_geometry(ks, linkage, links: tuple[int, ...], key: str | None):
-    """Segments, hinges, sliders and letters of a group (``key``) or of the crank (``key`` None)."""
-    r = ks.reactions
-    pts = {name: np.asarray(m.pos)[0] for name, m in r.kin.points.items()}
-    segs, hinges, sliders, letters = [], [], [], {}
-    for k in links:
-        names = linkage.bodies[k].points
-        outline = [(names[0], names[1])] if len(names) == 2 else \
-            [(names[i], names[(i + 1) % len(names)]) for i in range(len(names))] if len(names) > 2 else []
-        for a, b in outline:
-            segs.append((pts[a], pts[b]))
-        for nm in names:
-            letters[nm] = pts[nm]
-    group = str(r.crank) if key is None else key
-    for p in r.pairs:
-        if p.group != group and not (key is None and p.name in {q.name for q in r.pairs_of(r.crank)}):
-            continue
-        if p.kind == "R":
-            hinges.append(np.asarray(p.point[0]))
-        else:
-            g = -perp(np.asarray(p.normal[0]))
-            sliders.append((np.asarray(p.sliding_point[0]), math.degrees(math.atan2(g[1], g[0]))))
-    return segs, hinges, sliders, letters
-
-
-def loads_on(ks, links: tuple[int, ...]) -> list[Arrow]:
-    """Loads of the links as drawn (Fи′ at its shifted point where Fи and Mи were replaced)."""
-    repl = {x.link: x for x in ks.graphical.inertia}
-    out = []
-    for f in ks.reactions.loads.forces:
-        if f.link not in links or float(np.hypot(*np.asarray(f.vector)[0])) == 0.0:
-            continue
-        if f.kind == "inertia" and f.link in repl:
-            out.append(Arrow(np.asarray(repl[f.link].point), np.asarray(f.vector)[0], f.name + "′"))
-        else:
-            out.append(Arrow(np.asarray(f.point)[0], np.asarray(f.vector)[0], f.name))
-    return out
-
-
-def group_arrows(ks, links: tuple[int, ...], key: str, splits) -> list[Arrow]:
-    """Loads, reactions known from earlier groups, and the group's own outer reactions (R^n and R^τ
-    where the dyad splits them)."""
-    r = ks.reactions
-    arrows = loads_on(ks, links)
-    own = {p.name for p in r.pairs if p.group == key}
-    for k in links:
-        for p in r.pairs_of(k):
-            j = p.other(k)
-            if p.name not in own and j not in links:
-                arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(k)[0]), pair_name(j, k)))
-    by_link = {sp.link: sp for sp in splits}
-    for p in r.pairs:
-        if p.group != key or not p.external:
-            continue
-        k = p.hi if p.hi in links else p.lo
-        nm = pair_name(p.other(k), k)
-        sp = by_link.get(k)
-        if sp is not None and p.kind == "R":
-            arrows.append(Arrow(np.asarray(p.point[0]), sp.normal * np.asarray(sp.along), "Rn" + nm[1:]))
-            arrows.append(Arrow(np.asarray(p.point[0]), sp.tau * np.asarray(sp.tangent), "Rτ" + nm[1:]))
-        else:
-            arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(k)[0]), nm))
-    return [a for a in arrows if float(np.hypot(*a.vector)) > 0.0]
-
-
-def crank_arrows(ks) -> list[Arrow]:
-    r = ks.reactions
-    d = r.crank
-    fp = next(p for p in r.pairs if p.group == str(d))
-    arrows = loads_on(ks, (d,))
-    for p in r.pairs_of(d):
-        if p.name != fp.name:
-            arrows.append(Arrow(np.asarray(p.point[0]), np.asarray(p.on(d)[0]), pair_name(p.other(d), d)))
-    arrows.append(Arrow(np.asarray(r.balancing_point[0]), np.asarray(r.balancing_force[0]), symbol("Fур")))
-    arrows.append(Arrow(np.asarray(fp.point[0]), np.asarray(fp.on(d)[0]), pair_name(0, d)))
-    return [a for a in arrows if float(np.hypot(*a.vector)) > 0.0]

@@ -7,71 +7,33 @@ read on the sheet).
 from __future__ import annotations
 
 import math
-from reportgen.gears.meshing import GOST_SCALES, MeshingPicture
+from reportgen.gears.meshing import GOST_SCALES
 
 from reportgen.scenes.meshing import (CAPTION, PADDING, VIEW_H, VIEW_W, WINDOW_H, WINDOW_W,  # noqa: F401
-                                     DrawingScale, ab_on_sheet, label_room, meshing_marks,
+                                     DrawingScale, MeshingScene, ab_on_sheet, label_room, meshing_marks,
                                      meshing_scale, model_bounds, model_centre)
 from ..words import decimal_mark, tr
 
 
 # --------------------------------------------------------------------------------------- DXF
-CIRCLE_LAYERS = {"pitch": "axis", "base": "thin", "working": "hidden", "tip": "thin", "root": "thin"}
-
-
-def draw_meshing(sheet, pair, pic: MeshingPicture, rect) -> DrawingScale:
-    """The meshing picture in ``rect`` (a :class:`drawings.layout.Rect` of VIEW_W × VIEW_H) at its
-    ГОСТ scale: bold teeth, circles as arcs through the meshing zone (pitch dash-dot, working dashed,
-    others thin), the line of centres, N1N2, the tangent at P, ab with its zones, and the
-    designations placed by :func:`reportgen.scenes.meshing.meshing_marks` (the note draws the same)."""
-    from shapely.geometry import LineString, Point as SPoint, box
-
+def draw_meshing(sheet, pair, ms: MeshingScene, rect) -> DrawingScale:
+    """The meshing picture (:class:`reportgen.scenes.meshing.MeshingScene`, the note draws a
+    window of the same scene) in ``rect`` (a :class:`drawings.layout.Rect` of VIEW_W × VIEW_H) at
+    its ГОСТ scale: the scene's entities, the zones' numerals, and the designations as
+    :func:`reportgen.scenes.meshing.meshing_marks` placed them for the sheet."""
     from drawings.primitives import Transform
+    from drawings.scenes.render import draw_entities
 
-    g = pair.geometry
-    scale = meshing_scale(pair, pic)
+    pic, scale, scene = ms.pic, ms.scale, ms.scene
     k = scale.factor
-    marks = meshing_marks(pair, pic, scale)
     cx, cy = model_centre(pair, pic)
     at = (rect.center[0], rect.center[1] - CAPTION / 2)
-    view = sheet.place_view("meshing", rect, Transform(k, (cx, cy), at))
-    rx0, ry0, rx1, ry1 = label_room(pair, pic, scale)
-    window = box(rx0, ry0, rx1, ry1)
-    arc_window = box(*marks.arcs_window).intersection(window)
-    for c in pic.circles:
-        ring = SPoint(c.centre).buffer(c.radius, 720).exterior
-        part = ring.intersection(arc_window)
-        if not part.is_empty:
-            view.geometry(part, CIRCLE_LAYERS[c.kind])
-    for tooth in pic.teeth1 + pic.teeth2:
-        view.polyline([tuple(p) for p in tooth], "contour")
-    view.line((0.0, max(ry0, -g.m)), (0.0, min(ry1, g.aw + g.m)), "axis")
-    (tx0, ty0), (tx1, ty1) = pic.segments["tangent"]
-    tl = LineString([(tx0, ty0), (tx1, ty1)]).intersection(window)
-    if not tl.is_empty:
-        view.geometry(tl, "thin")
-    n1, n2 = pic.points["N1"], pic.points["N2"]
-    view.line(n1, n2, "thin")
-    a, b = pic.points["a"], pic.points["b"]
-    view.line(a, b, "contour")
-    # zones of double (II) and single (I) contact, on a line 6 mm beside ab
-    L = math.dist(n1, n2)
-    ux, uy = (n2[0] - n1[0]) / L, (n2[1] - n1[1]) / L
-    nx, ny = uy, -ux                                   # to the lower right of N1N2
-    off = 6.0 / k
-    for z in pic.zones:
-        if z.pairs == 0:
-            continue
-        p = (z.start[0] + nx * off, z.start[1] + ny * off)
-        q = (z.end[0] + nx * off, z.end[1] + ny * off)
-        view.line(p, q, "vectors")
-        for e in (p, q):
-            view.line((e[0] - nx * off * 0.4, e[1] - ny * off * 0.4), (e[0] + nx * off * 0.4, e[1] + ny * off * 0.4), "thin")
-        mid = ((p[0] + q[0]) / 2 + nx * off * 0.9, (p[1] + q[1]) / 2 + ny * off * 0.9)
-        view.text(mid, "II" if z.pairs >= 2 else "I", 3.5, "center")
-    for name in ("O1", "O2", "P", "N1", "N2", "a", "b"):
-        view.circle_mm(pic.points[name], 0.8, "contour")
-    draw_marks(view, marks)
+    view = sheet.place_view("meshing", rect, Transform(k, (cx, cy), at))      # model: real mm
+    draw_entities(view, scene.entities, 1.0 / k)
+    for lb in scene.labels:
+        if lb.role == "zone":
+            view.text((lb.at[0] / k, lb.at[1] / k), lb.text, 3.5, "center")
+    draw_marks(view, ms.marks)
     view.text_mm((rect.center[0], rect.y1 - 7), tr("sheets.me01", v1=scale.label.replace(",", decimal_mark())), 5.0, "bottom-center")
     view.text_mm((rect.x0 + 2, rect.y0 + 2), tr("sheets.me02"), 3.5, "bottom-left")
     return scale

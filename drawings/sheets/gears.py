@@ -9,7 +9,7 @@ from drawings import Sheet
 from drawings.layout import Rect
 from ..words import designation, tr
 
-NEEDS = ("gears", "planetary")
+NEEDS = ("gears", "planetary", "scenes")
 def sheet_title() -> str:
     """The sheet's title in the task's language (title block, graph 1)."""
     return tr("sheets.sk401")
@@ -34,7 +34,6 @@ def draw(project, number: int, count: int) -> Sheet:
     and the table take the right side; without a gear pair the reducer takes the whole sheet."""
     from drawings.scenes.meshing import VIEW_H, VIEW_W, draw_meshing, draw_sliding
     from drawings.scenes.planetary_dxf import draw_reducer
-    from reportgen.gears.meshing import meshing_picture
 
     task = project.task
     sheet = Sheet.a1(task.document, title=sheet_title(), code=designation(task.document, number), number=number,
@@ -45,9 +44,8 @@ def draw(project, number: int, count: int) -> Sheet:
     rest = Rect(fr.x0 + 5, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
     if task.gears is not None:
         pair = project.gears
-        pic = meshing_picture(pair, n_teeth=3)
         mesh_rect = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + VIEW_W, fr.y0 + 5 + VIEW_H)
-        scale = draw_meshing(sheet, pair, pic, mesh_rect)
+        scale = draw_meshing(sheet, pair, project.scenes.meshing, mesh_rect)
         sheet.set_scale(scale.label)                                   # the meshing, the main view
         rest = Rect(mesh_rect.x1 + 10, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
         table_h = PAIR_ROW_MM * (len(pair_rows(pair)) + 1) + 12.0

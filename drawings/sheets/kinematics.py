@@ -45,8 +45,9 @@ SCHEME_MAX_MM = (470.0, 400.0)
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
 #: The small velocity plans: the crank's vector is at most this long, mm.
 SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
-#: Gap between views, and between the two plans of the analysed position put together, mm.
-VIEW_GAP, PAIR_GAP = 10.0, 10.0
+#: Gap between views, and between the two plans of a plan position put together (smaller, so that
+#: a pair reads as one: the views' own margins keep the drawings ~30 mm apart), mm.
+VIEW_GAP, PAIR_GAP = 10.0, 4.0
 #: The plans of the analysed position may widen by this much to give their names room, mm.
 GROW_PLANS_MM = 40.0
 
@@ -180,12 +181,12 @@ def _pair_names(sizes: list[tuple[float, float]]) -> list[tuple[str, str]]:
 
 
 def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] | None = None
-                ) -> tuple[list[list[Block]], list[Block]]:
+                ) -> list[list[Block]]:
     """Ways to put the plans of the plan positions together (``sizes``: velocity, acceleration of
-    each position in turn; ``names`` their views): the velocity and acceleration plan of a position
-    side by side (titles and captions on one line) or one above the other, the positions' pairs
-    in one block (one above the other, or in one row) or in blocks of their own, or only the
-    analysed position's pair together; and every plan apart (the last resort)."""
+    each position in turn; ``names`` their views). A position's two plans always form one block
+    (its pair): side by side (titles and captions on one line) or the acceleration plan under the
+    velocity plan, ``PAIR_GAP`` apart. The pairs go into one block (one above the other, or in
+    one row) or each into a block of its own; a plan is never put apart from its pair."""
     pairs = [(sizes[2 * k], sizes[2 * k + 1]) for k in range(len(sizes) // 2)]
     names = names or _pair_names(sizes)
 
@@ -201,12 +202,12 @@ def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] |
 
     def stacked(blocks: list[Block]) -> Block:         # one above the other, the first on top
         w = max(b.width for b in blocks)
-        h = sum(b.height for b in blocks) + PAIR_GAP * (len(blocks) - 1)
+        h = sum(b.height for b in blocks) + VIEW_GAP * (len(blocks) - 1)
         parts, y = [], h
         for b in blocks:
             y -= b.height
             parts += [(n, dx, y + dy, pw, ph) for n, dx, dy, pw, ph in b.parts]
-            y -= PAIR_GAP
+            y -= VIEW_GAP
         return Block("plans", w, h, tuple(parts))
 
     def in_row(blocks: list[Block]) -> Block:
@@ -214,22 +215,17 @@ def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] |
         parts, x = [], 0.0
         for b in blocks:
             parts += [(n, x + dx, dy, pw, ph) for n, dx, dy, pw, ph in b.parts]
-            x += b.width + PAIR_GAP
-        return Block("plans", x - PAIR_GAP, h, tuple(parts))
+            x += b.width + VIEW_GAP
+        return Block("plans", x - VIEW_GAP, h, tuple(parts))
 
     rows = [row(k, *names[k]) for k in range(len(pairs))]
     cols = [column(k, *names[k]) for k in range(len(pairs))]
     if len(pairs) == 1:
-        together = [[Block("plans", rows[0].width, rows[0].height, rows[0].parts)],
-                    [Block("plans", cols[0].width, cols[0].height, cols[0].parts)]]
-    else:
-        together = [[stacked(rows)], [in_row(cols)], [in_row(rows)],
-                    *[list(choice) for choice in itertools.product(*zip(rows, cols))]]
-    apart = [Block(n, *pairs[k][m], ((n, 0.0, 0.0, *pairs[k][m]),))
-             for k in range(len(pairs)) for m, n in enumerate(names[k])]
-    if len(pairs) > 1:          # the analysed position's pair together, the other plans apart
-        together += [[rows[0], *apart[2:]], [cols[0], *apart[2:]]]
-    return together, apart
+        return [[Block("plans", rows[0].width, rows[0].height, rows[0].parts)],
+                [Block("plans", cols[0].width, cols[0].height, cols[0].parts)]]
+    out = [[stacked(rows)], [in_row(cols)], [in_row(rows)]]
+    out += [list(choice) for choice in itertools.product(*zip(rows, cols))]
+    return out
 
 
 def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
@@ -256,11 +252,9 @@ def arrange(sheet: Sheet, plan_sizes: list[tuple[float, float]], small_of,
     the most room around every view; then the views are moved to share out the room."""
     region = sheet.free_region
     placed = [v.rect for v in sheet.views.values()]
-    together, apart = plan_blocks(plan_sizes, names)
-    for options in (together, [apart]):
-        best = _best(region, placed, options, sheet.frame.width, small_of)
-        if best is not None:
-            return best
+    best = _best(region, placed, plan_blocks(plan_sizes, names), sheet.frame.width, small_of)
+    if best is not None:
+        return best
     raise BuildError("sheet layout", "the plans of the analysed position do not fit in the free field "
                                      "of the sheet; " + LAYOUT_LIMIT)
 

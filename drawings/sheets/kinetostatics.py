@@ -1,5 +1,5 @@
 """Sheet 2 «Силовой расчёт рычажного механизма» (A1): each Assur group (last attached first) and the
-crank cut out at μl in the analysed position with their forces at a stated force scale, the force
+crank cut out at μl in the analysed position with their forces (schematic lengths, the note's scenes), the force
 polygon of each at its μF (the note's scales and lengths), and Zhukovsky's lever. Every number comes
 from :func:`reportgen.kinetostatics.results.kinetostatics_of`."""
 from __future__ import annotations
@@ -13,7 +13,7 @@ from reportgen.project import Project
 from reportgen.tolerances import MM_EPS
 from ..words import designation, tr
 
-NEEDS: tuple[str, ...] = ("linkage", "structure", "phi", "kinematics", "kinetostatics")
+NEEDS: tuple[str, ...] = ("linkage", "structure", "phi", "kinematics", "kinetostatics", "scenes")
 
 
 def sheet_title() -> str:
@@ -140,7 +140,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     from drawings.scenes import kinetostatics_views as kv
 
     ks = project.kinetostatics
-    lk, st = project.linkage, project.structure
+    st = project.structure
     g = ks.graphical
     sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     by_key = {gr.key: gr for gr in st.groups}
@@ -151,16 +151,10 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     pv.text_mm((pv.rect.x0 + 2.0, pv.rect.y0 + 2.0), note, 5.0)
 
     def bodies_at(mu_l: float) -> list:
-        out = []
-        for gg in g.groups:
-            segs, hinges, sliders, letters = kv.group_geometry(ks, lk, by_key[gg.key].links, gg.key)
-            out.append(kv.free_body_panel(f"group {gg.key}", tr("sheets.sk208", v1=by_key[gg.key].label), segs, hinges,
-                                          sliders, letters, kv.group_arrows(ks, by_key[gg.key].links, gg.key,
-                                                                            gg.splits), mu_l))
-        segs, hinges, sliders, letters = kv.group_geometry(ks, lk, (ks.reactions.crank,), None)
-        out.append(kv.free_body_panel("crank", tr("sheets.sk207"), segs, hinges, sliders, letters,
-                                      kv.crank_arrows(ks), mu_l))
-        return out
+        fbs = project.scenes.free_bodies if mu_l == g.length_scale else project.scenes.free_bodies_at(mu_l)
+        return [kv.free_body_panel("crank" if fb.key == "crank" else f"group {fb.key}",
+                                   tr("sheets.sk207") if fb.key == "crank" else tr("sheets.sk208", v1=by_key[fb.key].label),
+                                   fb.scene) for fb in fbs]
 
     polygons = [kv.polygon_panel(f"polygon {gg.key}", tr("sheets.sk205", v1=by_key[gg.key].label), gg.polygon)
                 for gg in g.groups]

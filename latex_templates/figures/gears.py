@@ -57,110 +57,118 @@ def blocking_contour_figure(pair):
     return fig
 
 
-#: The note's figure of the meshing: width of the drawing (page mm), the margin round the meshing
-#: zone for the designations (a share of its width), letter heights (page mm).
+#: The note's figure of the meshing: a window of sheet 4's scene round the pole — the drawn teeth
+#: and a margin for the designations (a share of their width) — reduced to at most this size on
+#: the page (mm); letter heights (page mm).
 NOTE_MESH_W = 140.0          # 0.85 of the text block, as the figure macro includes it
 NOTE_MESH_MAX_H = 100.0      # under the macro's height limit (0.7 of the text height)
 NOTE_MESH_MARGIN = 0.22
 NOTE_POINT_H = 3.5
 NOTE_MARK_H = 2.9
+#: The zones' colours (the note's legend): two pairs, one pair in contact.
+ZONE_COLOURS = {2: "#1f77b4", 1: "#d62728"}
 
 
-def meshing_frame(pic) -> tuple[tuple[float, float, float, float], float]:
-    """The note's detail of the meshing picture round the pole: its frame (real mm) and its scale
-    (page mm per real mm)."""
+def meshing_frame(pic) -> tuple[float, float, float, float]:
+    """The note's window of the meshing picture round the pole (real mm): the drawn teeth and a
+    margin for the designations."""
     x0, y0, x1, y1 = pic.view
     pad = NOTE_MESH_MARGIN * (x1 - x0)
-    room = (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
-    k = min(NOTE_MESH_W / (room[2] - room[0]), NOTE_MESH_MAX_H / (room[3] - room[1]))
-    return room, k
+    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
 
 
-def meshing_figure(pair, pic):
-    """The meshing picture round the pole (a detail of sheet 4's picture): teeth (bold), circles
-    (thin), N1N2, ab, P, the zones of double and single contact, a scale bar, and the designations
-    of sheet 4 (r, rb, rw, ra, rf of each wheel, s, p, αw, the points, the dimension ab) placed by
-    :func:`reportgen.scenes.meshing_marks.place_marks` — the sheet's rule at the figure's scale."""
+def meshing_reduction(ms) -> float:
+    """Page mm per scene mm of the note's window (at most 1: the sheet's scale)."""
+    x0, y0, x1, y1 = meshing_frame(ms.pic)
+    k = ms.scale.factor
+    return min(1.0, NOTE_MESH_W / ((x1 - x0) * k), NOTE_MESH_MAX_H / ((y1 - y0) * k))
+
+
+def meshing_figure(pair, ms):
+    """The meshing picture round the pole: a window of sheet 4's scene
+    (:class:`reportgen.scenes.meshing.MeshingScene`, the same teeth, circles, lines and points in
+    the sheet's mm), reduced by :func:`meshing_reduction` (the caption says so and names the
+    sheet's scale); the zones of one and two pairs coloured, and the designations of sheet 4
+    (r, rb, rw, ra, rf of each wheel, s, p, αw, the points, the dimension ab) placed by
+    :func:`reportgen.scenes.meshing_marks.place_marks` — the sheet's rule at the note's letter
+    size. ``fig.scene`` is the scene, ``fig.reportgen_reduction`` the reduction."""
+    from matplotlib.lines import Line2D
+
     from reportgen.scenes.meshing_marks import place_marks
-    g = pair.geometry
-    room, k = meshing_frame(pic)
-    inner = (room[0] + 2 / k, room[1] + 2 / k, room[2] - 2 / k, room[3] - 2 / k)
-    legend = (room[0], room[3] - 24 / k, room[0] + 62 / k, room[3])       # upper left
-    bar_box = (room[0], room[1], room[0] + 0.6 * g.m + 20.0 + 14 / k, room[1] + 0.6 * g.m + 8 / k)
-    marks = place_marks(pair, pic, k, inner, point_h=NOTE_POINT_H, mark_h=NOTE_MARK_H,
-                        keep_out=(legend, bar_box))
-    w_mm, h_mm = (room[2] - room[0]) * k, (room[3] - room[1]) * k
+    from reportgen.scenes.scene import Circle, Polyline, Segment
+
+    from .scene import PENS
+
+    scene, k = ms.scene, ms.scale.factor
+    r = meshing_reduction(ms)
+    room = meshing_frame(ms.pic)                        # real mm
+    kn = k * r                                          # page mm per real mm
+    inner = (room[0] + 2 / kn, room[1] + 2 / kn, room[2] - 2 / kn, room[3] - 2 / kn)
+    legend = (room[0], room[3] - 24 / kn, room[0] + 62 / kn, room[3])       # upper left
+    marks = place_marks(pair, ms.pic, kn, inner, point_h=NOTE_POINT_H, mark_h=NOTE_MARK_H, keep_out=(legend,))
+    x0, y0, x1, y1 = (v * k for v in room)              # scene mm
+    w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
     fig = new_figure(w_mm / 10.0, h_mm / 10.0)
     ax = fig.add_axes([0, 0, 1, 1])
     ax.set_aspect("equal")
     ax.axis("off")
-    ax.set_xlim(room[0], room[2])
-    ax.set_ylim(room[1], room[3])
-    x0, y0, x1, y1 = room
-    styles = {"pitch": dict(ls="-.", lw=0.5, color="0.25"), "base": dict(ls="-", lw=0.5, color="0.25"),
-              "working": dict(ls="--", lw=0.5, color="0.25"), "tip": dict(ls="-", lw=0.5, color="0.25"),
-              "root": dict(ls="-", lw=0.5, color="0.25")}
-    t = np.linspace(0, 2 * math.pi, 1441)
-    for c in pic.circles:
-        ax.plot(c.centre[0] + c.radius * np.cos(t), c.centre[1] + c.radius * np.sin(t), **styles[c.kind])
-    for tooth in pic.teeth1 + pic.teeth2:
-        ax.plot(tooth[:, 0], tooth[:, 1], color="k", lw=1.4)
-    n1, n2 = pic.points["N1"], pic.points["N2"]
-    ax.plot([n1[0], n2[0]], [n1[1], n2[1]], color="k", lw=0.8)
-    (tx0, ty0), (tx1, ty1) = pic.segments["tangent"]
-    ax.plot([tx0, tx1], [ty0, ty1], color="0.35", lw=0.5)
-    ax.plot([0, 0], [y0, y1], color="0.25", lw=0.5, ls="-.")
-    zone_colors = {2: "#1f77b4", 1: "#d62728", 0: "#999999"}
-    for z in pic.zones:
-        if z.pairs == 0:
-            continue
-        ax.plot([z.start[0], z.end[0]], [z.start[1], z.end[1]], color=zone_colors[z.pairs], lw=4,
-                solid_capstyle="butt", alpha=0.55, zorder=3)
-    for name in ("N1", "N2", "P", "a", "b", "O1", "O2"):
-        px, py = pic.points[name]
-        if room[0] <= px <= room[2] and room[1] <= py <= room[3]:
-            ax.plot([px], [py], "o", color="k", ms=2.5, zorder=4)
-    _draw_marks(ax, marks)
-    # scale bar, lower left
-    bar = 10.0 if g.m < 8 else 20.0
-    bx, by = x0 + 0.3 * g.m, y0 + 0.3 * g.m
-    ax.plot([bx, bx + bar], [by, by], color="k", lw=1.2)
-    for xx in (bx, bx + bar):
-        ax.plot([xx, xx], [by - 0.15 * g.m, by + 0.15 * g.m], color="k", lw=1.0)
-    ax.text(bx + bar / 2, by + 0.3 * g.m, tr("figures.gear08", v1=format(bar, "g")), ha="center", va="bottom", fontsize=9)
-    from matplotlib.lines import Line2D
-    handles = [Line2D([], [], color=zone_colors[2], lw=4, alpha=0.55, label=tr("figures.gear12")),
-               Line2D([], [], color=zone_colors[1], lw=4, alpha=0.55, label=tr("figures.gear13")),
-               Line2D([], [], color="0.25", lw=0.5, ls="-.", label=tr("figures.gear14")),
-               Line2D([], [], color="0.25", lw=0.5, ls="--", label=tr("figures.gear15"))]
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    for e in scene.entities:
+        lw, ls = PENS.get(e.kind, (0.6, "-"))
+        if isinstance(e, Polyline):
+            xs, ys = zip(*e.points)
+            ax.plot(xs, ys, color="k" if e.kind == "contour" else "0.25", lw=lw if e.kind == "contour" else 0.5,
+                    ls=ls)
+        elif isinstance(e, Segment) and e.id.startswith("zone") and ":tick" not in e.id:
+            ax.plot([e.a[0], e.b[0]], [e.a[1], e.b[1]], color=ZONE_COLOURS[int(e.id[4])], lw=4,
+                    solid_capstyle="butt", alpha=0.55, zorder=3)
+        elif isinstance(e, Segment):
+            ax.plot([e.a[0], e.b[0]], [e.a[1], e.b[1]], color="k" if e.kind in ("contour", "vectors") else "0.3",
+                    lw=lw if e.kind == "contour" else 0.5, ls=ls)
+        elif isinstance(e, Circle):
+            ax.plot([e.c[0]], [e.c[1]], "o", color="k", ms=2.5, zorder=4)
+    _draw_marks(ax, marks, k)
+    handles = [Line2D([], [], color=ZONE_COLOURS[2], lw=4, alpha=0.55, label=tr("figures.gear12")),
+               Line2D([], [], color=ZONE_COLOURS[1], lw=4, alpha=0.55, label=tr("figures.gear13")),
+               Line2D([], [], color="0.25", lw=0.5, ls=PENS["axis"][1], label=tr("figures.gear14")),
+               Line2D([], [], color="0.25", lw=0.5, ls=PENS["hidden"][1], label=tr("figures.gear15"))]
     ax.legend(handles=handles, loc="upper left", fontsize=8, frameon=True, framealpha=0.9)
-    fig.reportgen_marks = marks          # for the tests: the boxes as placed
+    fig.reportgen_marks = marks          # for the tests: the boxes as placed (real mm)
+    fig.reportgen_reduction = r
+    fig.scene = scene
     return fig
 
 
-def _draw_marks(ax, marks) -> None:
-    """The designations of :class:`reportgen.scenes.meshing_marks.MeshingMarks` (real mm) with
-    matplotlib: leaders, texts in their boxes (TeX spelling), arcs of s and p with end ticks, the
-    arc of αw, the dimension ab with its arrows and text."""
+def _draw_marks(ax, marks, unit: float = 1.0) -> None:
+    """The designations of :class:`reportgen.scenes.meshing_marks.MeshingMarks` (real mm, drawn
+    ×``unit`` on axes in scene mm) with matplotlib: leaders, texts in their boxes (TeX spelling),
+    arcs of s and p with end ticks, the arc of αw, the dimension ab with its arrows and text."""
+    from .labels import names
     k = marks.k
     pt_per_mm = 72.0 / 25.4
+
+    def u(p):
+        return (p[0] * unit, p[1] * unit)
+
     for arc in marks.arcs:
-        xs, ys = zip(*arc.points())
+        xs, ys = zip(*(u(p) for p in arc.points()))
         ax.plot(xs, ys, color="k", lw=0.5)
         for a_ in (arc.a0, arc.a1):
             c, s_ = math.cos(a_), math.sin(a_)
             r0, r1 = arc.radius - 1.5 / k, arc.radius + 1.5 / k
-            ax.plot([arc.centre[0] + r0 * c, arc.centre[0] + r1 * c],
-                    [arc.centre[1] + r0 * s_, arc.centre[1] + r1 * s_], color="k", lw=0.5)
-    xs, ys = zip(*marks.angle.points())
+            ax.plot([(arc.centre[0] + r0 * c) * unit, (arc.centre[0] + r1 * c) * unit],
+                    [(arc.centre[1] + r0 * s_) * unit, (arc.centre[1] + r1 * s_) * unit], color="k", lw=0.5)
+    xs, ys = zip(*(u(p) for p in marks.angle.points()))
     ax.plot(xs, ys, color="k", lw=0.5)
     for m in marks.marks:
         if m.leader:
-            lx, ly = zip(*m.leader)
+            lx, ly = zip(*(u(p) for p in m.leader))
             ax.plot(lx, ly, color="k", lw=0.4, zorder=5)
-        cx, cy = m.centre
-        ax.text(cx, cy, f"${m.tex}$", fontsize=m.height * pt_per_mm * 0.95, ha="center", va="center",
-                zorder=6)
+        cx, cy = u(m.centre)
+        t = ax.text(cx, cy, f"${m.tex}$", fontsize=m.height * pt_per_mm * 0.95, ha="center", va="center",
+                    zorder=6)
+        names(t, *((u(p) for p in m.leader) if m.leader else (u(m.anchor),)))
     for d in marks.dimensions:
         L = math.dist(d.p1, d.p2)
         nx, ny = -(d.p2[1] - d.p1[1]) / L, (d.p2[0] - d.p1[0]) / L
@@ -168,16 +176,16 @@ def _draw_marks(ax, marks) -> None:
         q1 = (d.p1[0] + nx * off, d.p1[1] + ny * off)
         q2 = (d.p2[0] + nx * off, d.p2[1] + ny * off)
         for p, q in ((d.p1, q1), (d.p2, q2)):
-            ax.plot([p[0], q[0] + nx * 1.5 / k * (1 if off > 0 else -1)],
-                    [p[1], q[1] + ny * 1.5 / k * (1 if off > 0 else -1)], color="k", lw=0.4)
-        ax.annotate("", xy=q2, xytext=q1, arrowprops=dict(arrowstyle="<|-|>", lw=0.5, color="k",
-                                                           shrinkA=0, shrinkB=0, mutation_scale=6))
+            ax.plot([p[0] * unit, (q[0] + nx * 1.5 / k * (1 if off > 0 else -1)) * unit],
+                    [p[1] * unit, (q[1] + ny * 1.5 / k * (1 if off > 0 else -1)) * unit], color="k", lw=0.4)
+        ax.annotate("", xy=u(q2), xytext=u(q1), arrowprops=dict(arrowstyle="<|-|>", lw=0.5, color="k",
+                                                                 shrinkA=0, shrinkB=0, mutation_scale=6))
         bx = [p[0] for p in d.box]
         by = [p[1] for p in d.box]
         ang = math.degrees(math.atan2(d.p2[1] - d.p1[1], d.p2[0] - d.p1[0]))
         if ang > 90.0 or ang <= -90.0:
             ang += 180.0
-        ax.text((min(bx) + max(bx)) / 2, (min(by) + max(by)) / 2, d.text,
+        ax.text((min(bx) + max(bx)) / 2 * unit, (min(by) + max(by)) / 2 * unit, d.text,
                 fontsize=3.2 * pt_per_mm, rotation=ang, rotation_mode="anchor", ha="center", va="center")
 
 

@@ -39,7 +39,7 @@ PENS = {"contour": (1.1, "-"), "thin": (0.45, "-"), "hidden": (0.9, (0, (4, 2)))
         "axis": (0.45, (0, (8, 2, 1, 2))), "vectors": (1.0, "-"), "construction": (0.3, ":")}
 COLOURS = {"absolute": "black", "relative": "tab:blue", "normal": "tab:green", "tangential": "tab:red",
            "coriolis": "tab:purple", "sliding": "tab:orange",
-           "load": "black", "found": "tab:red", "read": "tab:blue"}
+           "load": "black", "found": "tab:red", "read": "tab:blue", "known": "tab:blue"}
 
 
 @dataclass(frozen=True)
@@ -93,6 +93,7 @@ def _mathtext(tex: str) -> str:
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
         tex = active().localize_latex(tex)      # the note's language: F_{\\text{и}1} → F_{\\text{i}1}
         tex = tex.replace("\\text{", "\\mathrm{")
+        tex = tex.replace("'_{", "^{\\prime}_{")     # mathtext sets F'_{и2} as F′ then a lowered и2
         parts = tex.split(",")
         return ", ".join(f"${p}$" for p in parts)
     return tex

@@ -13,7 +13,7 @@ from reportgen.calc import CalcRecord, Var, record
 
 from . import PartContent, tr
 
-NEEDS = ("gears",)
+NEEDS = ("gears", "scenes")
 
 
 def available(project) -> bool:
@@ -162,18 +162,16 @@ def check_lines(pair, r: dict[str, CalcRecord]) -> list[CheckLine]:
 
 
 def content(project) -> PartContent:
-    from reportgen.scenes.meshing import ab_on_sheet, meshing_scale
     from latex_templates.figures.gears import blocking_contour_figure, meshing_figure, sliding_figure
-    from reportgen.gears.meshing import meshing_picture
     from reportgen.gears.shifts import RULE_EQUAL_SLIDING
 
     pair = project.gears
     g = pair.geometry
     r = gear_records(pair)
     checks = check_lines(pair, r)
-    pic = meshing_picture(pair, n_teeth=3)
-    scale = meshing_scale(pair, pic)
-    ab_sheet = ab_on_sheet(pic, scale)
+    ms = project.scenes.meshing                 # sheet 4's picture; the note's figure is a window of it
+    pic, scale = ms.pic, ms.scale
+    ab_sheet = ms.scene.values["ab"]
     ab_read = Var("ab_read", r"\overline{ab}", ab_sheet, "мм", tr("gears.m20"))
     k_var = Var("k_l", "k_l", scale.factor, "", tr("gears.m21"))
     ab_drawn = _rec(r"ab'", "ab_read / k_l", "мм", 3, tr("gears.m22"),
@@ -190,7 +188,7 @@ def content(project) -> PartContent:
     for row in sl.rows:
         rows.append((_point_label(row.label), row.rho, _lam(row.lambda1), _lam(row.lambda2)))
     choice = pair.shift_choice
-    figures = {"gear_pair_meshing": meshing_figure(pair, pic), "gear_pair_sliding": sliding_figure(pair)}
+    figures = {"gear_pair_meshing": meshing_figure(pair, ms), "gear_pair_sliding": sliding_figure(pair)}
     auto = None
     if choice is not None:
         figures["gear_pair_contour"] = blocking_contour_figure(pair)
@@ -205,9 +203,15 @@ def content(project) -> PartContent:
         "g": g, "pair": pair, "r": r, "checks": {c.name: c for c in checks}, "failed": failed,
         "auto": auto, "pic": pic, "scale": scale, "ab_read": ab_read, "ab_drawn": ab_drawn,
         "eps_drawn": eps_drawn, "eps_diff": eps_diff, "k_var": k_var,
-        "sliding_rows": rows, "sl": sl, "zones": _zones(pic), "alt": alt,
+        "mesh_note": _mesh_note(project, figures["gear_pair_meshing"]), "sliding_rows": rows, "sl": sl, "zones": _zones(pic), "alt": alt,
     }
     return PartContent("sections/gear_pair.tex.j2", ctx, figures, tuple(conclusions))
+
+
+def _mesh_note(project, fig):
+    """«рисунок уменьшен, масштаб по листу 4» for the meshing figure (a window of sheet 4's scene)."""
+    from .kinematics import scene_caption
+    return scene_caption(project, fig, 4)
 
 
 def _point_label(label: str):

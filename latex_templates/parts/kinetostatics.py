@@ -21,12 +21,12 @@ from reportgen.calc import CalcRecord, Var, record
 from reportgen.errors import InternalError
 from reportgen.numbers import clean
 from reportgen.kinetostatics.analysis import WARN_TRANSMISSION_DEG
-from reportgen.kinetostatics.reactions import pair_name, perp
+from reportgen.kinetostatics.reactions import pair_name
 from reportgen.tolerances import RTOL_EQUAL
 
 from . import PartContent, active, tr
 
-NEEDS = ("linkage", "structure", "kinetostatics", "resistance", "balancing_cycle", "balancing_cycle_dense")
+NEEDS = ("linkage", "structure", "kinetostatics", "resistance", "balancing_cycle", "balancing_cycle_dense", "scenes")
 
 #: Terms of one summed moment equation per printed line; longer sums are split into partial sums.
 TERMS_PER_RECORD = 3
@@ -178,18 +178,18 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
 
 def content(project) -> PartContent:
     from reportgen.scenes.forces import polygon_scene
-    from ..figures import kinetostatics as kf
+    from ..figures.kinetostatics import free_body_figure
     from ..figures.scene import scene_figure
+    from .kinematics import scene_caption
 
     ks = project.kinetostatics
-    lk, st = project.linkage, project.structure
+    st = project.structure
     r = ks.reactions
-    kin = r.kin
     g = ks.graphical
-    q = np.asarray(kin.q)[0]
     counter = _Counter()
     figures: dict = {}
-    mu_l = Var("mu_l", r"\mu_l", g.length_scale, "м/мм", tr("kinetostatics.m03"))
+    bodies = {fb.key: fb for fb in project.scenes.free_bodies}      # sheet 2 draws the same scenes
+    mu_l = Var("mu_l", r"\mu_l", bodies["crank"].scene.scale("μl").value, "м/мм", tr("kinetostatics.m03"))
 
     loads_ctx = _loads_section(project, ks, mu_l)
     resistance = _resistance(project)
@@ -200,7 +200,7 @@ def content(project) -> PartContent:
     for gg in (() if control else g.groups):
         grp = by_key[gg.key]
         tag = gg.key.replace("-", "_")
-        figures[f"kst_group_{tag}"] = kf.free_body_figure(lk, q, grp.links, *_free_body(ks, grp, gg))
+        figures[f"kst_group_{tag}"] = free_body_figure(bodies[gg.key].scene)
         figures[f"kst_poly_{tag}"] = scene_figure(polygon_scene(gg.polygon))
         mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", tr("kinetostatics.m23"))
         splits = []
@@ -237,7 +237,7 @@ def content(project) -> PartContent:
         crank_ctx, comparison, cycle = None, None, None
         power = _power_check(project, ks, lever_ctx)
     else:
-        crank_ctx = _crank(project, ks, read_mags, counter, mu_l, figures)
+        crank_ctx = _crank(ks, read_mags, counter, mu_l, figures, bodies["crank"])
         lever_ctx = _lever(project, ks, counter, figures)
         comparison = _comparison(ks, crank_ctx, lever_ctx)
         cycle = _cycle(project, ks, figures)
@@ -252,7 +252,9 @@ def content(project) -> PartContent:
            "disc": clean(ks.discrepancy_percent, 100.0),
            "first_group": groups_ctx[0]["label"] if groups_ctx else "",
            "trans": [{"label": by_key[k].label, "mu": v} for k, v in ks.transmission_deg.items()],
-           "width": {name: _width(fig) for name, fig in figures.items()}}
+           "width": {name: _width(fig) for name, fig in figures.items()},
+           "fig_note": {name: scene_caption(project, fig, 2) for name, fig in figures.items()
+                        if name.startswith(("kst_group_", "kst_crank"))}}
     concl = _control_conclusions(project, power) if control else _conclusions(project, ks, comparison)
     return PartContent("sections/kinetostatics.tex.j2", ctx, figures, concl)
 
@@ -423,47 +425,6 @@ def _resistance(project) -> list[dict]:
     return out
 
 
-def _free_body(ks, grp, gg) -> tuple[list, list, list]:
-    """Pairs, arrows and couples of a group's diagram (see :func:`free_body_figure`)."""
-    r = ks.reactions
-    repl = {x.link: x for x in ks.graphical.inertia}
-    pairs: list[dict] = []
-    arrows: list[dict] = []
-    couples: list[dict] = []
-    for p in r.pairs:
-        if p.group != gg.key:
-            continue
-        if p.kind == "R":
-            pairs.append({"point": p.point[0], "kind": "R", "name": p.joint})
-        else:
-            pairs.append({"point": p.sliding_point[0], "kind": "P", "name": p.joint,
-                          "guide": -perp(np.asarray(p.normal[0]))})
-    _loads_on(ks, grp.links, repl, arrows, couples)
-    own = {p.name for p in r.pairs if p.group == gg.key}
-    for k in grp.links:
-        for p in r.pairs_of(k):
-            j = p.other(k)
-            if p.name in own or j in grp.links:
-                continue
-            arrows.append({"point": p.point[0], "vector": p.on(k)[0], "name": pair_name(j, k), "role": "known"})
-    splits = {sp.link: sp for sp in gg.splits}
-    for p in r.pairs:
-        if p.group != gg.key or not p.external:
-            continue
-        k = p.hi if p.hi in grp.links else p.lo
-        j = p.other(k)
-        name = pair_name(j, k)
-        sp = splits.get(k)
-        if sp is not None and p.kind == "R":
-            arrows.append({"point": p.point[0], "vector": sp.normal * np.asarray(sp.along), "name": "Rn" + name[1:],
-                           "role": "found"})
-            arrows.append({"point": p.point[0], "vector": sp.tau * np.asarray(sp.tangent), "name": "Rτ" + name[1:],
-                           "role": "found"})
-        else:
-            arrows.append({"point": p.point[0], "vector": p.on(k)[0], "name": name, "role": "found"})
-    return pairs, [a for a in arrows if float(np.hypot(*a["vector"])) > 0], couples
-
-
 def _loads_on(ks, links, repl, arrows, couples) -> None:
     for f in ks.reactions.loads.forces:
         if f.link not in links:
@@ -481,25 +442,16 @@ def _loads_on(ks, links, repl, arrows, couples) -> None:
         couples.append({"point": com, "value": val, "name": m.name})
 
 
-def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
+def _crank(ks, read_mags, counter, mu_l, figures, body) -> dict:
+    """The crank's step: its diagram (``body``, the scene sheet 2 draws), F_ур from ΣM about the
+    axis, M_ур, the polygon and the frame's reaction read off it."""
     from reportgen.scenes.forces import polygon_scene
-    from ..figures import kinetostatics as kf
+    from ..figures.kinetostatics import free_body_figure
     from ..figures.scene import scene_figure
-    lk, r, c = project.linkage, ks.reactions, ks.graphical.crank
+    r, c = ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
-    arrows: list[dict] = []
-    couples: list[dict] = []
-    _loads_on(ks, (d,), {}, arrows, couples)
-    for p in r.pairs_of(d):
-        if p.name != fp.name:
-            arrows.append({"point": p.point[0], "vector": p.on(d)[0], "name": pair_name(p.other(d), d), "role": "known"})
-    arrows.append({"point": r.balancing_point[0], "vector": r.balancing_force[0], "name": "Fур", "role": "found"})
-    arrows.append({"point": fp.point[0], "vector": fp.on(d)[0], "name": pair_name(0, d), "role": "found"})
-    pairs = [{"point": fp.point[0], "kind": "R", "name": fp.joint},
-             {"point": r.balancing_point[0], "kind": "R", "name": r.crank_pin}]
-    arrows = [a for a in arrows if float(np.hypot(*a["vector"])) > 0]
-    figures["kst_crank"] = kf.free_body_figure(lk, np.asarray(r.kin.q)[0], (d,), pairs, arrows, couples, w_cm=10.0)
+    figures["kst_crank"] = free_body_figure(body.scene)
     figures["kst_poly_crank"] = scene_figure(polygon_scene(c.polygon))
     arms: list = []
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
@@ -523,7 +475,7 @@ def _crank(project, ks, read_mags, counter, mu_l, figures) -> dict:
             "details": _details(c.polygon),
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
-            "pin_forces": [Tex(f"${sym(a['name'])}$") for a in arrows if a["role"] == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
+            "pin_forces": [Tex(f"${sym(f.name)}$") for f in body.forces if f.role == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),
             "R_couple": float(np.hypot(*r.frame_reaction_with_moment[0]))}
 
 

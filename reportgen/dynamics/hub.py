@@ -9,6 +9,20 @@ does); it only makes the sketch a part that can be fitted on a shaft.
 * The keyway of a prismatic key by ГОСТ 23360-78: b × h of the key and the depth t2 of the hub's
   slot for the shaft's diameter range.
 * The hub's outer diameter 1,6·d (a steel hub), not larger than the disk.
+
+Sources the tables were checked against (issue 12), row by row:
+
+* :data:`KEYS` — ГОСТ 23360-78, table 1 (d over … up to, b × h, t1, t2): every row from 12–17 to
+  440–500 mm agrees with two independent copies of the table: a shaft-key lookup typed from the
+  standard (gist.github.com/kelevara/6204878, «ГОСТ 23360-78», rows 6–8 … 75–85 mm) and the table of
+  GB/T 1095-1979, whose sizes are the same (blog.csdn.net/weixin_39519072/article/
+  details/111860237, «普通平键规格尺寸表»: d, b × h, shaft depth t, hub depth t1, 6–8 … 440–500 mm).
+  Nothing needed fixing. The rows under 12 mm (2 × 2 … 4 × 4) are left out: the bore is ≥ 20 mm.
+* :data:`RA40` — ГОСТ 6636-69 (text: omegametall.ru/Data2/1/4294823/4294823017.htm) rounds the
+  preferred numbers of ГОСТ 8032-84 / ISO 3; its series Ra 40 is R40 rounded (1,06 → 1,05; 1,18 →
+  1,2 in the decade 100…1000, where 115 is not a normal size; 2,12 → 2,1; 3,15 → 3,2 …). The R40
+  mantissas (ISO 3, as tabulated in the ``renard`` package, github.com/rob-smallshire/renard) check
+  the table: 40 sizes a decade, each within 2 % of its R40 value (tests/labels/test_flywheel_hub.py).
 """
 from __future__ import annotations
 
@@ -16,6 +30,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import ParameterError
+from ..tolerances import RTOL_ROUNDOFF
 
 #: Allowable shear stress of the preliminary shaft estimate, Pa.
 TAU_ALLOWED = 20e6
@@ -32,6 +47,16 @@ KEYS = ((12, 17, 5, 5, 3.0, 2.3), (17, 22, 6, 6, 3.5, 2.8), (22, 30, 8, 7, 4.0, 
         (170, 200, 45, 25, 15.0, 10.4), (200, 230, 50, 28, 17.0, 11.4), (230, 260, 56, 32, 20.0, 12.4),
         (260, 290, 63, 32, 20.0, 12.4), (290, 330, 70, 36, 22.0, 14.4), (330, 380, 80, 40, 25.0, 15.4),
         (380, 440, 90, 45, 28.0, 17.4), (440, 500, 100, 50, 31.0, 19.5))
+
+
+def key_row(d: float) -> tuple[float, float, float, float, float, float]:
+    """The row of :data:`KEYS` for a shaft of ``d`` mm: «свыше d0 до d1» is d0 < d ≤ d1; beyond the
+    table its last (or first) row."""
+    if d > KEYS[-1][1]:
+        return KEYS[-1]
+    return next((k for k in KEYS if k[0] < d <= k[1]), KEYS[0])
+
+
 #: The hub's outer diameter in bore diameters.
 HUB_RATIO = 1.6
 
@@ -55,8 +80,8 @@ def hub_of(torque: float, outer_diameter_mm: float, tau: float = TAU_ALLOWED) ->
     if not (math.isfinite(torque) and math.isfinite(outer_diameter_mm) and outer_diameter_mm > 0):
         raise ParameterError("torque, diameter", (torque, outer_diameter_mm), "finite, the diameter > 0")
     d_min = 1000.0 * (abs(torque) / (0.2 * tau)) ** (1.0 / 3.0)
-    d = float(next((x for x in RA40 if x >= d_min), RA40[-1]))
-    key = next((k for k in KEYS if k[0] < d <= k[1]), KEYS[-1] if d > KEYS[-1][1] else KEYS[0])
+    d = float(next((x for x in RA40 if x >= d_min * (1 - RTOL_ROUNDOFF)), RA40[-1]))   # d_min on a size: that size
+    key = key_row(d)
     hub_d = min(HUB_RATIO * d, outer_diameter_mm)
     return Hub(float(torque), tau, d_min, d, hub_d, float(key[2]), float(key[3]), float(key[5]))
 

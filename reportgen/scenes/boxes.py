@@ -24,7 +24,15 @@ class GraphLayout:
 @dataclass(frozen=True)
 class SceneBoxes:
     #: Sheet 1: the drawing of the mechanism (the scheme view less its label and caption margins).
-    scheme: tuple[float, float] = (470.0 - 28.0 - 28.0, 400.0 - 36.0 - 38.0)
+    #: At most 270 mm high, so that the band of the A1 field under the scheme's view (584 − 270 −
+    #: 74 − 10 = 230 mm) holds a plan position's pair of plans (views up to ~195 mm high) and the
+    #: small plans find room beside it or beside the scheme: the shaper at 1:2 (320 mm high) and
+    #: class3 at 1:2,5 (284 mm) left no room for their 12 small velocity plans (issue 12).
+    scheme: tuple[float, float] = (470.0 - 28.0 - 28.0, 270.0)
+    #: Sheet 1: each plan position beyond two (``[analysis] plan_positions``) takes this much height
+    #: from ``scheme`` (its pair of plans needs ~140 × 150–200 mm more of the field: the shaper with
+    #: three plan positions finds no room at 1:2,5 and is drawn at 1:4).
+    scheme_less_per_pair: float = 40.0
     #: Sheet 1: no point of the plans of a plan position other than the analysed one stands farther
     #: than this from the pole, mm (a coarser round μ if it would; the analysed position's plans keep
     #: the scales of :func:`reportgen.plans.build_plans`), so that both stroke's plans find room.

@@ -1,10 +1,14 @@
-"""The scale of the meshing picture (картина зацепления) of sheet 4, decided once for the window the
-sheet gives it; the note quotes the same scale and the length of ab read on the sheet."""
+"""The meshing picture (картина зацепления) of sheet 4 as a scene (:func:`meshing_scene`, the stage
+``project.scenes.meshing``): its scale decided once for the window the sheet gives it, its geometry
+in paper mm at that scale; the note draws a window of the same scene (reduced, the caption says
+so) and quotes the same scale and the length of ab read on the sheet."""
 from __future__ import annotations
 
 from dataclasses import dataclass
 
 from ..gears.meshing import GOST_SCALES, MeshingPicture, meshing_picture
+from .meshing_marks import MeshingMarks
+from .scene import Scene
 
 #: The view of the meshing picture on the left of sheet 4, sheet mm: the whole height of the
 #: sheet; the picture (teeth, circles' arcs and both centres) fits inside it less the padding, the
@@ -73,3 +77,94 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
 def ab_on_sheet(pic: MeshingPicture, scale: DrawingScale) -> float:
     """|ab| as read on the sheet, to 0,1 mm."""
     return round(pic.ab_drawn * scale.factor, 1)
+
+
+#: The line kinds of the circles (ГОСТ 2.303: the pitch circle dash-dot, the working one dashed).
+CIRCLE_KINDS = {"pitch": "axis", "base": "thin", "working": "hidden", "tip": "thin", "root": "thin"}
+#: The radius of the dots at the named points, paper mm.
+DOT_MM = 0.8
+#: The zones of one and two pairs in contact are drawn this far beside ab (paper mm).
+ZONE_OFFSET_MM = 6.0
+
+
+@dataclass(frozen=True)
+class MeshingScene:
+    """The meshing picture of sheet 4 as one scene: ``scene`` in paper mm at the sheet's scale
+    (real mm × ``scale.factor``, the origin at O1), built from ``pic``; the note's figure is a
+    window of it. ``marks`` are the designations as the sheet places them (the note places the
+    same names at its own letter size, :func:`reportgen.scenes.meshing_marks.place_marks`)."""
+    pic: MeshingPicture
+    scale: DrawingScale
+    scene: Scene
+    marks: MeshingMarks
+
+
+def meshing_scene(pair, pic: MeshingPicture | None = None) -> MeshingScene:
+    """The picture's geometry at the sheet's scale: the teeth (contour), the circles as arcs through
+    the meshing zone (pitch dash-dot, working dashed, others thin), the line of centres, the common
+    tangent at P, the line of action N1N2, its working section ab, the zones of one and two pairs
+    (ticked, beside ab), the named points as dots; the designations as labels tied to what they
+    name; values: |ab| as read on the sheet."""
+    import math
+
+    from shapely.geometry import LineString
+    from shapely.geometry import Point as SPoint
+    from shapely.geometry import box
+
+    from .meshing_marks import arcs_window
+    from .scene import Circle, Entity, Label, Polyline, Scale, Segment, frozen
+
+    pic = pic if pic is not None else meshing_picture(pair, n_teeth=3)
+    scale = meshing_scale(pair, pic)
+    k = scale.factor
+    g = pair.geometry
+    marks = meshing_marks(pair, pic, scale)
+
+    def mm(p) -> tuple[float, float]:
+        return (float(p[0]) * k, float(p[1]) * k)
+
+    def lines_of(geom) -> list:
+        if geom.is_empty:
+            return []
+        return [list(x.coords) for x in getattr(geom, "geoms", [geom]) if x.geom_type == "LineString"]
+
+    rx0, ry0, rx1, ry1 = label_room(pair, pic, scale)
+    window = box(rx0, ry0, rx1, ry1)
+    arc_window = box(*arcs_window(pair, pic)).intersection(window)
+    ents: list[Entity] = []
+    for c in pic.circles:
+        ring = SPoint(c.centre).buffer(c.radius, 720).exterior
+        for j, line in enumerate(lines_of(ring.intersection(arc_window))):
+            ents.append(Polyline(f"circle:{c.name}:{j}", tuple(mm(p) for p in line), CIRCLE_KINDS[c.kind]))
+    for gear, teeth in ((1, pic.teeth1), (2, pic.teeth2)):
+        for i, tooth in enumerate(teeth):
+            ents.append(Polyline(f"tooth{gear}:{i}", tuple(mm(p) for p in tooth), "contour"))
+    ents.append(Segment("centres", mm((0.0, max(ry0, -g.m))), mm((0.0, min(ry1, g.aw + g.m))), "axis"))
+    for line in lines_of(LineString(pic.segments["tangent"]).intersection(window)):
+        ents.append(Segment("tangent", mm(line[0]), mm(line[-1]), "thin"))
+    n1, n2 = pic.points["N1"], pic.points["N2"]
+    ents.append(Segment("N1N2", mm(n1), mm(n2), "thin"))
+    ents.append(Segment("ab", mm(pic.points["a"]), mm(pic.points["b"]), "contour"))
+    length = math.dist(n1, n2)
+    nx, ny = (n2[1] - n1[1]) / length, -(n2[0] - n1[0]) / length        # to the lower right of N1N2
+    labels: list[Label] = []
+    for i, z in enumerate(pic.zones):
+        if z.pairs == 0:
+            continue
+        p = (z.start[0] * k + nx * ZONE_OFFSET_MM, z.start[1] * k + ny * ZONE_OFFSET_MM)
+        q = (z.end[0] * k + nx * ZONE_OFFSET_MM, z.end[1] * k + ny * ZONE_OFFSET_MM)
+        ident = f"zone{min(z.pairs, 2)}:{i}"
+        ents.append(Segment(ident, p, q, "vectors"))
+        for j, e in enumerate((p, q)):
+            t = 0.4 * ZONE_OFFSET_MM
+            ents.append(Segment(f"{ident}:tick{j}", (e[0] - nx * t, e[1] - ny * t), (e[0] + nx * t, e[1] + ny * t),
+                                "thin"))
+        mid = ((p[0] + q[0]) / 2 + nx * 0.9 * ZONE_OFFSET_MM, (p[1] + q[1]) / 2 + ny * 0.9 * ZONE_OFFSET_MM)
+        labels.append(Label("II" if z.pairs >= 2 else "I", ident, mid, "zone"))
+    for name in ("O1", "O2", "P", "N1", "N2", "a", "b"):
+        ents.append(Circle(f"point:{name}", mm(pic.points[name]), DOT_MM, "contour"))
+    for m in marks.marks:
+        labels.append(Label(m.tex, f"mark:{m.name}", mm(m.anchor), "mark"))
+    return MeshingScene(pic, scale, Scene("meshing", (Scale("k_l", k, "", scale.label),), tuple(ents),
+                                          tuple(labels), frozen({n: mm(p) for n, p in pic.points.items()}),
+                                          frozen({"ab": ab_on_sheet(pic, scale)})), marks)

@@ -7,6 +7,8 @@ from types import MappingProxyType
 from typing import Mapping
 
 from .dynamics import DynamicsScenes, dynamics_scenes
+from .free_body import FreeBody, free_bodies
+from .meshing import MeshingScene, meshing_scene
 from .output_diagrams import output_diagrams_scene
 from .plans import plan_scene
 from .positions import SchemeData, bounds, positions_scales, positions_scene, scheme_data
@@ -24,7 +26,8 @@ class Scenes:
     @cached_property
     def positions_scales(self) -> list[tuple[float, str]]:
         """The ГОСТ scales of the plan of positions, the chosen one first."""
-        return positions_scales(bounds(self.scheme_data, self.project.linkage), self.project.boxes)
+        return positions_scales(bounds(self.scheme_data, self.project.linkage), self.project.boxes,
+                                len(self.project.plan_positions))
 
     def positions_at(self, k: float, ratio: str) -> Scene:
         """The plan of positions at another scale (a sheet whose views do not fit)."""
@@ -68,3 +71,21 @@ class Scenes:
         """The s–v–a diagrams of the output (sheet 1, section 1; None if the output has no strokes)."""
         d = self.project.output_diagrams
         return None if d is None else output_diagrams_scene(d, len(self.project.phi))
+
+    @cached_property
+    def free_bodies(self) -> tuple[FreeBody, ...]:
+        """The free-body diagrams of section 2 and sheet 2 at the replica's μl: each Assur group
+        (the last attached first), then the crank."""
+        ks = self.project.kinetostatics
+        return free_bodies(ks, self.project.linkage, self.project.structure, ks.graphical.length_scale)
+
+    def free_bodies_at(self, mu_l: float) -> tuple[FreeBody, ...]:
+        """The free-body diagrams at another μl (a sheet whose views do not fit at the replica's)."""
+        ks = self.project.kinetostatics
+        return free_bodies(ks, self.project.linkage, self.project.structure, mu_l)
+
+    @cached_property
+    def meshing(self) -> MeshingScene:
+        """The meshing picture of the [gears] pair at sheet 4's scale (the note's figure is a
+        window of it)."""
+        return meshing_scene(self.project.gears)

@@ -8,7 +8,7 @@ import math
 import ezdxf
 import pytest
 
-from reportgen.dynamics.hub import RA40, bore_outline, hub_of, section_rects
+from reportgen.dynamics.hub import KEYS, RA40, TAU_ALLOWED, bore_outline, hub_of, key_row, section_rects
 
 
 def test_press_shaft_by_hand():
@@ -51,3 +51,64 @@ def test_sheet3_draws_the_bore(tmp_path):
     for d in ezdxf.readfile(tmp_path / "s.dxf").modelspace().query("DIMENSION"):
         dims.add(d.dxf.text)
     assert "Ø42" in dims and "12" in dims and "45,3" in dims, (dims, texts)
+
+
+# --- the tables against their sources (reportgen/dynamics/hub.py's docstring) ------------------
+
+#: ISO 3 / ГОСТ 8032-84 R40 mantissas (as tabulated by the ``renard`` package).
+R40 = (1.00, 1.06, 1.12, 1.18, 1.25, 1.32, 1.40, 1.50, 1.60, 1.70, 1.80, 1.90, 2.00, 2.12, 2.24, 2.36,
+       2.50, 2.65, 2.80, 3.00, 3.15, 3.35, 3.55, 3.75, 4.00, 4.25, 4.50, 4.75, 5.00, 5.30, 5.60, 6.00,
+       6.30, 6.70, 7.10, 7.50, 8.00, 8.50, 9.00, 9.50)
+
+
+def test_ra40_is_r40_rounded():
+    # 20…95 are R40 2,00…9,50 of the decade 10…100, 100…500 are R40 1,00…5,00 of the next: one
+    # normal size per R40 number, in order, each within 2 % of it
+    expected = [m * 10 for m in R40 if m >= 2.0] + [m * 100 for m in R40 if m <= 5.0]
+    assert len(RA40) == len(expected)
+    for ra, r in zip(RA40, expected):
+        assert abs(ra - r) <= 0.02 * r, (ra, r)
+    assert 115 not in RA40 and {120, 125} <= set(RA40)     # ГОСТ 6636's decade 100…1000
+
+
+@pytest.mark.parametrize("d_min, d", [(19.0, 20), (20.0, 20), (20.01, 21), (24.6, 25), (25.2, 26),
+                                      (36.4, 38), (41.5, 42), (42.01, 45), (100.5, 105), (110.2, 120)])
+def test_bore_rounds_up_to_ra40(d_min, d):
+    torque = 0.2 * TAU_ALLOWED * (d_min / 1000.0) ** 3
+    assert hub_of(torque, 2000.0).d == d
+
+
+#: ГОСТ 23360-78 rows (d over, up to: b, h, t1, t2) as the two sources of hub.py print them, for the
+#: ranges the examples' bores fall in and their neighbours.
+GOLDEN_KEYS = {(17, 22): (6, 6, 3.5, 2.8), (22, 30): (8, 7, 4.0, 3.3), (30, 38): (10, 8, 5.0, 3.3),
+               (38, 44): (12, 8, 5.0, 3.3), (44, 50): (14, 9, 5.5, 3.8), (50, 58): (16, 10, 6.0, 4.3),
+               (95, 110): (28, 16, 10.0, 6.4), (440, 500): (100, 50, 31.0, 19.5)}
+
+
+@pytest.mark.parametrize("rng", list(GOLDEN_KEYS))
+def test_key_rows_and_their_boundaries(rng):
+    lo, hi = rng
+    want = GOLDEN_KEYS[rng]
+    for d in (lo + 0.01, (lo + hi) / 2, hi):          # «свыше lo до hi»: hi belongs to the row
+        assert key_row(d)[2:] == want, d
+    if hi < KEYS[-1][1]:                               # the next row starts over hi
+        above = key_row(hi + 0.01)
+        assert above[0] == hi and above[2] > want[0]
+
+
+@pytest.mark.parametrize("example, d, key", [("press", 42, (12, 8, 3.3)), ("shaper", 38, (10, 8, 3.3)),
+                                             ("conveyor", 25, (8, 7, 3.3)), ("crank-slider", 26, (8, 7, 3.3)),
+                                             ("class3", 20, (6, 6, 2.8))])
+def test_every_example_hub(example, d, key):
+    from reportgen.project import Project
+    from reportgen.taskfile import load_task
+    from .conftest import ROOT
+    res = Project(load_task(ROOT / "examples" / example / "task.toml")).dynamics
+    h = hub_of(res.M_drive, 2000.0 * res.flywheel.radius)
+    assert (h.d, h.key_b, h.key_h, h.t2) == (d, *key)
+
+
+def test_key_table_is_contiguous_and_grows():
+    for a, b in zip(KEYS, KEYS[1:]):
+        assert a[1] == b[0] and b[2] > a[2] and b[3] >= a[3] and b[5] >= a[5]
+        assert a[5] < a[3] and a[4] < a[3]           # both slots shallower than the key is high

@@ -126,7 +126,8 @@ def test_sheet4_dimension_texts_clear_of_teeth(tmp_path):
 
 @pytest.mark.parametrize("name", ["press", "crank-slider"])
 def test_note_figure_marks_clear_of_teeth(name):
-    """The note's figure places the sheet's designations by the same rule at its own scale: every
+    """The note's figure (a window of sheet 4's scene) places the sheet's designations by the same
+    rule at its letter size: every
     circle, s, p, αw named, no text over a tooth, over another text, or outside the figure."""
     import matplotlib
     matplotlib.use("Agg")
@@ -135,13 +136,14 @@ def test_note_figure_marks_clear_of_teeth(name):
     from latex_templates.render import Strings
 
     project = Project(load_task(str(ROOT / "examples" / name / "task.toml")))
-    pic = meshing_picture(project.gears, n_teeth=3)
+    ms = project.scenes.meshing
+    pic = ms.pic
     with active_strings(Strings("ru")):
-        fig = meshing_figure(project.gears, pic)
+        fig = meshing_figure(project.gears, ms)
     marks = fig.reportgen_marks
     names = {m.name for m in marks.marks}
     assert {f"{n}{i}" for n in ("r", "rb", "rw", "ra", "rf") for i in (1, 2)} | {"s1", "s2", "p", "alpha_w"} <= names
-    room = box(*meshing_frame(pic)[0])
+    room = box(*meshing_frame(pic))
     teeth = teeth_polygons(pic)
     boxes = marks.boxes()
     for i, (n1, b1) in enumerate(boxes):

@@ -192,15 +192,17 @@ def test_links_are_numbered_in_circles(name, sheets):
 
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_plans_of_the_analysed_position_stay_together(name, sheets):
-    _, sheet = sheets[name]
+    project, sheet = sheets[name]
     v, a = sheet.views["plan_v"].rect, sheet.views["plan_a"].rect
     gap = kinematics.PAIR_GAP
     side_by_side = (math.isclose(v.y0, a.y0) and math.isclose(v.y1, a.y1)
                     and gap - 1e-6 <= a.x0 - v.x1 <= 2 * gap)
     stacked = math.isclose(v.x0, a.x0) and math.isclose(v.x1, a.x1) and math.isclose(v.y0 - a.y1, gap)
     assert side_by_side or stacked, (v, a)
-    # no two views closer than the packer's gap
-    rects = [w.rect for w in sheet.views.values()]
-    for i, p in enumerate(rects):
-        for q in rects[i + 1:]:
-            assert not p.expanded(kinematics.VIEW_GAP - 1e-6).overlaps(q), (p, q)
+    # no two views closer than the packer's gap, but a plan position's two plans (PAIR_GAP)
+    pairs = {frozenset(kinematics.plan_view_names(j, j == project.analysed)) for j in project.plan_positions}
+    views = list(sheet.views.items())
+    for i, (n, w) in enumerate(views):
+        for m, u in views[i + 1:]:
+            gap = kinematics.PAIR_GAP if frozenset((n, m)) in pairs else kinematics.VIEW_GAP
+            assert not w.rect.expanded(gap - 1e-6).overlaps(u.rect), (n, m)
