@@ -159,28 +159,62 @@ def polygon_panel(name: str, title: str, polygon) -> Panel:
                     view.segment(e.a, e.b, "hidden")
                 else:
                     view.arrow(e.a, e.b, None, head_mm=min(4.0, e.length))
+            elif isinstance(e, SceneSegment):
+                view.segment(e.a, e.b, "hidden" if e.kind == "hidden" else "thin" if e.kind == "thin" else "contour")
+            elif isinstance(e, SceneCircle):
+                view.circle_mm(e.c, e.r, "thin")
+        view.title(title)           # the titles first: the names keep clear of them
+        mu = scene.scale()
+        view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
+                     tr("sheets.kv05", v1=format_significant(mu.value, 4)), 3.5, "bottom-center")
         inside = view.rect.polygon()
+        for lb in scene.labels:            # a detail's letter, heading and scale at their own places first
+            if lb.role in ("detail", "detail-title"):
+                view.text_mm(view.transform(lb.at), detail_text(lb), 5.0, "center")
+            elif lb.role == "detail-scale":
+                view.text_mm(view.transform(lb.at), tr("sheets.kv05", v1=format_significant(
+                    scene.scale(f"μF:{lb.text}").value, 4)), 3.5, "center")
+        rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
+                       for lb in scene.labels if lb.along is not None)
         for lb in scene.labels:
             if lb.along is None:
                 continue
             a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            rich = rl.Rich(plain(lb.anchor.split(":", 1)[1]))
+            rich = rl.Rich(plain(lb.anchor.rsplit(":", 1)[1]))
             if lb.leader:
-                mid = view.transform(lb.at)
-                normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
-                box = rl.place_passes(view, [(rl.around(mid, rich, POLY_LABEL_MM, normal, gaps=(5.0, 6.0)), 0)],
-                                      rich, POLY_LABEL_MM, inside=inside, names=LineString([a, b]))
-                if box is not None:
-                    near = box.exterior.interpolate(box.exterior.project(Point(mid)))
-                    view.layout.add_line((near.x, near.y), mid, dxfattribs={"layer": "thin"})
+                leader_name(view, a, b, rich, POLY_LABEL_MM, inside)
             else:
-                place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside)
-        view.title(title)
-        mu = scene.scale()
-        view.text_mm((view.rect.center[0], view.rect.y0 + 3.0),
-                     tr("sheets.kv05", v1=format_significant(mu.value, 4)), 3.5, "bottom-center")
+                place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside, rivals)
         return view
     return Panel(name, w, h, paint)
+
+
+def leader_name(view: View, a, b, rich, height: float, inside) -> None:
+    """The name of a short vector a→b (sheet mm) on a thin leader to its middle, across it first
+    (the leader is part of what ties the name to its vector)."""
+    mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
+    line = LineString([a, b])
+    foot: list = []
+
+    def named(box):
+        near = box.exterior.interpolate(box.exterior.project(Point(mid)))
+        foot.append((near.x, near.y))
+        return line.union(LineString([(near.x, near.y), mid]))
+
+    if rl.place_passes(view, [(rl.around(mid, rich, height, normal, gaps=(5.0, 6.0, 8.0)), 0)],
+                       rich, height, inside=inside, names=named) is not None:
+        view.layout.add_line(foot[-1], mid, dxfattribs={"layer": "thin"})
+
+
+def detail_text(lb) -> str:
+    """A polygon detail's letter (``polygons.letters`` of the sheet's language) or its heading
+    «А (5:1)» (:func:`reportgen.scenes.forces.polygon_details`)."""
+    from ..words import decimal_mark
+    letters = tr("polygons.letters")
+    index, _, ratio = lb.text.partition(" ")
+    letter = letters[int(index) % len(letters)]
+    return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
 
 
 def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:
@@ -188,10 +222,27 @@ def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -
     return polygon_panel(name, title, polygon).place(sheet, preferred)
 
 
-def near_passes(a, b, rich, height: float) -> list[tuple[list, int]]:
+def _shares_line(own: LineString, other: LineString) -> bool:
+    """Do two vectors lie on one line, overlapping (then their names share the room beside it)?"""
+    (ax, ay), (bx, by) = own.coords[0], own.coords[-1]
+    n = math.hypot(bx - ax, by - ay)
+    if n == 0.0:
+        return False
+    off = max(abs((x - ax) * (by - ay) - (y - ay) * (bx - ax)) for x, y in (other.coords[0], other.coords[-1])) / n
+    return off < 0.5 and own.distance(other) < 0.5
+
+
+#: A vector's name must be nearer to its own vector than to any other named vector by this much, mm
+#: (the label check's half millimetre with a margin for the measuring font).
+OWN_MARGIN_MM = 0.8
+
+
+def near_passes(a, b, rich, height: float, rivals: tuple = ()) -> list[tuple[list, int]]:
     """Passes for the name of the vector a→b (sheet mm) that keep it its own: beside it crossing no
     line, then crossing one, round its middle no farther than LABEL_NEAR_MM, then beside it crossing
-    more lines — a name is never carried off to where it would read as another vector's."""
+    more lines — a name is never carried off to where it would read as another vector's: nearer to
+    its own vector than to any of the other named vectors ``rivals`` (LineStrings, sheet mm) that do
+    not lie along it."""
     from drawings import style
     from reportgen.tolerances import LABEL_NEAR_MM
     near = rl.along(a, b, rich, height)
@@ -208,19 +259,22 @@ def near_passes(a, b, rich, height: float) -> list[tuple[list, int]]:
         for c in cands:
             b = rl.rich_box(rich, c, height, pad=0.0)          # its texts start at its left edge
             text = affinity.scale(b, 1.0 / style.WIDTH_MARGIN, 1.0, origin=(b.bounds[0], c[1]))
-            if text.distance(line) < LABEL_NEAR_MM - 0.5:
+            d = text.distance(line)
+            if d < LABEL_NEAR_MM - 0.5 and all(text.distance(r) >= d + OWN_MARGIN_MM for r in others):
                 out.append(c)
         return out
+    others = [r for r in rivals if not r.equals(line) and not _shares_line(line, r)]
     near, far = close(near), close(far)
     return [(near, 0), (near, 1), (far, 0), (far, 1), (near, 2), (near, 99)]
 
 
-def place_vector_name(view: View, a, b, rich, height: float, inside) -> None:
-    """The name of the vector a→b (sheet mm) beside it (:func:`near_passes`) where it overlaps no
-    text; where every spot beside it is taken, farther out on a thin leader to the vector's middle
-    (the leader is part of what ties it to its vector); else beside it, overlapping the fewest."""
+def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tuple = ()) -> None:
+    """The name of the vector a→b (sheet mm) beside it (:func:`near_passes`, nearer to it than to
+    any of the ``rivals``) where it overlaps no text; where every spot beside it is taken, farther
+    out on a thin leader to the vector's middle (the leader is part of what ties it to its vector);
+    else beside it, overlapping the fewest."""
     line = LineString([a, b])
-    if rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, optional=True,
+    if rl.place_passes(view, near_passes(a, b, rich, height, rivals), rich, height, inside=inside, optional=True,
                        names=line) is not None:
         return
     mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
@@ -283,10 +337,16 @@ def lever_panel(name: str, scene: Scene) -> Panel:
         for e in scene.entities:
             if isinstance(e, SceneArrow):
                 view.arrow(e.a, e.b, None, head_mm=3.5)
+        _title_and_scales(view, lever_title(), tr("sheets.kv06", v1=format_significant(scene.scale('μv').value, 4)),
+                          tr("sheets.kv07", v1=format_significant(scene.scale('μF').value, 4)))
+        view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), lever_subtitle(), 3.5, "bottom-center")
         inside = view.rect.polygon()
         for lb in scene.labels:
             if lb.role == "point":
                 view.label(lb.at, lb.anchor.split(":", 1)[1], 5.0, prefer_deg=-135.0 if lb.anchor == "point:p" else 45.0)
+        rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
+                       for lb in scene.labels if lb.role == "vector" and lb.along is not None
+                       and lb.anchor.startswith("force:"))
         for lb in scene.labels:
             if lb.role != "vector" or lb.along is None:
                 continue
@@ -295,10 +355,7 @@ def lever_panel(name: str, scene: Scene) -> Panel:
                 continue            # the arms are numbered by the note's equations (h1, h2, … of section 2)
             rich = rl.Rich(plain(ident)) if kind == "force" else rl.from_tex(lb.text)
             a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside)
-        _title_and_scales(view, lever_title(), tr("sheets.kv06", v1=format_significant(scene.scale('μv').value, 4)),
-                          tr("sheets.kv07", v1=format_significant(scene.scale('μF').value, 4)))
-        view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), lever_subtitle(), 3.5, "bottom-center")
+            place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside, rivals)
         return view
     return Panel(name, w, h, paint)
 

@@ -62,6 +62,32 @@ def reduction_for(scene: Scene, max_w_mm: float = TEXT_W_MM, max_h_mm: float = T
     return min(1.0, fit)
 
 
+#: Roles of labels set at their own point (the letter of a polygon's detail on its shelf, the detail's
+#: heading «А (5:1)»): placed first, the others kept clear of them.
+FIXED_ROLES = ("detail", "detail-title", "detail-scale")
+
+
+#: Scenes whose vectors' names are kept nearer to their own vector than to any other named vector
+#: (the force polygons and the lever, issue 12; tests/labels checks the same figures).
+OWN_VECTOR_SCENES = ("polygon", "lever")
+
+
+def fixed_text(lb: Label, scene: Scene | None = None) -> str:
+    """The text of a label of :data:`FIXED_ROLES`: the detail's index as its letter in the note's
+    alphabet (``polygons.letters``), the heading as «letter (ratio)» with the language's decimal mark,
+    the detail's scale «μF = 2 Н/мм» (``polygons.detail_scale``, from the ``scene``'s scales)."""
+    from markupsafe import Markup
+
+    from ..parts import decimal_mark
+    if lb.role == "detail-scale":
+        mu = scene.scale(f"μF:{lb.text}").value if scene is not None else 0.0
+        return str(active().text("polygons.detail_scale", mu=Markup(f"{mu:.6g}".replace(".", decimal_mark()))))
+    letters = str(active().raw("polygons.letters"))
+    index, _, ratio = lb.text.partition(" ")
+    letter = letters[int(index) % len(letters)]
+    return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
+
+
 def _mathtext(tex: str) -> str:
     """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
     if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
@@ -173,6 +199,41 @@ def _lines(scene: Scene) -> list:
     return out
 
 
+def _seg_point(p, seg) -> float:
+    (x0, y0), (x1, y1) = seg
+    dx, dy = x1 - x0, y1 - y0
+    m = dx * dx + dy * dy
+    t = 0.0 if m == 0.0 else min(1.0, max(0.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / m))
+    return math.hypot(p[0] - x0 - t * dx, p[1] - y0 - t * dy)
+
+
+def box_segment_distance(b, seg) -> float:
+    """Distance (mm) between the box ``b`` (x0, y0, x1, y1) and the segment ``seg``."""
+    if _crosses(b, seg):
+        return 0.0
+    corners = ((b[0], b[1]), (b[2], b[1]), (b[2], b[3]), (b[0], b[3]))
+    return min([_dist_box(q, b) for q in seg] + [_seg_point(c, seg) for c in corners])
+
+
+def _along_one_line(own, other) -> bool:
+    """Do two vectors lie on one line, overlapping (then their names share the room beside it)?"""
+    (ax, ay), (bx, by) = own
+    n = math.hypot(bx - ax, by - ay)
+    if n == 0.0:
+        return False
+    off = max(abs((x - ax) * (by - ay) - (y - ay) * (bx - ax)) for x, y in other) / n
+    return off < 0.5 and min(_seg_point(other[0], own), _seg_point(other[1], own),
+                             _seg_point(own[0], other), _seg_point(own[1], other)) < 0.5
+
+
+def _own_vector(box, own, rivals, margin: float) -> bool:
+    """Is ``box`` nearer (by ``margin``) to its vector ``own`` than to any of the ``rivals`` (the
+    figure's other named vectors not lying along it)? A name nearer to another vector reads as its."""
+    d = box_segment_distance(box, own)
+    return all(box_segment_distance(box, r) >= d + margin for r in rivals
+               if r != own and not _along_one_line(own, r))
+
+
 def _leader_candidates(lb: Label, w: float, h: float, gap: float,
                        offs: tuple[float, ...] = (4.0, 6.0, 8.0, 11.0)) -> list[tuple[float, float]]:
     """Centres round the anchor (a point, or the middle of a vector: across it first) for a label
@@ -202,7 +263,7 @@ def _own(box, p, others: list, margin: float) -> bool:
 
 
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
-           lines: "_Segments | list | None" = None, others: list | None = None):
+           lines: "_Segments | list | None" = None, others: list | None = None, rivals: list | None = None):
     """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
     scene's middle first, nearest first, and nearer to it than to any of the ``others``), or
     beside the middle of a vector on either side; where every such box hits one, farther out on a
@@ -245,6 +306,8 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 continue
             if point and not leader and others and not _own(box, lb.at, others, 0.75 * gap):
                 continue
+            if not point and not leader and rivals and not _own_vector(box, lb.along, rivals, 0.75 * gap):
+                continue
             hits = lines.crossings(box) if isinstance(lines, _Segments) else \
                 sum(1 for s in (lines or ()) if _near(s, box) and _crosses(box, s))
             if hits == 0:
@@ -278,11 +341,26 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     boxes: list = []
     lines = _Segments(_lines(scene))
     others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
+    rivals = [lb.along for lb in scene.labels if lb.role == "vector" and lb.along is not None] \
+        if scene.name.startswith(OWN_VECTOR_SCENES) else []
+    fixed = sorted((i for i, lb in enumerate(scene.labels) if lb.role in FIXED_ROLES),
+                   key=lambda i: scene.labels[i].at[1])
+    for i in fixed:          # the fixed ones first, the lowest first, each moved up clear of those below
+        lb = scene.labels[i]
+        w, hh = sizes[i] if sizes is not None and i in sizes else _text_size(fixed_text(lb, scene), h)
+        c = (lb.at[0], lb.at[1])
+        b = (c[0] - w / 2, c[1] - hh / 2, c[0] + w / 2, c[1] + hh / 2)
+        while _boxes_hit(b, boxes):
+            top = max(o[3] for o in boxes if not (b[2] <= o[0] or o[2] <= b[0] or b[3] <= o[1] or o[3] <= b[1]))
+            c = (c[0], top + hh / 2 + gap / 2)
+            b = (c[0] - w / 2, c[1] - hh / 2, c[0] + w / 2, c[1] + hh / 2)
+        boxes.append(b)
+        out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, 0.0, False)))
     for i, lb in enumerate(scene.labels):
-        if lb.role not in roles:
+        if lb.role not in roles or lb.role in FIXED_ROLES:
             continue
         size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
-        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others)
+        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others, rivals)
         boxes.append(b)
         out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), leader)))
     return out
@@ -344,6 +422,9 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
                                     facecolor=colour, edgecolor=colour, lw=0.3, zorder=3))
     texts = {}
     for lb, c, _pl in labels:
+        if lb.role in FIXED_ROLES:
+            texts[id(lb)] = ax.text(c[0], c[1], fixed_text(lb, scene), fontsize=LABEL_PT, ha="center", va="center", zorder=6)
+            continue
         t = ax.text(c[0], c[1], _mathtext(lb.text), fontsize=LABEL_PT, ha="center", va="center",
                     style="italic" if lb.role == "point" else "normal",
                     color="tab:blue" if lb.role == "number" else "black", zorder=6)

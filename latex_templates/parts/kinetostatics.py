@@ -129,6 +129,21 @@ def _polygon_rows(polygon) -> list[list]:
     return rows
 
 
+def _details(polygon) -> list:
+    """A sentence for each enlarged detail of the polygon's figure
+    (:func:`reportgen.scenes.forces.polygon_details`): which vectors it shows, at which ratio and μF."""
+    from reportgen.scenes.forces import LEGIBLE_MM, polygon_details
+    from . import decimal_mark
+    letters = str(active().raw("polygons.letters"))
+    out = []
+    for d in polygon_details(polygon):
+        names = [Tex(f"${sym(n)}$") for n in d.names]
+        key = "polygons.detail" if len(names) > 1 else "polygons.detail_one"
+        out.append(tr(key, names=Tex(", ".join(names)), mm=f"{LEGIBLE_MM:g}", letter=letters[d.index % len(letters)],
+                      ratio=d.ratio_text.replace(",", decimal_mark()), mu=d.scale))
+    return out
+
+
 def _read_mm(polygon, v) -> float:
     """The length of a vector as the replica read it off the polygon, mm (read value / μF)."""
     return round(v.read_value / polygon.scale, 6)
@@ -214,7 +229,7 @@ def content(project) -> PartContent:
                 read_mags[c] = v.read_value
         groups_ctx.append({"key": gg.key, "tag": tag, "label": grp.label, "kind": gg.kind, "links": grp.links,
                            "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
-                           "rows": _polygon_rows(gg.polygon), "reads": reads,
+                           "rows": _polygon_rows(gg.polygon), "reads": reads, "details": _details(gg.polygon),
                            "unknown": [Tex(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
                            "mu_tr": ks.transmission_deg.get(gg.key), "slot": slot})
     if control:
@@ -457,6 +472,7 @@ def _crank(ks, read_mags, counter, mu_l, figures, body) -> dict:
     return {"F": F, "M": M, "parts": parts, "through": [Tex(f"${sym(x)}$") for x in through],
             "balance": sol,
             "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
+            "details": _details(c.polygon),
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
             "pin_forces": [Tex(f"${sym(f.name)}$") for f in body.forces if f.role == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),

@@ -3,7 +3,14 @@ replica's μv (mm), every load at the image of its point at one round force scal
 than ``MIN_ARROW_MM`` drawn at that length), the balancing force F_ур at the image of the crank pin
 (found from the lever), each force named beside its own arrow, and the arm of each force with a
 non-zero arm (from the pole square to the force's line) named h1, h2, … in the order of the terms
-(or by ``arm_names``)."""
+(or by ``arm_names``).
+
+Only a force's line of action and sense count on the lever (its moment about the pole), so an arrow
+may pull its point (tail at the point) or push it (head at the point), as statics draws either.
+Where several forces act at one point or near one another (the slider's and the coupler's images
+lie close together at the top of many plans) each arrow, the largest first, takes the way that
+lies over fewer of the lines already drawn (:func:`_crowding`): the arrows fan out round the
+crowded point instead of lying over each other, and their names find room beside them."""
 from __future__ import annotations
 
 import numpy as np
@@ -17,6 +24,43 @@ from ..tolerances import ABS_ZERO, MM_ROUNDOFF
 #: The lever's loads: the largest drawn this long (mm), none shorter than MIN_ARROW_MM.
 LEVER_ARROW_MM = 40.0
 MIN_ARROW_MM = 7.0
+
+
+#: Lines nearer than this (mm) to an arrow count as lying over it; points nearer than this to it as
+#: crowding it (:func:`_crowding`).
+CROWD_MM = 3.0
+
+
+#: Lying over another arrow hides its head and its name: it counts this many times as much as lying
+#: over the lever's contour (:func:`_crowding`).
+ARROW_WEIGHT = 3.0
+
+
+def _crowding(way, own: np.ndarray, drawn: list, points: list) -> tuple[float, float]:
+    """How much the arrow ``way`` (tail, head; mm) lies over what is drawn: the length of it within
+    CROWD_MM of the lines ``drawn`` ((tail, head, weight): the contour 1, an arrow
+    :data:`ARROW_WEIGHT`; sampled along it, the heaviest line at each sample), then the number of
+    other image points (``points``, its own point ``own`` left out) within CROWD_MM of it. The
+    pulling way wins a tie."""
+    a, b = way
+    n = 16
+    over = 0.0
+    step = float(np.hypot(*(b - a))) / n
+    for k in range(n + 1):
+        q = a + (b - a) * k / n
+        if float(np.hypot(*(q - own))) < CROWD_MM:
+            continue
+        over += step * max([w for s0, s1, w in drawn if _seg_dist(q, s0, s1) < CROWD_MM] + [0.0])
+    near = sum(1 for p in points if float(np.hypot(*(p - own))) > CROWD_MM and _seg_dist(p, a, b) < CROWD_MM)
+    return (round(over, 6), float(near))
+
+
+def _seg_dist(x: np.ndarray, s0: np.ndarray, s1: np.ndarray) -> float:
+    """Distance from the point ``x`` to the segment s0–s1 (mm)."""
+    d = s1 - s0
+    m = float(d @ d)
+    t = 0.0 if m == 0.0 else min(1.0, max(0.0, float((x - s0) @ d) / m))
+    return float(np.hypot(*(x - s0 - t * d)))
 
 
 def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: float | None = None) -> Scene:
@@ -47,13 +91,27 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
     mu_f = round_scale(max([float(np.hypot(*v)) for _, _, v, _, _ in loads] + [ABS_ZERO]), LEVER_ARROW_MM, FORCE_SERIES)
     labels: list[Label] = []
     n_arm = 0
-    for name, img, v, arm, style in loads:
+    drawn = [(np.asarray(e.a, float), np.asarray(e.b, float), 1.0) for e in ents if isinstance(e, Segment)
+             and e.kind == "contour"]
+    others = [np.asarray(p, float) for p in points.values()] + [np.zeros(2)]
+    order = sorted(range(len(loads)), key=lambda i: -float(np.hypot(*loads[i][2])))
+    ways: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+    for i in order:
+        name, img, v, arm, style = loads[i]
+        mag = float(np.hypot(*v))
+        if mag <= 0:
+            continue
+        d = v / mag * max(mag / mu_f, MIN_ARROW_MM)
+        pull, push = (img, img + d), (img - d, img)
+        way = min((pull, push), key=lambda w: _crowding(w, img, drawn, others))
+        ways[i] = way
+        drawn.append((way[0], way[1], ARROW_WEIGHT))
+    for i, (name, img, v, arm, style) in enumerate(loads):
         mag = float(np.hypot(*v))
         if mag <= 0:
             continue
         u = v / mag
-        end = img + u * max(mag / mu_f, MIN_ARROW_MM)
-        a, b = _pt(img), _pt(end)
+        a, b = _pt(ways[i][0]), _pt(ways[i][1])
         ents.append(Arrow(f"force:{name}", a, b, style))
         labels.append(Label(force_tex(name), f"force:{name}", ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2),
                             "vector", (a, b)))

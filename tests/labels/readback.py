@@ -16,7 +16,7 @@ import math
 from dataclasses import dataclass
 
 from shapely import affinity
-from shapely.geometry import Point, Polygon, box
+from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from drawings import style
@@ -108,10 +108,17 @@ class Found:
             (f" ({self.mm:.1f} mm)" if self.mm else "")
 
 
-def check_sheet(doc, records, near_mm: float) -> list[Found]:
+#: Views whose vectors' names are checked against the other named vectors (force polygons and their
+#: details, Zhukovsky's lever: issue 12); the groups' views and the plans are to follow.
+VECTOR_VIEWS = ("polygon ", "lever")
+
+
+def check_sheet(doc, records, near_mm: float, vector_views: tuple[str, ...] = VECTOR_VIEWS) -> list[Found]:
     """Labels on a sheet read back from its DXF ``doc``: no two texts overlap (the texts of one label
     — a base and its indices — count as one), each recorded label is within ``near_mm`` of what it
-    names and no other point labelled in the same view is nearer to it than its own."""
+    names, no other point labelled in the same view is nearer to it than its own and, in the views
+    named ``vector_views…``, no other named vector (not lying along its own) is nearer to a vector's
+    name than its own vector."""
     texts = sheet_texts(doc)
     by_handle = {t.handle: t for t in texts}
     owner: dict[str, int] = {}
@@ -133,9 +140,12 @@ def check_sheet(doc, records, near_mm: float) -> list[Found]:
                 continue
             found.append(Found("texts overlap", t.text, u.text))
     points = {}
+    lines: dict = {}
     for k, r in enumerate(records):
         if isinstance(r.anchor, Point):
             points.setdefault(r.view, []).append((k, r.anchor))
+        elif isinstance(r.anchor, LineString):
+            lines.setdefault(r.view, []).append((k, r.anchor))
     for k, r in enumerate(records):
         boxes = [by_handle[h].box for h in r.handles if h in by_handle]
         if not boxes:
@@ -151,7 +161,37 @@ def check_sheet(doc, records, near_mm: float) -> list[Found]:
                     found.append(Found(f"label nearer to another labelled point (view {r.view})", r.text,
                                        records[j].text, d))
                     break
+        elif isinstance(r.anchor, LineString) and str(r.view).startswith(vector_views):
+            other = _nearer_vector(shape, r.anchor, d, [(records[j].text, q) for j, q in lines.get(r.view, ()) if j != k])
+            if other is not None:
+                found.append(Found(f"vector's name nearer to another named vector (view {r.view})", r.text, other, d))
     return found
+
+
+def _nearer_vector(shape, own, d: float, others) -> str | None:
+    """The name of a vector (``others``: (name, line)) nearer to the label ``shape`` than its own
+    vector ``own`` at distance ``d`` — by more than half a millimetre, and not one lying along its
+    own (two vectors drawn on one line share their names' room: the first name beside them is as
+    near to both). A leader belongs to its label: a label on a leader (``own`` has more than two
+    points, the leader's foot first) is measured along the leader."""
+    for text, q in others:
+        if q.equals(own):
+            continue
+        if shape.distance(q) + 0.5 < d and not _collinear(own, q):
+            return text
+    return None
+
+
+def _collinear(a, b) -> bool:
+    """Do the last segments of ``a`` and ``b`` (the vectors) lie on one line, overlapping?"""
+    (ax, ay), (bx, by) = list(a.coords)[-2:]
+    (cx, cy), (dx, dy) = list(b.coords)[-2:]
+    ux, uy = bx - ax, by - ay
+    n = math.hypot(ux, uy)
+    if n == 0:
+        return False
+    off = max(abs((cx - ax) * uy - (cy - ay) * ux), abs((dx - ax) * uy - (dy - ay) * ux)) / n
+    return off < 0.5 and a.distance(b) < 0.5
 
 
 # -- note figures -------------------------------------------------------------------------------
@@ -167,7 +207,6 @@ class FigureText:
 def figure_texts(fig) -> list[FigureText]:
     """Every visible, non-empty text of ``fig`` (its axes' texts and annotations, the figure's own)
     with its window extent in mm and what it names (figure mm), if known."""
-    from shapely.geometry import LineString
     renderer = fig.canvas.get_renderer()
     k = 25.4 / fig.dpi
     out = []
@@ -202,9 +241,11 @@ def figure_texts(fig) -> list[FigureText]:
     return out
 
 
-def check_figure(fig, near_mm: float) -> list[Found]:
+def check_figure(fig, near_mm: float, vectors: bool = False) -> list[Found]:
     """No two texts of a note figure overlap; each text that names something is within ``near_mm``
-    of it (figure mm) and no other named point is nearer to it than its own."""
+    of it (figure mm) and no other named point is nearer to it than its own; with ``vectors`` (the
+    force polygons and the lever: issue 12), no other named vector (not lying along it) is nearer to
+    a vector's name than its own vector. A name on a leader names the leader and its vector."""
     found: list[Found] = [Found("label not drawn (what it names is outside the axes)", t.text)
                           for t in figure_texts(fig) if not t.drawn]
     texts = [t for t in figure_texts(fig) if t.drawn]
@@ -224,4 +265,10 @@ def check_figure(fig, near_mm: float) -> list[Found]:
                 if j != i and q.distance(t.names) > 0.5 and t.box.distance(q) + 0.5 < d:
                     found.append(Found("label nearer to another labelled point", t.text, texts[j].text, d))
                     break
+        elif vectors and isinstance(t.names, LineString) and len(t.names.coords) == 2:
+            other = _nearer_vector(t.box, t.names, d, [(u.text, u.names) for j, u in enumerate(texts) if j != i
+                                                       and isinstance(u.names, LineString)
+                                                       and len(u.names.coords) == 2])
+            if other is not None:
+                found.append(Found("vector's name nearer to another named vector", t.text, other, d))
     return found

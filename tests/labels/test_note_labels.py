@@ -16,6 +16,9 @@ from .notefigs import GROUPS, group_of, note_figures
 from .readback import check_figure
 
 _FIGURES: dict[str, dict] = {}
+#: Figures whose vectors' names are checked against the other named vectors (issue 12: the force
+#: polygons and Zhukovsky's lever); the plans are to follow.
+VECTOR_FIGURES = ("kst_poly", "kst_lever")
 
 
 def _figures(name: str) -> dict:
@@ -36,7 +39,8 @@ def test_note_figure_labels(example, group):
     figs = {k: f for k, f in _figures(example).items() if group_of(k) == group}
     if not figs:
         pytest.skip(f"the note of {example} has no figures of group {group}")
-    found = [f"{k}: {x}" for k, fig in sorted(figs.items()) for x in check_figure(fig, LABEL_NEAR_MM)]
+    found = [f"{k}: {x}" for k, fig in sorted(figs.items())
+             for x in check_figure(fig, LABEL_NEAR_MM, vectors=any(v in k for v in VECTOR_FIGURES))]
     assert not found, "\n".join(found)
 
 
