@@ -65,6 +65,7 @@ SLOW_TESTS = (
     "tests/crane/test_note_and_sheets.py::test_build_writes_note_sheets_and_results",
     "tests/bad_input/test_bad_input.py::test_latex_special_characters_print_literally",
     "tests/kinetostatics/test_position_and_cli.py::test_cli_shaper_force_at_45",
+    "tests/scenes/test_polygons_legible.py::test_detail_letters_are_not_repeated_on_sheet_2",
 )
 
 

@@ -139,11 +139,11 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
     return Panel(name, w, h, paint)
 
 
-def polygon_panel(name: str, title: str, polygon) -> Panel:
+def polygon_panel(name: str, title: str, polygon, first: int = 0) -> Panel:
     """A force polygon's scene (:func:`reportgen.scenes.forces.polygon_scene`): head to tail at its
     scale (mm), the diagonals read off it dashed, each name beside its own vector (a short vector's
-    name on a leader)."""
-    scene = polygon_scene(polygon)
+    name on a leader); its details indexed from ``first``."""
+    scene = polygon_scene(polygon, first=first)
     x0, y0, x1, y1 = scene.bounds()
     lo, hi = np.array([x0, y0]), np.array([x1, y1])
     w = max(hi[0] - lo[0] + 2 * POLY_PAD_MM, 90.0)

@@ -9,6 +9,7 @@ import numpy as np
 from drawings.primitives import format_number, ratio_label
 from drawings.sheet import Sheet
 from reportgen.kinetostatics.graphical import round_scale
+from reportgen.scenes.forces import first_detail_indices
 from reportgen.project import Project
 from reportgen.tolerances import MM_EPS
 from ..words import designation, tr
@@ -156,9 +157,10 @@ def draw(project: Project, number: int, count: int) -> Sheet:
                                    tr("sheets.sk207") if fb.key == "crank" else tr("sheets.sk208", v1=by_key[fb.key].label),
                                    fb.scene) for fb in fbs]
 
-    polygons = [kv.polygon_panel(f"polygon {gg.key}", tr("sheets.sk205", v1=by_key[gg.key].label), gg.polygon)
-                for gg in g.groups]
-    polygons.append(kv.polygon_panel("polygon crank", tr("sheets.sk206"), g.crank.polygon))
+    firsts = first_detail_indices([gg.polygon for gg in g.groups] + [g.crank.polygon])
+    polygons = [kv.polygon_panel(f"polygon {gg.key}", tr("sheets.sk205", v1=by_key[gg.key].label), gg.polygon, first)
+                for gg, first in zip(g.groups, firsts)]
+    polygons.append(kv.polygon_panel("polygon crank", tr("sheets.sk206"), g.crank.polygon, firsts[-1]))
     lever = lever_panel_of(project)
     kin = ks.reactions.kin
 

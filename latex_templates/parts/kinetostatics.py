@@ -129,14 +129,14 @@ def _polygon_rows(polygon) -> list[list]:
     return rows
 
 
-def _details(polygon) -> list:
+def _details(polygon, first: int) -> list:
     """A sentence for each enlarged detail of the polygon's figure
     (:func:`reportgen.scenes.forces.polygon_details`): which vectors it shows, at which ratio and μF."""
     from reportgen.scenes.forces import LEGIBLE_MM, polygon_details
     from . import decimal_mark
     letters = str(active().raw("polygons.letters"))
     out = []
-    for d in polygon_details(polygon):
+    for d in polygon_details(polygon, first=first):
         names = [Tex(f"${sym(n)}$") for n in d.names]
         key = "polygons.detail" if len(names) > 1 else "polygons.detail_one"
         out.append(tr(key, names=Tex(", ".join(names)), mm=f"{LEGIBLE_MM:g}", letter=letters[d.index % len(letters)],
@@ -177,7 +177,7 @@ def _read_records(polygon, mu_f: Var) -> list[CalcRecord]:
 # -- the part --------------------------------------------------------------------------------------
 
 def content(project) -> PartContent:
-    from reportgen.scenes.forces import polygon_scene
+    from reportgen.scenes.forces import first_detail_indices, polygon_scene
     from ..figures.kinetostatics import free_body_figure
     from ..figures.scene import scene_figure
     from .kinematics import scene_caption
@@ -196,12 +196,14 @@ def content(project) -> PartContent:
     read_mags: dict[str, float] = {}
     groups_ctx = []
     by_key = {gr.key: gr for gr in st.groups}
+    # the polygons' details are lettered through the work, in sheet 2's order (ГОСТ 2.305 §6)
+    firsts = dict(zip((gg.key for gg in g.groups), first_detail_indices([gg.polygon for gg in g.groups])))
     control = project.task.document.kind == "control-work"   # the lever only: no reactions (manual §7)
     for gg in (() if control else g.groups):
         grp = by_key[gg.key]
         tag = gg.key.replace("-", "_")
         figures[f"kst_group_{tag}"] = free_body_figure(bodies[gg.key].scene)
-        figures[f"kst_poly_{tag}"] = scene_figure(polygon_scene(gg.polygon))
+        figures[f"kst_poly_{tag}"] = scene_figure(polygon_scene(gg.polygon, first=firsts[gg.key]))
         mu_f = Var("mu_F", r"\mu_F", gg.polygon.scale, "Н/мм", tr("kinetostatics.m23"))
         splits = []
         for sp in gg.splits:
@@ -229,7 +231,7 @@ def content(project) -> PartContent:
                 read_mags[c] = v.read_value
         groups_ctx.append({"key": gg.key, "tag": tag, "label": grp.label, "kind": gg.kind, "links": grp.links,
                            "method": gg.method, "splits": splits, "mu_f": mu_f, "equation": _equation(gg.polygon.equation),
-                           "rows": _polygon_rows(gg.polygon), "reads": reads, "details": _details(gg.polygon),
+                           "rows": _polygon_rows(gg.polygon), "reads": reads, "details": _details(gg.polygon, firsts[gg.key]),
                            "unknown": [Tex(f"${sym(v.name)}$") for v in gg.polygon.vectors if not v.known],
                            "mu_tr": ks.transmission_deg.get(gg.key), "slot": slot})
     if control:
@@ -445,14 +447,16 @@ def _loads_on(ks, links, repl, arrows, couples) -> None:
 def _crank(ks, read_mags, counter, mu_l, figures, body) -> dict:
     """The crank's step: its diagram (``body``, the scene sheet 2 draws), F_ур from ΣM about the
     axis, M_ур, the polygon and the frame's reaction read off it."""
-    from reportgen.scenes.forces import polygon_scene
+    from reportgen.scenes.forces import first_detail_indices, polygon_scene
     from ..figures.kinetostatics import free_body_figure
     from ..figures.scene import scene_figure
     r, c = ks.reactions, ks.graphical.crank
     d = r.crank
     fp = next(p for p in r.pairs if p.group == str(d))
     figures["kst_crank"] = free_body_figure(body.scene)
-    figures["kst_poly_crank"] = scene_figure(polygon_scene(c.polygon))
+    # the details are lettered through the work: the crank's come after the groups' (sheet 2 likewise)
+    first = first_detail_indices([gg.polygon for gg in ks.graphical.groups] + [c.polygon])[-1]
+    figures["kst_poly_crank"] = scene_figure(polygon_scene(c.polygon, first=first))
     arms: list = []
     terms, extra, through = _arm_terms(c.terms, read_mags, r.crank_axis, counter, arms)
     OA = Var("l", f"{r.crank_axis}{r.crank_pin}", c.length_mm_measured, "мм",
@@ -472,7 +476,7 @@ def _crank(ks, read_mags, counter, mu_l, figures, body) -> dict:
     return {"F": F, "M": M, "parts": parts, "through": [Tex(f"${sym(x)}$") for x in through],
             "balance": sol,
             "equation": _equation(c.polygon.equation), "rows": _polygon_rows(c.polygon), "mu_f": mu_f,
-            "details": _details(c.polygon),
+            "details": _details(c.polygon, first),
             "reads": _read_records(c.polygon, mu_f), "exact_F": c.balancing_force, "axis": r.crank_axis,
             "pin": r.crank_pin, "link": d,
             "pin_forces": [Tex(f"${sym(f.name)}$") for f in body.forces if f.role == "known"], "R0": pair_name(0, d), "exact_R0": float(np.hypot(*fp.on(d)[0])),

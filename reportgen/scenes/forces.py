@@ -141,8 +141,10 @@ def detail_ratio(scale: float, shortest_mm: float, diameter_mm: float) -> float:
     return legible[0] if legible else fit[-1]
 
 
-def polygon_details(polygon, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> tuple[PolygonDetail, ...]:
-    """The enlarged details of a force polygon: one per group of vectors shorter than
+def polygon_details(polygon, box: tuple[float, float] = DEFAULT_BOXES.polygon,
+                    first: int = 0) -> tuple[PolygonDetail, ...]:
+    """The enlarged details of a force polygon, indexed from ``first`` (the details of one work are
+    lettered through all its polygons, ГОСТ 2.305 §6: :func:`first_detail_indices`): one per group of vectors shorter than
     :data:`LEGIBLE_MM` lying within :data:`DETAIL_JOIN_MM` of each other, placed outside the
     polygon's bounding box on the side that keeps the drawing best within ``box`` (turned to lie
     along the polygon's longer side: the room the sheet gives a polygon), then the one that enlarges
@@ -171,7 +173,7 @@ def polygon_details(polygon, box: tuple[float, float] = DEFAULT_BOXES.polygon) -
         taken.append((at[0] - R, at[1] - R, at[0] + R, at[1] + R + DETAIL_TITLE_MM))
         lo = np.minimum(lo, [at[0] - R, at[1] - R])
         hi = np.maximum(hi, [at[0] + R, at[1] + R + DETAIL_TITLE_MM])
-        out.append(PolygonDetail(n, k, float(f"{polygon.scale / k:.12g}"), tuple(sides[j][0] for j in g),
+        out.append(PolygonDetail(first + n, k, float(f"{polygon.scale / k:.12g}"), tuple(sides[j][0] for j in g),
                                  _pt(c), r, _pt(at)))
     return tuple(out)
 
@@ -267,13 +269,24 @@ def _detail_entities(det: PolygonDetail, sides) -> tuple[list[Entity], list[Labe
     return ents, labels
 
 
-def polygon_scene(polygon, name: str | None = None) -> Scene:
+def first_detail_indices(polygons) -> list[int]:
+    """The index of each polygon's first detail, the polygons in the order the work shows them (the
+    note's section 2 and sheet 2: the groups as solved, then the crank): a detail's letter (А, Б, …)
+    is not repeated on one sheet (ГОСТ 2.305 §6), so the details are numbered through the work."""
+    out, n = [], 0
+    for polygon in polygons:
+        out.append(n)
+        n += len(polygon_details(polygon))
+    return out
+
+
+def polygon_scene(polygon, name: str | None = None, first: int = 0) -> Scene:
     """The scene of a :class:`reportgen.kinetostatics.graphical.ForcePolygon` with its details
-    (:func:`polygon_details`)."""
+    (:func:`polygon_details`, indexed from ``first``)."""
     ents: list[Entity] = []
     labels: list[Label] = []
     values: dict[str, float] = {}
-    details = polygon_details(polygon)
+    details = polygon_details(polygon, first=first)
     in_detail = {n for d in details for n in d.names}
     for v in polygon.vectors:
         a, e = _pt(v.start_mm), _pt(v.end_mm)

@@ -209,3 +209,30 @@ def test_sheet_names_the_balancing_force_on_the_lever(example):
     lines = named[0].geoms if named[0].geom_type == "MultiLineString" else [named[0]]
     ends = [c for ln in lines for c in (ln.coords[0], ln.coords[-1])]
     assert min(math.dist(c, at[0].coords[0]) for c in ends) < 1e-6
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("example", ("press", "shaper-uk", "conveyor", "class3"))
+def test_detail_letters_are_not_repeated_on_sheet_2(example, tmp_path):
+    """A detail's letter names one detail of the sheet (ГОСТ 2.305 §6: А, Б, … through the sheet),
+    so the polygons' details are lettered through the work, not from А in every polygon: the
+    headings «А (5:1)» read back from sheet 2's DXF are all different, and the note's figures carry
+    the same letters (the same first index, :func:`first_detail_indices`)."""
+    import re
+
+    import ezdxf
+
+    from drawings.sheets import kinetostatics as sheet2
+    project = _project(example)
+    polygons = _polygons(project)
+    count = sum(len(polygon_details(p)) for p in polygons)
+    sheet2.draw(project, 2, 4).save(tmp_path / "s2.dxf")
+    texts = [e.dxf.text for e in ezdxf.readfile(tmp_path / "s2.dxf").modelspace().query("TEXT MTEXT")
+             if e.dxftype() == "TEXT"]
+    headings = [t.split(" ", 1)[0] for t in texts if re.fullmatch(r"\w \(\d+(,\d+)?:1\)", t)]
+    assert len(headings) == count
+    assert len(set(headings)) == len(headings), headings
+    from reportgen.scenes.forces import first_detail_indices
+    firsts = first_detail_indices(polygons)
+    indices = [d.index for p, f in zip(polygons, firsts) for d in polygon_details(p, first=f)]
+    assert indices == list(range(count))
