@@ -66,6 +66,16 @@ SLOW_TESTS = (
     "tests/bad_input/test_bad_input.py::test_latex_special_characters_print_literally",
     "tests/kinetostatics/test_position_and_cli.py::test_cli_shaper_force_at_45",
     "tests/scenes/test_polygons_legible.py::test_detail_letters_are_not_repeated_on_sheet_2",
+    "tests/sheet1/test_plan_positions_sheet.py::test_default_two_plan_positions_one_per_stroke",
+    "tests/sheet1/test_plan_positions_sheet.py::test_note_has_both_velocity_and_acceleration_plans",
+    "tests/sheet1/test_plan_positions_sheet.py::test_sheet_draws_both_plans_of_every_plan_position",
+    "tests/sheet1/test_plan_positions_sheet.py::test_scale_table_one_row_per_scale_with_the_notes_values",
+    "tests/sheet1/test_plan_positions_sheet.py::test_note_prints_each_plan_scale",
+    "tests/sheet1/test_plan_positions_sheet.py::test_small_plans_letters_legible_apart_and_at_their_points",
+    "tests/sheet1/test_sheet1_kinematics.py::test_same_input_same_bytes",
+    "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_geometry_same_in_note_and_sheet",
+    "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_caption_and_ab_from_the_scene",
+    "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_note_designations_legible_and_clear",
 )
 
 
