@@ -16,6 +16,11 @@ What, each under a key that is a SHA-256 of everything the entry depends on:
   always drawn again (cheap), its preview only when its DXF changed.
 - ``tex/<key>/``: LaTeX's auxiliary files of the last build of a task file (key = its absolute
   path): latexmk starts from them and runs only the passes the change needs (often one).
+- ``figures/<key>.pdf``: a note's figure drawn from a scene; key = the code + the figure's
+  content key (:func:`content_digest` of the scene, the renderer's options and the note's language,
+  made by ``latex_templates.figures.scene.scene_figure``). A hit copies the PDF instead of saving
+  the figure (the figure is still made: the note reads its size). The matplotlib plots have no key
+  and are always saved.
 - ``jinja/<key>.code``: the note's templates and catalogue snippets compiled by Jinja (key = the
   source, its name, the syntax options, the Jinja and Python versions; ``latex_templates.jinja_cache``).
 
@@ -31,7 +36,7 @@ from functools import lru_cache
 from pathlib import Path
 
 #: Newest entries kept of each kind.
-KEEP = {"builds": 12, "previews": 200, "tex": 12}
+KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400}
 #: Source files whose bytes make the code's fingerprint.
 _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
@@ -74,6 +79,58 @@ def code_fingerprint() -> str:
     return h.hexdigest()
 
 
+def content_digest(obj: object) -> str:
+    """SHA-256 of plain data — dataclasses, mappings, sequences, numbers, strings, numpy arrays —
+    by a canonical walk (type names, field names, float bits), the same in every process whatever
+    the hash seed; anything else is an error, so a key never rests on an object's ``repr``."""
+    h = hashlib.sha256()
+    _feed(h, obj)
+    return h.hexdigest()
+
+
+def _feed(h: "hashlib._Hash", obj: object) -> None:
+    import dataclasses
+    import struct
+
+    if obj is None or isinstance(obj, bool):
+        h.update(f"<{obj!r}>".encode())
+    elif isinstance(obj, int):
+        h.update(b"i%d;" % obj)
+    elif isinstance(obj, float):
+        h.update(b"f" + struct.pack("<d", obj))
+    elif isinstance(obj, str):
+        data = obj.encode()
+        h.update(b"s%d:" % len(data) + data)
+    elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        h.update(f"D{type(obj).__qualname__}(".encode())
+        for f in dataclasses.fields(obj):
+            h.update(f.name.encode() + b"=")
+            _feed(h, getattr(obj, f.name))
+        h.update(b")")
+    elif isinstance(obj, (tuple, list)):
+        h.update(b"T%d[" % len(obj))
+        for item in obj:
+            _feed(h, item)
+        h.update(b"]")
+    elif hasattr(obj, "keys") and hasattr(obj, "__getitem__"):
+        h.update(b"M%d{" % len(obj))           # insertion order: the scenes build their mappings in a fixed order
+        for k in obj.keys():
+            _feed(h, k)
+            _feed(h, obj[k])
+        h.update(b"}")
+    elif type(obj).__module__ == "numpy":
+        import numpy as np
+
+        a = np.ascontiguousarray(obj)
+        if a.dtype == object:
+            _feed(h, a.tolist())
+        else:
+            h.update(f"A{a.dtype.str}{a.shape}".encode())
+            h.update(a.tobytes())
+    else:
+        raise TypeError(f"content_digest: no canonical form for {type(obj).__name__}")
+
+
 def _digest(*parts: bytes | str) -> str:
     h = hashlib.sha256()
     for p in parts:
@@ -91,6 +148,8 @@ class BuildCache:
         self.code = code
         self.build_key = _digest("build", code, task_bytes, options)
         self.tex_key = _digest("tex", str(task_path))
+        self.figures_reused = 0     # figures copied from the cache in this build (the note's figures)
+        self.figures_saved = 0      # figures saved and stored in this build
 
     # -- whole builds ------------------------------------------------------------------------
     def restore_build(self, tmp: Path) -> bool:
@@ -149,6 +208,37 @@ class BuildCache:
         except OSError:
             return
         _prune(dst.parent, KEEP["previews"])
+
+    # -- the note's figures --------------------------------------------------------------------
+    def _figure_path(self, key: str) -> Path:
+        return self.root / "figures" / (_digest("figure", self.code, key) + ".pdf")
+
+    def restore_figure(self, key: str, target: Path) -> bool:
+        """Copy the PDF of the figure with content key ``key`` to ``target``; False when none."""
+        src = self._figure_path(key)
+        part = target.with_name(f".{target.name}.part")
+        try:
+            shutil.copyfile(src, part)
+            os.replace(part, target)
+        except OSError:
+            part.unlink(missing_ok=True)
+            return False
+        _touch(src)
+        self.figures_reused += 1
+        return True
+
+    def store_figure(self, key: str, target: Path) -> None:
+        dst = self._figure_path(key)
+        try:
+            dst.parent.mkdir(parents=True, exist_ok=True)
+            fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
+            os.close(fd)
+            shutil.copyfile(target, part)
+            os.replace(part, dst)
+        except OSError:
+            return
+        self.figures_saved += 1
+        _prune(dst.parent, KEEP["figures"])
 
     # -- helpers -------------------------------------------------------------------------------
     def _store_dir(self, kind: str, key: str, src: Path, replace: bool = False) -> None:

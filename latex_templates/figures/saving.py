@@ -74,6 +74,20 @@ def page_size_pt(fig: Any, box: Any = None) -> tuple[float, float]:
     return float(w) * 72.0, float(h) * 72.0
 
 
+def mark_content(fig: Any) -> None:
+    """Note that ``fig`` is now whole as its ``reportgen_key`` describes it (:func:`content_key`)."""
+    fig.reportgen_artists = len(fig.findobj())
+
+
+def content_key(fig: Any) -> str | None:
+    """The figure's content key (a scene figure's, :func:`latex_templates.figures.scene.figure_key`),
+    or None: a figure without one, or one that had artists added after it was keyed."""
+    key = getattr(fig, "reportgen_key", None)
+    if key is None or len(fig.findobj()) != getattr(fig, "reportgen_artists", -1):
+        return None
+    return key
+
+
 def _release(fig: Any) -> None:
     """Let pyplot forget a figure once it is saved (its memory is freed; saving again still works)."""
     plt = sys.modules.get("matplotlib.pyplot")
@@ -127,11 +141,28 @@ class FigureQueue:
             out[k].append((fig, target))
         return out
 
-    def save(self, *, fork: Callable[[Callable[[], Any]], Any] | None = None) -> None:
+    def save(self, *, fork: Callable[[Callable[[], Any]], Any] | None = None, cache: Any = None) -> None:
         """Save every queued figure. ``fork(work)``, when given, runs ``work`` in a second process
         and returns a handle whose ``join()`` waits for it (and re-raises its error): that process
-        saves one share while this one saves the other."""
+        saves one share while this one saves the other. ``cache`` (a
+        :class:`reportgen.cache.BuildCache`): a figure with a content key found there is copied
+        instead of saved, and each keyed figure saved is stored there."""
         items, self.items = self.items, []
+        keys = {id(fig): content_key(fig) for fig, _ in items} if cache is not None else {}
+        todo = []
+        for fig, target in items:
+            key = keys.get(id(fig))
+            if key and cache.restore_figure(key, target):
+                _release(fig)
+            else:
+                todo.append((fig, target))
+        self._save(todo, fork)
+        for fig, target in todo:
+            key = keys.get(id(fig))
+            if key and target.is_file():
+                cache.store_figure(key, target)
+
+    def _save(self, items: list[tuple[Any, Path]], fork: Any) -> None:
         boxes = self.boxes
         if fork is None or len(items) < 2:
             _save_all(items, boxes)

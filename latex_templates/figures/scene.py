@@ -25,6 +25,7 @@ from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..parts import active
 from . import new_figure
+from .saving import mark_content
 from .labels import names
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
@@ -463,4 +464,17 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
     fig.reportgen_reduction = r
     fig.width_cm = w_mm / 10.0
     fig.scene = scene
+    fig.reportgen_key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
+    mark_content(fig)
     return fig
+
+
+def figure_key(scene: Scene, **options) -> str:
+    """The content key of the figure of ``scene`` drawn with ``options``: the scene's data, the
+    options and the note's language (its catalogue and decimal mark; the code and the libraries'
+    versions are added by the build cache, :meth:`reportgen.cache.BuildCache.restore_figure`)."""
+    from reportgen.cache import content_digest
+
+    strings = active()
+    return content_digest(("scene_figure", scene, sorted(options.items()),
+                           strings.language, getattr(strings, "_overlay", None)))

@@ -104,6 +104,9 @@ def _build_into(tmp: Path, project: Project, progress: "Timeline", store, *, qui
     pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
     if store is not None:
         store.store_build(tmp)
+        if not quiet and (store.figures_reused or store.figures_saved):
+            print(f"  figures: {store.figures_reused} from the cache, {store.figures_saved} saved and kept",
+                  flush=True)
 
 
 def run(args: argparse.Namespace) -> int:

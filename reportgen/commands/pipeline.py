@@ -184,7 +184,7 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
         pending = _start_passes(tex)
     try:
         with timeline.stage("note: figures"):
-            figures.save(fork=_fork_figures if parallel_possible() else None)
+            figures.save(fork=_fork_figures if parallel_possible() else None, cache=cache)
     except BaseException:
         if pending is not None:
             pending.cancel()
