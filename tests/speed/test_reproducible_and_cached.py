@@ -4,6 +4,7 @@ byte, for an unchanged task and for a task with one changed number)."""
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -58,8 +59,9 @@ def builds(tmp_path_factory):
     build(PRESS, base / "plain", seed="1", cwd=ROOT, cache="off")
     out["plain"] = files(base / "plain")
     # a cold build that fills the cache, seed 4 (which orders sets of names unlike seed 1), from another folder
-    build(task, base / "cold", seed="4", cwd=work, cache=cache)
+    r = build(task, base / "cold", seed="4", cwd=work, cache=cache)
     out["cold"] = files(base / "cold")
+    out["cold_stdout"] = r.stdout
     # unchanged task: from the cache
     r = build(task, base / "warm", seed="3", cwd=base, cache=cache)
     out["warm"] = files(base / "warm")
@@ -71,6 +73,17 @@ def builds(tmp_path_factory):
     # … and uncached
     build(task, base / "changed-plain", seed="5", cwd=ROOT, cache="off")
     out["changed-plain"] = files(base / "changed-plain")
+    # the mass of link 5 (the slider) changed in a copy of the press task: cached, then uncached
+    mass = work / "mass" / "task.toml"
+    mass.parent.mkdir()
+    text = PRESS.read_text(encoding="utf-8")
+    assert text.count("mass = 45.0") == 1                # link 5's mass in examples/press/task.toml
+    mass.write_text(text.replace("mass = 45.0", "mass = 46.0"), encoding="utf-8")
+    r = build(mass, base / "mass-cached", seed="6", cwd=work, cache=cache)
+    out["mass-cached"] = files(base / "mass-cached")
+    out["mass_stdout"] = r.stdout
+    build(mass, base / "mass-plain", seed="7", cwd=ROOT, cache="off")
+    out["mass-plain"] = files(base / "mass-plain")
     out["cache"] = cache
     return out
 
@@ -92,5 +105,29 @@ def test_a_changed_number_rebuilt_with_the_cache_equals_an_uncached_build(builds
     assert builds["changed-cached"]["sheets/sheet1-kinematics.png"] == builds["plain"]["sheets/sheet1-kinematics.png"]
 
 
+def figures_line(stdout: str) -> tuple[int, int]:
+    """(reused, saved) from the build's line «figures: N from the cache, M saved and kept»."""
+    m = re.search(r"figures: (\d+) from the cache, (\d+) saved and kept", stdout)
+    assert m, f"no figures line in the build's output:\n{stdout}"
+    return int(m.group(1)), int(m.group(2))
+
+
+def test_a_changed_mass_reuses_the_figures_whose_scene_did_not_change(builds):
+    assert builds["mass-plain"]["results.json"] != builds["plain"]["results.json"]
+    assert_same(builds["mass-plain"], builds["mass-cached"])
+    _, keyed = figures_line(builds["cold_stdout"])            # the scene figures of the press
+    reused, saved = figures_line(builds["mass_stdout"])
+    # the mechanism's positions, velocity and acceleration plans (two positions) and the kinematic
+    # diagrams do not depend on a mass: their six scene figures come from the cache …
+    kinematics = [n for n in builds["mass-plain"] if n.startswith("figures/linkage-kin-")]
+    assert len(kinematics) == 6
+    assert all(builds["mass-plain"][n] == builds["plain"][n] for n in kinematics)
+    assert reused >= len(kinematics)
+    # … the force polygons and the lever do: those are saved again (and every figure is one or the other)
+    assert builds["mass-plain"]["figures/kinetostatics-kst-lever.pdf"] != builds["plain"]["figures/kinetostatics-kst-lever.pdf"]
+    assert saved >= 1
+    assert reused + saved == keyed
+
+
 def test_the_cache_holds_only_its_own_folders(builds):
-    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "jinja", "previews", "tex"]
+    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "figures", "jinja", "previews", "tex"]
