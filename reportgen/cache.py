@@ -223,14 +223,35 @@ class BuildCache:
         except OSError:
             part.unlink(missing_ok=True)
             return False
+        _touch(src.with_suffix(".json"))
         _touch(src)
         self.figures_reused += 1
         return True
 
-    def store_figure(self, key: str, target: Path) -> None:
+    def figure_sizes(self, key: str) -> dict[str, float] | None:
+        """The sizes kept with the figure of content key ``key`` (what the note reads of it), when
+        its PDF is kept too; else None."""
+        import json
+
+        pdf = self._figure_path(key)
+        try:
+            sizes = json.loads(pdf.with_suffix(".json").read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return None
+        return sizes if pdf.is_file() and isinstance(sizes, dict) else None
+
+    def store_figure(self, key: str, target: Path, sizes: dict[str, float] | None = None) -> None:
+        """Keep the saved PDF ``target`` under ``key`` (and ``sizes``, JSON: floats read back exactly)."""
+        import json
+
         dst = self._figure_path(key)
         try:
             dst.parent.mkdir(parents=True, exist_ok=True)
+            if sizes is not None:
+                fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
+                with os.fdopen(fd, "w", encoding="utf-8") as f:
+                    json.dump(sizes, f)
+                os.replace(part, dst.with_suffix(".json"))
             fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
             os.close(fd)
             shutil.copyfile(target, part)
@@ -238,7 +259,7 @@ class BuildCache:
         except OSError:
             return
         self.figures_saved += 1
-        _prune(dst.parent, KEEP["figures"])
+        _prune(dst.parent, 2 * KEEP["figures"])
 
     # -- helpers -------------------------------------------------------------------------------
     def _store_dir(self, kind: str, key: str, src: Path, replace: bool = False) -> None:

@@ -83,9 +83,57 @@ def content_key(fig: Any) -> str | None:
     """The figure's content key (a scene figure's, :func:`latex_templates.figures.scene.figure_key`),
     or None: a figure without one, or one that had artists added after it was keyed."""
     key = getattr(fig, "reportgen_key", None)
+    if isinstance(fig, KeptFigure):
+        return key
     if key is None or len(fig.findobj()) != getattr(fig, "reportgen_artists", -1):
         return None
     return key
+
+
+@dataclass
+class KeptFigure:
+    """Stands for a scene figure whose PDF the build cache keeps (:func:`kept_figure`): it carries
+    what the note reads of the figure (its sizes) and makes the real figure only when the kept
+    PDF cannot be copied after all (:meth:`make`)."""
+    reportgen_key: str
+    sizes: dict[str, float]
+    make: Callable[[], Any]
+    reportgen_exact: bool = True
+
+    @property
+    def width_cm(self) -> float:
+        return self.sizes["width_cm"]
+
+    @property
+    def reportgen_reduction(self) -> float:
+        return self.sizes["reduction"]
+
+    def get_size_inches(self) -> tuple[float, float]:
+        return self.sizes["width_in"], self.sizes["height_in"]
+
+    def get_figwidth(self) -> float:
+        return self.sizes["width_in"]
+
+    def get_figheight(self) -> float:
+        return self.sizes["height_in"]
+
+    def savefig(self, *args: Any, **kwargs: Any) -> None:
+        self.make().savefig(*args, **kwargs)
+
+
+def figure_sizes(fig: Any) -> dict[str, float]:
+    """What the note reads of a scene figure, kept beside its PDF in the build cache."""
+    w, h = fig.get_size_inches()
+    return {"width_cm": float(fig.width_cm), "reduction": float(fig.reportgen_reduction),
+            "width_in": float(w), "height_in": float(h)}
+
+
+def kept_figure(key: str, make: Callable[[], Any]) -> Any:
+    """A :class:`KeptFigure` when the build that queues the note's figures (:func:`queued`) has a
+    cache keeping the figure with content ``key``; else None (the caller makes the figure)."""
+    cache = _QUEUE.cache if _QUEUE is not None else None
+    sizes = cache.figure_sizes(key) if cache is not None else None
+    return KeptFigure(key, sizes, make) if sizes is not None else None
 
 
 def _release(fig: Any) -> None:
@@ -103,6 +151,7 @@ class FigureQueue:
     """Figures waiting to be saved, in the order the note placed them."""
     items: list[tuple[Any, Path]] = field(default_factory=list)
     boxes: dict[int, Any] = field(default_factory=dict)   # id(fig) → its measured tight box
+    cache: Any = None    # the build cache, whose kept scene figures stand in for made ones (kept_figure)
 
     def add(self, fig: Any, target: Path) -> None:
         self.items.append((fig, target))
@@ -155,12 +204,12 @@ class FigureQueue:
             if key and cache.restore_figure(key, target):
                 _release(fig)
             else:
-                todo.append((fig, target))
+                todo.append((fig.make() if isinstance(fig, KeptFigure) else fig, target))
         self._save(todo, fork)
         for fig, target in todo:
-            key = keys.get(id(fig))
+            key = content_key(fig) if cache is not None else None
             if key and target.is_file():
-                cache.store_figure(key, target)
+                cache.store_figure(key, target, figure_sizes(fig))
 
     def _save(self, items: list[tuple[Any, Path]], fork: Any) -> None:
         boxes = self.boxes
@@ -190,10 +239,11 @@ _QUEUE: FigureQueue | None = None
 
 
 @contextmanager
-def queued() -> Iterator[FigureQueue]:
-    """While open, :func:`place` queues figures instead of saving them; the caller saves the queue."""
+def queued(cache: Any = None) -> Iterator[FigureQueue]:
+    """While open, :func:`place` queues figures instead of saving them; the caller saves the queue
+    (with ``cache``, the build cache: scene figures it keeps are not made, :func:`kept_figure`)."""
     global _QUEUE
-    previous, _QUEUE = _QUEUE, FigureQueue()
+    previous, _QUEUE = _QUEUE, FigureQueue(cache=cache)
     try:
         yield _QUEUE
     finally:

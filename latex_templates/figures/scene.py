@@ -25,7 +25,7 @@ from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..parts import active
 from . import new_figure
-from .saving import mark_content
+from .saving import kept_figure, mark_content
 from .labels import names
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
@@ -369,7 +369,15 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
 
 def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float = TEXT_H_MM,
                  colours: bool = True, roles: tuple[str, ...] = ("point", "vector", "number")):
-    """The scene as a matplotlib figure at a true reduction (see the module's docstring)."""
+    """The scene as a matplotlib figure at a true reduction (see the module's docstring); inside a
+    build whose cache keeps this figure, a stand-in with its sizes (:func:`.saving.kept_figure`)."""
+    options = {"max_w_mm": max_w_mm, "max_h_mm": max_h_mm, "colours": colours, "roles": roles}
+    kept = kept_figure(figure_key(scene, **options), lambda: _make_scene_figure(scene, **options))
+    return kept if kept is not None else _make_scene_figure(scene, **options)
+
+
+def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colours: bool,
+                       roles: tuple[str, ...]):
     r = reduction_for(scene, max_w_mm, max_h_mm)
     for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
         labels = place_labels(scene, r, roles)

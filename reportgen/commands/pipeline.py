@@ -175,7 +175,7 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     are (:mod:`latex_templates.passes`); returned with report.tex, else None."""
     from latex_templates.figures.saving import queued
 
-    with queued() as figures:
+    with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline)
     pending = None
     if early and len(figures) and _cold_latex(tex, cache):

@@ -68,3 +68,34 @@ def test_the_cache_copies_a_kept_figure_and_counts_it(tmp_path):
     assert cache.restore_figure("k", target)
     assert target.read_bytes() == made.read_bytes()
     assert (cache.figures_saved, cache.figures_reused) == (1, 1)
+
+
+def test_a_kept_figure_is_not_made_and_is_made_when_its_pdf_is_gone(tmp_path):
+    from latex_templates.figures.saving import KeptFigure, queued
+    from latex_templates.figures.scene import scene_figure
+
+    cache = BuildCache(tmp_path / "cache", b"task", tmp_path / "task.toml", "options")
+    with queued(cache) as q:
+        made = scene_figure(scene())
+    assert not isinstance(made, KeptFigure)            # nothing kept yet: the figure is made
+    first = tmp_path / "first.pdf"
+    q.add(made, first)
+    q.save(cache=cache)
+    width, reduction = made.width_cm, made.reportgen_reduction
+    with queued(cache) as q:
+        kept = scene_figure(scene())
+    assert isinstance(kept, KeptFigure)
+    assert (kept.width_cm, kept.reportgen_reduction) == (width, reduction)   # exactly, as the note prints them
+    second = tmp_path / "second.pdf"
+    q.add(kept, second)
+    q.save(cache=cache)
+    assert second.read_bytes() == first.read_bytes() and cache.figures_reused == 1
+    # the kept PDF removed between the look-up and the save: the figure is made and saved after all
+    with queued(cache) as q:
+        kept = scene_figure(scene())
+    for pdf in (tmp_path / "cache" / "figures").glob("*.pdf"):
+        pdf.unlink()
+    third = tmp_path / "third.pdf"
+    q.add(kept, third)
+    q.save(cache=cache)
+    assert third.read_bytes() == first.read_bytes() and cache.figures_reused == 1
