@@ -228,6 +228,14 @@ def plan_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] |
     return out
 
 
+def apart_blocks(sizes: list[tuple[float, float]], names: list[tuple[str, str]] | None = None) -> list[Block]:
+    """Every plan in a block of its own: the last resort of :func:`arrange`, where no way of keeping
+    a position's two plans together fits the free field (a small sheet: the control work on A3)."""
+    names = names or _pair_names(sizes)
+    return [Block(n, *sizes[2 * k + m], ((n, 0.0, 0.0, *sizes[2 * k + m]),))
+            for k in range(len(sizes) // 2) for m, n in enumerate(names[k])]
+
+
 def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
     """Orders and preferred corners to try for ``blocks`` (the first block is the plans)."""
     corners = ("top-left", "bottom-left", "bottom-right")
@@ -249,12 +257,15 @@ def arrange(sheet: Sheet, plan_sizes: list[tuple[float, float]], small_of,
     """Find where the plans of the analysed position and the small plans go in the free field
     left by the scheme, the diagrams and the table: the small plans at the largest crank vector
     of ``SMALL_PLAN_MM`` that fits (else dropped); among the ways that fit, the one that leaves
-    the most room around every view; then the views are moved to share out the room."""
+    the most room around every view; then the views are moved to share out the room. A position's
+    two plans stay one block (:func:`plan_blocks`); only where no such way fits (a small sheet) is
+    every plan placed on its own (:func:`apart_blocks`), rather than refusing the sheet."""
     region = sheet.free_region
     placed = [v.rect for v in sheet.views.values()]
-    best = _best(region, placed, plan_blocks(plan_sizes, names), sheet.frame.width, small_of)
-    if best is not None:
-        return best
+    for options in (plan_blocks(plan_sizes, names), [apart_blocks(plan_sizes, names)]):
+        best = _best(region, placed, options, sheet.frame.width, small_of)
+        if best is not None:
+            return best
     raise BuildError("sheet layout", "the plans of the analysed position do not fit in the free field "
                                      "of the sheet; " + LAYOUT_LIMIT)
 
