@@ -128,7 +128,9 @@ def _feed(h: "hashlib._Hash", obj: object) -> None:
             h.update(f"A{a.dtype.str}{a.shape}".encode())
             h.update(a.tobytes())
     else:
-        raise TypeError(f"content_digest: no canonical form for {type(obj).__name__}")
+        from .errors import InternalError
+
+        raise InternalError("content_digest", f"no canonical form for {type(obj).__name__}")
 
 
 def _digest(*parts: bytes | str) -> str:

@@ -35,7 +35,9 @@ def test_the_digest_tells_every_field_apart():
 
 
 def test_the_digest_refuses_what_has_no_canonical_form():
-    with pytest.raises(TypeError, match="object"):
+    from reportgen.errors import InternalError
+
+    with pytest.raises(InternalError, match="object"):
         content_digest((1, object()))
 
 
