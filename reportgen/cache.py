@@ -34,6 +34,7 @@ import shutil
 import tempfile
 from functools import lru_cache
 from pathlib import Path
+from typing import Mapping
 
 #: Newest entries kept of each kind.
 KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400}
@@ -112,7 +113,7 @@ def _feed(h: "hashlib._Hash", obj: object) -> None:
         for item in obj:
             _feed(h, item)
         h.update(b"]")
-    elif hasattr(obj, "keys") and hasattr(obj, "__getitem__"):
+    elif isinstance(obj, Mapping):
         h.update(b"M%d{" % len(obj))           # insertion order: the scenes build their mappings in a fixed order
         for k in obj.keys():
             _feed(h, k)
