@@ -79,7 +79,7 @@ def _own_part(foot: np.ndarray, feet: list) -> np.ndarray:
     line (the weights' arms on the turned plan's axis) follow one another instead of bunching at p."""
     length = float(np.hypot(*foot))
     u = foot / length
-    ts = [float(f @ u) for f in feet if 0.0 < float(f @ u) < length - CROWD_MM and _seg_dist(f, np.zeros(2), foot) < CROWD_MM]
+    ts = [float(f @ u) for f in feet if 0.0 < float(f @ u) < length - MM_EPS and _seg_dist(f, np.zeros(2), foot) < CROWD_MM]
     return u * max(ts + [0.0])
 
 
