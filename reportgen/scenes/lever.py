@@ -19,7 +19,7 @@ from .scales import FORCE_SERIES, round_scale
 from ..geometry import vec2 as _pt
 from .scene import Arrow, Entity, Label, Scale, Scene, Segment, frozen
 from .forces import force_tex
-from ..tolerances import ABS_ZERO, MM_ROUNDOFF
+from ..tolerances import ABS_ZERO, MM_EPS, MM_ROUNDOFF
 
 #: The lever's loads: the largest drawn this long (mm), none shorter than MIN_ARROW_MM.
 LEVER_ARROW_MM = 40.0
@@ -53,6 +53,34 @@ def _crowding(way, own: np.ndarray, drawn: list, points: list) -> tuple[float, f
         over += step * max([w for s0, s1, w in drawn if _seg_dist(q, s0, s1) < CROWD_MM] + [0.0])
     near = sum(1 for p in points if float(np.hypot(*(p - own))) > CROWD_MM and _seg_dist(p, a, b) < CROWD_MM)
     return (round(over, 6), float(near))
+
+
+def _along_line(img: np.ndarray, d: np.ndarray, arrows: list) -> list:
+    """The ways of the arrow ``d`` (mm) acting at ``img`` moved along its own line of action past the
+    arrows (``arrows``: (tail, head, weight)) already drawn on that line through ``img``: pulling from
+    their far end, pushing into their near end, so that the arrows follow one another along the line
+    (a force slides along its line of action without changing its moment about the pole).
+    Empty when no drawn arrow lies on that line."""
+    u = d / float(np.hypot(*d))
+    n = np.array([-u[1], u[0]])
+    ts = [float((q - img) @ u) for a, b, _ in arrows
+          if abs(float((a - img) @ n)) < MM_EPS and abs(float((b - img) @ n)) < MM_EPS
+          for q in (a, b)]
+    if not ts:
+        return []
+    hi, lo = max(ts + [0.0]), min(ts + [0.0])
+    return [(img + hi * u, img + hi * u + d), (img + lo * u - d, img + lo * u)]
+
+
+def _own_part(foot: np.ndarray, feet: list) -> np.ndarray:
+    """Where the arm p–``foot`` stops lying over the shorter arms among ``feet`` (all from the pole p):
+    the farthest of their feet within CROWD_MM of it, short of its own foot (the pole when none). The
+    arm's name stands at the middle of the rest, its own part, so that the names of arms along one
+    line (the weights' arms on the turned plan's axis) follow one another instead of bunching at p."""
+    length = float(np.hypot(*foot))
+    u = foot / length
+    ts = [float(f @ u) for f in feet if 0.0 < float(f @ u) < length - MM_EPS and _seg_dist(f, np.zeros(2), foot) < CROWD_MM]
+    return u * max(ts + [0.0])
 
 
 def _seg_dist(x: np.ndarray, s0: np.ndarray, s1: np.ndarray) -> float:
@@ -91,6 +119,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
     mu_f = round_scale(max([float(np.hypot(*v)) for _, _, v, _, _ in loads] + [ABS_ZERO]), LEVER_ARROW_MM, FORCE_SERIES)
     labels: list[Label] = []
     n_arm = 0
+    arms: list[tuple[str, str, np.ndarray]] = []
     drawn = [(np.asarray(e.a, float), np.asarray(e.b, float), 1.0) for e in ents if isinstance(e, Segment)
              and e.kind == "contour"]
     others = [np.asarray(p, float) for p in points.values()] + [np.zeros(2)]
@@ -104,6 +133,9 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
         d = v / mag * max(mag / mu_f, MIN_ARROW_MM)
         pull, push = (img, img + d), (img - d, img)
         way = min((pull, push), key=lambda w: _crowding(w, img, drawn, others))
+        arrows = [x for x in drawn if x[2] == ARROW_WEIGHT]
+        if style == "load" and _crowding(way, img, arrows, [])[0] > 0.0:
+            way = min(_along_line(img, d, arrows) + [way], key=lambda w: _crowding(w, img, drawn, others))
         ways[i] = way
         drawn.append((way[0], way[1], ARROW_WEIGHT))
     for i, (name, img, v, arm, style) in enumerate(loads):
@@ -119,10 +151,11 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
             foot = img - float(img @ u) * u
             n_arm += 1
             if float(np.hypot(*foot)) > 3.0:
-                ents.append(Segment(f"arm:{name}", (0.0, 0.0), _pt(foot), "construction"))
-                h = (arm_names or {}).get(name, f"h_{{{n_arm}}}")
-                labels.append(Label(h, f"arm:{name}", (float(foot[0]) / 2, float(foot[1]) / 2), "vector",
-                                    ((0.0, 0.0), _pt(foot))))
+                arms.append((name, (arm_names or {}).get(name, f"h_{{{n_arm}}}"), foot))
+    for name, h, foot in arms:
+        ents.append(Segment(f"arm:{name}", (0.0, 0.0), _pt(foot), "construction"))
+        start = _own_part(foot, [f for _, _, f in arms])
+        labels.append(Label(h, f"arm:{name}", _pt((start + foot) / 2), "vector", (_pt(start), _pt(foot))))
     for name, p in points.items():
         labels.append(Label(name, f"point:{name}", p, "point"))
     labels.append(Label("p", "point:p", (0.0, 0.0), "point"))
