@@ -78,7 +78,9 @@ class Timeline:
     def add(self, span: Span) -> None:
         self.spans.append(span)
         if not self.quiet:
-            where = "" if span.lane == MAIN else f" (in parallel: {span.lane})"
+            # «note: LaTeX (in parallel)», not «(in parallel: LaTeX)» twice over
+            where = "" if span.lane == MAIN else " (in parallel)" if span.lane in span.name \
+                else f" (in parallel: {span.lane})"
             print(f"  {span.name}{where} … {span.seconds:.2f} s", flush=True)
 
     @property
