@@ -58,25 +58,14 @@ def polyline_length(points) -> float:
 
 
 def dxf_vectors(doc) -> list[float]:
-    """Lengths of the arrows on the sheet: a LINE on layer «vectors» and the SOLID head whose tip
-    continues it (:meth:`drawings.primitives.Canvas.arrow`); every head ahead on the line counts
-    (collinear arrows)."""
-    msp = doc.modelspace()
-    tips = [np.array(e.dxf.vtx0)[:2] for e in msp.query("SOLID[layer=='vectors']")]
-    out = []
-    for ln in msp.query("LINE[layer=='vectors']"):
-        a, b = np.array(ln.dxf.start)[:2], np.array(ln.dxf.end)[:2]
-        u = (b - a) / (np.hypot(*(b - a)) or 1.0)
-        for t in tips:
-            ahead = float(np.dot(t - b, u))
-            if 0 < ahead < 5.0 and float(np.hypot(*(t - b - u * ahead))) < 1e-6:
-                out.append(float(np.hypot(*(t - a))))
-    return out
+    """Lengths of the arrows on the sheet (:func:`dxf_arrows`): tail to the tip of its head; every
+    head ahead on the line counts (collinear arrows)."""
+    return [float(np.hypot(*(t - a))) for a, t in dxf_arrows(doc)]
 
 
 def dxf_arrows(doc) -> list[tuple[np.ndarray, np.ndarray]]:
     """The arrows on the sheet as (tail, tip) in sheet mm: a LINE on layer «vectors» and the SOLID
-    head whose tip continues it (as :func:`dxf_vectors` finds them)."""
+    head whose tip continues it (:meth:`drawings.primitives.Canvas.arrow`)."""
     msp = doc.modelspace()
     tips = [np.array(e.dxf.vtx0)[:2] for e in msp.query("SOLID[layer=='vectors']")]
     out = []
