@@ -204,10 +204,7 @@ class BuildCache:
         dst = self._preview_path(dxf)
         try:
             dst.parent.mkdir(parents=True, exist_ok=True)
-            fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
-            os.close(fd)
-            shutil.copyfile(png, part)
-            os.replace(part, dst)
+            _copy_atomic(png, dst)
         except OSError:
             return
         _prune(dst.parent, KEEP["previews"])
@@ -255,10 +252,7 @@ class BuildCache:
                 with os.fdopen(fd, "w", encoding="utf-8") as f:
                     json.dump(sizes, f)
                 os.replace(part, dst.with_suffix(".json"))
-            fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
-            os.close(fd)
-            shutil.copyfile(target, part)
-            os.replace(part, dst)
+            _copy_atomic(target, dst)
         except OSError:
             return
         self.figures_saved += 1
@@ -310,6 +304,15 @@ def _copy_tree(src: Path, dst: Path) -> None:
             _copy_tree(item, target)
         else:
             shutil.copyfile(item, target)
+
+
+def _copy_atomic(src: Path, dst: Path) -> None:
+    """Copy ``src`` to ``dst`` through a part file in ``dst``'s folder, renamed into place, so that
+    a reader (or a build stopped half-way) never sees half a file."""
+    fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
+    os.close(fd)
+    shutil.copyfile(src, part)
+    os.replace(part, dst)
 
 
 def _touch(path: Path) -> None:

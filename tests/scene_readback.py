@@ -95,3 +95,13 @@ def common_shift(pairs: list[tuple[np.ndarray, np.ndarray]], drawn: list[tuple[n
                    for da, db in drawn) for a, b in pairs):
             return t
     return None
+
+
+def assert_marks_clear(boxes, room, teeth) -> None:
+    """The meshing picture's designations (``boxes``: (name, shapely box)) lie inside ``room``,
+    off every tooth of ``teeth`` and off each other (sheet 4's scene, the note's window of it)."""
+    for i, (n1, b1) in enumerate(boxes):
+        assert room.contains(b1), n1
+        assert not any(b1.intersects(t) for t in teeth), f"{n1} over a tooth"
+        for n2, b2 in boxes[i + 1:]:
+            assert b1.intersection(b2).area < 1e-9, f"{n1} overlaps {n2}"

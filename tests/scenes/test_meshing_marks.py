@@ -18,6 +18,7 @@ from reportgen.project import Project
 from reportgen.scenes.meshing import label_room, meshing_marks, meshing_scale
 from reportgen.scenes.meshing_marks import CHAR_WIDTH, teeth_polygons
 from reportgen.taskfile import load_task
+from scene_readback import assert_marks_clear
 
 ROOT = Path(__file__).resolve().parents[2]
 GEAR_EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
@@ -145,9 +146,4 @@ def test_note_figure_marks_clear_of_teeth(name):
     assert {f"{n}{i}" for n in ("r", "rb", "rw", "ra", "rf") for i in (1, 2)} | {"s1", "s2", "p", "alpha_w"} <= names
     room = box(*meshing_frame(pic))
     teeth = teeth_polygons(pic)
-    boxes = marks.boxes()
-    for i, (n1, b1) in enumerate(boxes):
-        assert room.contains(b1), n1
-        assert not any(b1.intersects(t) for t in teeth), f"{n1} over a tooth"
-        for n2, b2 in boxes[i + 1:]:
-            assert b1.intersection(b2).area < 1e-9, f"{n1} overlaps {n2}"
+    assert_marks_clear(marks.boxes(), room, teeth)

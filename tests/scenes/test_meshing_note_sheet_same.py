@@ -18,7 +18,7 @@ from drawings.sheets import gears as sheet4
 from latex_templates.parts import gear_pair as part
 from reportgen.scenes.meshing_marks import teeth_polygons
 from reportgen.scenes.scene import Polyline, Segment
-from scene_readback import ROOT, part_and_sheet
+from scene_readback import ROOT, assert_marks_clear, part_and_sheet
 
 GEAR_EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
                        if re.search(r"^\[gears\]", p.read_text(encoding="utf-8"), re.M))
@@ -87,9 +87,4 @@ def test_meshing_note_designations_legible_and_clear(built):
     xlim, ylim = fig.axes[0].get_xlim(), fig.axes[0].get_ylim()
     k = project.scenes.meshing.scale.factor
     room = box(xlim[0] / k, ylim[0] / k, xlim[1] / k, ylim[1] / k)
-    boxes = marks.boxes()
-    for i, (n1, b1) in enumerate(boxes):
-        assert room.contains(b1), n1
-        assert not any(b1.intersects(t) for t in teeth), f"{n1} over a tooth"
-        for n2, b2 in boxes[i + 1:]:
-            assert b1.intersection(b2).area < 1e-9, f"{n1} overlaps {n2}"
+    assert_marks_clear(marks.boxes(), room, teeth)
