@@ -37,7 +37,7 @@ from pathlib import Path
 from typing import Mapping
 
 #: Newest entries kept of each kind.
-KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400}
+KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60}
 #: Source files whose bytes make the code's fingerprint.
 _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
@@ -77,21 +77,49 @@ def code_fingerprint() -> str:
         h.update(f"{lib}={version};".encode())
     tex = shutil.which("xelatex")
     h.update((os.path.realpath(tex) if tex else "no-xelatex").encode())
+    h.update(fonts_fingerprint().encode())
     return h.hexdigest()
 
 
-def content_digest(obj: object) -> str:
-    """SHA-256 of plain data — dataclasses, mappings, sequences, numbers, strings, numpy arrays —
-    by a canonical walk (type names, field names, float bits), the same in every process whatever
-    the hash seed; anything else is an error, so a key never rests on an object's ``repr``."""
+#: Where the fonts the figures and the sheets' previews are drawn with may come from (fontconfig's
+#: folders; matplotlib's own fonts go with its version).
+FONT_FOLDERS = ("/usr/share/fonts", "/usr/local/share/fonts", "~/.fonts", "~/.local/share/fonts")
+
+
+def fonts_fingerprint() -> str:
+    """SHA-256 of the font files installed (path, size, modification time): a font installed,
+    removed or updated changes every figure and preview the cache keeps."""
     h = hashlib.sha256()
-    _feed(h, obj)
+    for folder in FONT_FOLDERS:
+        base = Path(folder).expanduser()
+        if not base.is_dir():
+            continue
+        for dirpath, dirnames, filenames in os.walk(base):
+            dirnames.sort()
+            for name in sorted(filenames):
+                try:
+                    st = os.stat(os.path.join(dirpath, name))
+                except OSError:
+                    continue
+                h.update(f"{dirpath}/{name}:{st.st_size}:{st.st_mtime_ns};".encode())
     return h.hexdigest()
 
 
-def _feed(h: "hashlib._Hash", obj: object) -> None:
+def content_digest(obj: object, *, skip: "frozenset[tuple[str, str]]" = frozenset()) -> str:
+    """SHA-256 of plain data — dataclasses, mappings, sequences, sets, numbers (fractions too),
+    strings, numpy arrays — by a canonical walk (type names, field names, float bits), the same in
+    every process whatever the hash seed; anything else is an error, so a key never rests on an
+    object's ``repr``. ``skip``: (class name, field name) pairs of dataclass fields left out
+    (:data:`reportgen.read_trace.MASS_FIELDS`)."""
+    h = hashlib.sha256()
+    _feed(h, obj, skip)
+    return h.hexdigest()
+
+
+def _feed(h: "hashlib._Hash", obj: object, skip: "frozenset[tuple[str, str]]" = frozenset()) -> None:
     import dataclasses
     import struct
+    from fractions import Fraction
 
     if obj is None or isinstance(obj, bool):
         h.update(f"<{obj!r}>".encode())
@@ -102,29 +130,37 @@ def _feed(h: "hashlib._Hash", obj: object) -> None:
     elif isinstance(obj, str):
         data = obj.encode()
         h.update(b"s%d:" % len(data) + data)
+    elif isinstance(obj, Fraction):
+        h.update(b"q%d/%d;" % (obj.numerator, obj.denominator))
     elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        h.update(f"D{type(obj).__qualname__}(".encode())
+        name = type(obj).__qualname__
+        h.update(f"D{name}(".encode())
         for f in dataclasses.fields(obj):
+            if (name, f.name) in skip:
+                continue
             h.update(f.name.encode() + b"=")
-            _feed(h, getattr(obj, f.name))
+            _feed(h, getattr(obj, f.name), skip)
         h.update(b")")
     elif isinstance(obj, (tuple, list)):
         h.update(b"T%d[" % len(obj))
         for item in obj:
-            _feed(h, item)
+            _feed(h, item, skip)
         h.update(b"]")
+    elif isinstance(obj, (set, frozenset)):       # in the order of the items' digests: no hash seed
+        items = sorted(content_digest(item, skip=skip) for item in obj)
+        h.update(b"S%d{" % len(items) + "".join(items).encode() + b"}")
     elif isinstance(obj, Mapping):
         h.update(b"M%d{" % len(obj))           # insertion order: the scenes build their mappings in a fixed order
         for k in obj.keys():
-            _feed(h, k)
-            _feed(h, obj[k])
+            _feed(h, k, skip)
+            _feed(h, obj[k], skip)
         h.update(b"}")
     elif type(obj).__module__ == "numpy":
         import numpy as np
 
         a = np.ascontiguousarray(obj)
         if a.dtype == object:
-            _feed(h, a.tolist())
+            _feed(h, a.tolist(), skip)
         else:
             h.update(f"A{a.dtype.str}{a.shape}".encode())
             h.update(a.tobytes())
@@ -153,6 +189,7 @@ class BuildCache:
         self.tex_key = _digest("tex", str(task_path))
         self.figures_reused = 0     # figures copied from the cache in this build (the note's figures)
         self.figures_saved = 0      # figures saved and stored in this build
+        self._read_digests: dict[tuple, str | None] = {}   # a sheet's read → its digest, this build
 
     # -- whole builds ------------------------------------------------------------------------
     def restore_build(self, tmp: Path) -> bool:
@@ -208,6 +245,94 @@ class BuildCache:
         except OSError:
             return
         _prune(dst.parent, KEEP["previews"])
+
+    # -- whole sheets ---------------------------------------------------------------------------
+    def _sheet_base(self, identity: str) -> Path:
+        return self.root / "sheets" / _digest("sheet", self.code, identity)
+
+    def _digest_of(self, project: object, read: tuple, mask: bool) -> str | None:
+        from .read_trace import read_digest
+
+        memo = (read, mask)
+        if memo not in self._read_digests:
+            try:
+                self._read_digests[memo] = read_digest(project, read, mask_masses=mask)
+            except Exception:  # noqa: BLE001 - a stage that fails now, or data without a canonical form: no hit
+                self._read_digests[memo] = None
+        return self._read_digests[memo]
+
+    def _variant(self, project: object, reads: list[tuple]) -> str | None:
+        """The name of the variant of a sheet whose ``reads`` have the values they have on
+        ``project`` (None when one of them cannot be digested)."""
+        from .read_trace import masks_masses
+
+        mask = masks_masses(reads)
+        digests = [self._digest_of(project, r, mask) for r in reads]
+        if any(d is None for d in digests):
+            return None
+        import json
+        return _digest("variant", json.dumps(reads), *[d for d in digests if d is not None])
+
+    def restore_sheet(self, identity: str, project: object, files: dict[str, Path]) -> bool:
+        """Copy the files of the sheet ``identity`` (the sheet module, its number and count, the
+        language) drawn from a project whose every read value (:mod:`reportgen.read_trace`) equals
+        ``project``'s; ``files``: the kept file's name → where it goes. False when there is none."""
+        import json
+
+        base = self._sheet_base(identity)
+        try:
+            variants = [p for p in base.iterdir() if (p / ".complete").is_file()]
+        except OSError:
+            return False
+        tried: set[str] = set()
+        for entry in sorted(variants, key=lambda p: p.stat().st_mtime, reverse=True):
+            try:
+                reads = [tuple(r) for r in json.loads((entry / "reads.json").read_text(encoding="utf-8"))]
+            except (OSError, ValueError):
+                continue
+            name = self._variant(project, reads)
+            if name is None or name in tried:
+                continue
+            tried.add(name)
+            found = base / name
+            if not (found / ".complete").is_file():
+                continue
+            try:
+                for kept, target in files.items():
+                    _copy_atomic(found / kept, target)
+            except OSError:
+                return False
+            _touch(found)
+            _touch(base)
+            return True
+        return False
+
+    def store_sheet(self, identity: str, project: object, reads: list[tuple], files: dict[str, Path]) -> None:
+        """Keep the sheet's ``files`` (name → the file made) under its reads' values on ``project``."""
+        import json
+
+        name = self._variant(project, reads)
+        if name is None:
+            return
+        base = self._sheet_base(identity)
+        entry = base / name
+        if (entry / ".complete").is_file():
+            return
+        try:
+            base.mkdir(parents=True, exist_ok=True)
+            part = Path(tempfile.mkdtemp(dir=base, prefix=".part-"))
+            for kept, made in files.items():
+                shutil.copyfile(made, part / kept)
+            (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
+            (part / ".complete").write_bytes(b"")
+            if entry.exists():
+                shutil.rmtree(entry, ignore_errors=True)
+            part.rename(entry)
+        except OSError:
+            shutil.rmtree(locals().get("part", base / ".none"), ignore_errors=True)
+            return
+        _prune(base, 4)                       # a few variants of each sheet (an edit undone is a hit)
+        _prune(base.parent, KEEP["sheets"])
 
     # -- the note's figures --------------------------------------------------------------------
     def _figure_path(self, key: str) -> Path:

@@ -252,37 +252,65 @@ def _start_latex(tex: Path, latexmk: str, cache: Any) -> Any:
         raise BuildError("LaTeX", exc.problem, exc.kept) from None
 
 
-def draw_sheet(project: Any, mod: Any, number: int, count: int) -> Any:
+def draw_sheet(project: Any, mod: Any, number: int, count: int, trace: Any = None) -> Any:
     """Sheet ``number`` of ``count`` drawn by the sheet module ``mod``, in the task's language, with
-    a view of the project that lets it read only the stages it declares in ``NEEDS``."""
+    a view of the project that lets it read only the stages it declares in ``NEEDS`` (and, with a
+    ``trace`` (:class:`reportgen.read_trace.Trace`), writes down what it reads)."""
     from drawings.words import language, use_catalogue
     from latex_templates.parts import active_strings
     from latex_templates.render import Strings
 
+    from ..read_trace import TracedNeeds
+
     use_catalogue(Strings)
+    owner = f"sheet {mod.__name__}"
+    view = Needs(project, mod.NEEDS, owner) if trace is None else TracedNeeds(project, mod.NEEDS, owner, trace)
     with language(project.task.document.language), \
             active_strings(Strings(project.task.document.language or "ru")):   # the sheet's words in the task's language
-        return mod.draw(Needs(project, mod.NEEDS, f"sheet {mod.__name__}"), number, count)
+        return mod.draw(view, number, count)
+
+
+#: Said of a sheet whose DXF and preview came from the build cache (its span's name ends so).
+FROM_CACHE = " (from the cache)"
+
+
+def sheet_identity(project: Any, mod: Any, stem: str, number: int, count: int) -> str:
+    """What names a sheet in the build cache besides what it reads of the project: its module,
+    file name, number and count, and the language it is drawn in (the code is added by the cache)."""
+    return "|".join((mod.__name__, stem, str(number), str(count), project.task.document.language or "ru"))
 
 
 def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any = None, *,
                 lane: str = SHEETS) -> Iterator[Span]:
-    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
+    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache).
+    With the cache, a sheet whose every read of the project (:mod:`reportgen.read_trace`) has the
+    value it had when the cache kept it is copied, not drawn; its span's name ends in
+    :data:`FROM_CACHE`."""
     from drawings.preview import render_png
+
+    from ..read_trace import Trace
 
     folder = tmp / "sheets"
     folder.mkdir(exist_ok=True)
     for i, (stem, mod) in enumerate(todo, start=1):
         name = f"sheet {i}: {stem}"
         t0 = time.perf_counter()
-        sheet = draw_sheet(project, mod, i, len(todo))
         dxf = folder / f"{stem}.dxf"
         png = folder / f"{stem}.png"
+        files = {"sheet.dxf": dxf, "sheet.png": png}
+        identity = sheet_identity(project, mod, stem, i, len(todo))
+        if cache is not None and cache.restore_sheet(identity, project, files):
+            yield Span(name + FROM_CACHE, lane, t0, time.perf_counter())
+            continue
+        trace = Trace() if cache is not None else None
+        sheet = draw_sheet(project, mod, i, len(todo), trace)
         sheet.save(dxf)
         if cache is None or not cache.restore_preview(dxf, png):
             render_png(sheet.doc, png, dpi=60)
             if cache is not None:
                 cache.store_preview(dxf, png)
+        if cache is not None and trace is not None and not trace.opaque:
+            cache.store_sheet(identity, project, trace.reads, files)
         yield Span(name, lane, t0, time.perf_counter())
 
 
