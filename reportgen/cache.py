@@ -340,6 +340,13 @@ class BuildCache:
 
     def restore_figure(self, key: str, target: Path) -> bool:
         """Copy the PDF of the figure with content key ``key`` to ``target``; False when none."""
+        if not self.copy_figure(key, target):
+            return False
+        self.figures_reused += 1
+        return True
+
+    def copy_figure(self, key: str, target: Path) -> bool:
+        """:meth:`restore_figure` without counting it (a first LaTeX pass's early copy)."""
         src = self._figure_path(key)
         part = target.with_name(f".{target.name}.part")
         try:
@@ -350,7 +357,6 @@ class BuildCache:
             return False
         _touch(src.with_suffix(".json"))
         _touch(src)
-        self.figures_reused += 1
         return True
 
     def figure_sizes(self, key: str) -> dict[str, float] | None:

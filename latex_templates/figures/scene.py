@@ -371,8 +371,12 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
                  colours: bool = True, roles: tuple[str, ...] = ("point", "vector", "number")):
     """The scene as a matplotlib figure at a true reduction (see the module's docstring); inside a
     build whose cache keeps this figure, a stand-in with its sizes (:func:`.saving.kept_figure`)."""
-    def make():
-        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
+    from ..parts import active_strings
+    strings = active()
+
+    def make():         # perhaps later (a kept PDF gone): in the language of now
+        with active_strings(strings):
+            return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
 
     key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
     kept = kept_figure(key, make)
