@@ -135,13 +135,17 @@ def _feed(h: "hashlib._Hash", obj: object, skip: "frozenset[tuple[str, str]]" = 
     elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
         name = type(obj).__qualname__
         h.update(f"D{name}(".encode())
-        for f in dataclasses.fields(obj):
-            if (name, f.name) in skip:
+        for field_name in _field_names(type(obj)):
+            if (name, field_name) in skip:
                 continue
-            h.update(f.name.encode() + b"=")
-            _feed(h, getattr(obj, f.name), skip)
+            h.update(field_name.encode() + b"=")
+            _feed(h, getattr(obj, field_name), skip)
         h.update(b")")
     elif isinstance(obj, (tuple, list)):
+        packed = _packed_floats(obj)
+        if packed is not None:           # a run of floats, or of points: one update, not one per number
+            h.update(packed)
+            return
         h.update(b"T%d[" % len(obj))
         for item in obj:
             _feed(h, item, skip)
@@ -168,6 +172,32 @@ def _feed(h: "hashlib._Hash", obj: object, skip: "frozenset[tuple[str, str]]" = 
         from .errors import InternalError
 
         raise InternalError("content_digest", f"no canonical form for {type(obj).__name__}")
+
+
+@lru_cache(maxsize=None)
+def _field_names(cls: type) -> tuple[str, ...]:
+    import dataclasses
+    return tuple(f.name for f in dataclasses.fields(cls))
+
+
+def _packed_floats(seq: tuple | list) -> bytes | None:
+    """A sequence of floats (tag ``F``) or of equally long tuples of floats (tag ``P``, points) as
+    one run of little-endian doubles with its shape; None for anything else (walked item by item)."""
+    import struct
+
+    n = len(seq)
+    if n < 2:
+        return None
+    first = seq[0]
+    if type(first) is float:
+        if all(type(x) is float for x in seq):
+            return b"F%d[" % n + struct.pack(f"<{n}d", *seq)
+        return None
+    if type(first) is tuple and first and all(type(x) is float for x in first):
+        m = len(first)
+        if all(type(t) is tuple and len(t) == m and all(type(x) is float for x in t) for t in seq):
+            return b"P%dx%d[" % (n, m) + struct.pack(f"<{n * m}d", *(x for t in seq for x in t))
+    return None
 
 
 def _digest(*parts: bytes | str) -> str:

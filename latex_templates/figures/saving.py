@@ -122,14 +122,16 @@ class KeptFigure:
 
 
 def figure_sizes(fig: Any) -> dict[str, float]:
-    """What the note reads of a scene figure, kept beside its PDF in the build cache (of a plot,
-    saved at its tight box: only that it is one, ``exact`` = 0)."""
-    if not getattr(fig, "reportgen_exact", False):
-        reduction = getattr(fig, "reportgen_reduction", None)
-        return {"exact": 0.0, **({"reduction": float(reduction)} if reduction is not None else {})}
+    """What the note reads of a kept figure (:class:`KeptFigure`), kept beside its PDF in the build
+    cache: its size in inches, whether it is drawn at a true scale (``exact``; a plot is saved at
+    its tight box), and a scene figure's width and reduction."""
     w, h = fig.get_size_inches()
-    return {"width_cm": float(fig.width_cm), "reduction": float(fig.reportgen_reduction),
-            "width_in": float(w), "height_in": float(h)}
+    sizes = {"exact": float(bool(getattr(fig, "reportgen_exact", False))), "width_in": float(w), "height_in": float(h)}
+    if getattr(fig, "width_cm", None) is not None:
+        sizes["width_cm"] = float(fig.width_cm)
+    if getattr(fig, "reportgen_reduction", None) is not None:
+        sizes["reduction"] = float(fig.reportgen_reduction)
+    return sizes
 
 
 def kept_figure(key: str, make: Callable[[], Any]) -> Any:
