@@ -56,6 +56,7 @@ class Timeline:
     spans: list[Span] = field(default_factory=list)
     origin: float = field(default_factory=time.perf_counter)
     current: str | None = None   # the main-lane stage running (named when it fails)
+    latex_passes: int = 0        # xelatex passes the note took
 
     @contextmanager
     def stage(self, name: str, lane: str = MAIN) -> Iterator[None]:
@@ -135,7 +136,7 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
         if pending is not None:
             t0 = time.perf_counter()
             try:
-                pending.wait()
+                timeline.latex_passes = pending.wait().passes
             except BuildError as exc:
                 raise BuildError("LaTeX", exc.problem, exc.kept) from None
             end = time.perf_counter()
@@ -172,17 +173,24 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     """Compose the sections and write report.tex (once), then save the figures it refers to
     (split over two processes where there is a second processor).
 
-    ``early`` (a cold LaTeX build: no auxiliary files from an earlier one): xelatex's first pass
-    starts before the figures are saved, on placeholders of their sizes, and goes on once they
-    are (:mod:`latex_templates.passes`); returned with report.tex, else None."""
+    ``early`` (the passes driven directly, not by a latexmk the user named): xelatex's first pass
+    starts before the figures are saved, on placeholders of their sizes (a figure kept by the
+    build cache: its PDF), and goes on once they are (:mod:`latex_templates.passes`); with the
+    auxiliary files of the task's last build restored from the cache and every figure of its
+    placeholder's page box, that first pass is often the only one. Returned with report.tex,
+    else None."""
     from latex_templates.figures.saving import queued
+    from latex_templates.passes import media_box
 
     with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline)
     pending = None
-    if early and len(figures) and _cold_latex(tex, cache):
+    boxes: dict[Path, bytes | None] = {}
+    if early and len(figures):
+        _restore_latex(tex, cache)
         with timeline.stage("note: figure sizes"):
             figures.write_placeholders()
+        boxes = {target: media_box(target) for _, target in figures.items}
         pending = _start_passes(tex)
     try:
         with timeline.stage("note: figures"):
@@ -192,17 +200,17 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
             pending.cancel()
         raise
     if pending is not None:
-        pending.figures_ready()
+        pending.figures_ready(same_boxes=all(box is not None and media_box(target) == box
+                                             for target, box in boxes.items()))
     return tex, pending
 
 
-def _cold_latex(tex: Path, cache: Any) -> bool:
-    """No auxiliary files of an earlier build of this note (after restoring the cache's)."""
+def _restore_latex(tex: Path, cache: Any) -> None:
+    """LaTeX's auxiliary files of the task's last build, when the cache keeps them."""
     from latex_templates.build import BUILD_DIR
 
     if cache is not None:
         cache.restore_tex(tex.parent / BUILD_DIR)
-    return not (tex.parent / BUILD_DIR / (tex.stem + ".aux")).exists()
 
 
 def _start_passes(tex: Path) -> Any:
