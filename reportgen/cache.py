@@ -12,18 +12,25 @@ What, each under a key that is a SHA-256 of everything the entry depends on:
   bytes + the build options. A hit copies the folder: the same bytes a build would write, since
   the build is a pure function of these (tests check builds with different hash seeds, folders
   and times, and cached against uncached).
-- ``previews/<key>.png``: a sheet's PNG preview; key = the DXF's bytes + the code. A sheet is
-  always drawn again (cheap), its preview only when its DXF changed.
+- ``previews/<key>.png``: a sheet's PNG preview; key = the DXF's bytes + the code. A sheet drawn
+  again renders its preview only when its DXF changed.
+- ``sheets/<sheet>/<variant>/``: a whole sheet (DXF + preview); ``<sheet>`` = the code + the sheet
+  module, file name, number, count and language; ``<variant>`` = what the sheet read of the
+  project when it was drawn (:mod:`reportgen.read_trace`) + the digest of each value read. A
+  sheet whose reads digest as before on the new project is copied, not drawn
+  (:meth:`BuildCache.restore_sheet`).
 - ``tex/<key>/``: LaTeX's auxiliary files of the last build of a task file (key = its absolute
-  path): latexmk starts from them and runs only the passes the change needs (often one).
-- ``figures/<key>.pdf``: a note's figure drawn from a scene; key = the code + the figure's
-  content key (:func:`content_digest` of the scene, the renderer's options and the note's language,
-  made by ``latex_templates.figures.scene.scene_figure``). A hit copies the PDF instead of saving
-  the figure (the figure is still made: the note reads its size). The matplotlib plots have no key
-  and are always saved.
+  path): the passes start from them and often need one (:mod:`latex_templates.passes`).
+- ``figures/<key>.pdf``: a note's figure — drawn from a scene, or a matplotlib plot; key = the
+  code + the figure's content key (:func:`content_digest` of the scene or of the plot's arguments,
+  the renderer's options and the note's language: ``latex_templates.figures.scene.figure_key``,
+  ``latex_templates.figures.keyed.plot_key``). A hit neither makes nor saves the figure: a stand-in
+  with its kept sizes is placed and the PDF copied.
 - ``jinja/<key>.code``: the note's templates and catalogue snippets compiled by Jinja (key = the
   source, its name, the syntax options, the Jinja and Python versions; ``latex_templates.jinja_cache``).
 
+"The code" (:func:`code_fingerprint`) is every source file, the drawing libraries' versions, the
+xelatex binary and the fonts installed (:func:`fonts_fingerprint`).
 Each kind keeps its newest entries only (``KEEP``). A cache that cannot be written is skipped.
 """
 from __future__ import annotations
