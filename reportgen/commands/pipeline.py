@@ -3,14 +3,15 @@
     main process   task → solve → note's sections, report.tex → figures (share 1) ─ results.json ─ join ─ join
     figures                                       (forked) figures (share 2) ─┘                    │      │
     sheets         (forked after solve, nice 3)  sheet 1 … sheet n: DXF + PNG preview ─────────────┘      │
-    LaTeX          (started when report.tex and the figures are written)  latexmk + xelatex ──────────────┘
+    LaTeX          (first pass beside the figures, on their placeholders)  xelatex passes + xdvipdfmx ─────┘
 
 The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
 the sheets are drawn in a forked child process while the main process composes the note, and
-latexmk runs in the background while the main process writes results.json and waits. Every stage
+LaTeX's passes run in the background while the main process writes results.json and waits. Every stage
 records a :class:`Span` (start and end on the monotonic clock shared by the processes), so
 ``reportgen bench`` can print what ran in parallel and what waited. Nothing here decides what is
-written: the outputs are the same bytes whether the stages overlap or not.
+written: the outputs are the same bytes whether the stages overlap or not, and whether a sheet,
+a figure or LaTeX's auxiliary files come from the build cache (:mod:`reportgen.cache`) or not.
 """
 from __future__ import annotations
 
