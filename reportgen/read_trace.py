@@ -112,7 +112,8 @@ def read_value(project: Any, read: tuple) -> Any:
         return getattr(project.scenes, read[1])
     if kind == "scenes-call":
         return getattr(project.scenes, read[1])(*read[2:])
-    raise LookupError(read)
+    from .errors import InternalError
+    raise InternalError("read_trace", f"no such read: {read!r}")
 
 
 def masks_masses(reads: list[tuple]) -> bool:

@@ -5,6 +5,7 @@ told to, a failed pass keeps the .tex and the log and says where, and the early 
 same PDF as latexmk."""
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 import sys
@@ -129,9 +130,11 @@ def test_a_first_pass_that_leaves_the_aux_files_as_it_found_them_is_the_last_whe
     (tmp_path / "n.tex").write_text(MINIMAL, encoding="utf-8")
     (tmp_path / "b").mkdir()
 
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")   # no dates in the PDF
+
     def drive(go: bytes) -> list[str]:
         proc = subprocess.run([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path,
-                              input=go, capture_output=True, text=False)
+                              input=go, capture_output=True, text=False, env=env)
         assert proc.returncode == 0
         return [line for line in proc.stdout.decode().splitlines() if line == passes.PASS_LINE]
 
