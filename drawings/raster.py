@@ -421,7 +421,9 @@ class _Page:
         self.image.paste(fill, (x0, y0, x1, y1), patch)
 
     def save(self, png_path: str | os.PathLike[str]) -> Path:
-        self.image.reduce(SUPERSAMPLE).convert("RGB").save(os.fspath(png_path), format="PNG")
+        # one channel: the sheets are black and grey on white (:func:`unsupported` sends anything
+        # in colour to ezdxf), and a grey PNG is half the bytes and a third of the encoding time
+        self.image.reduce(SUPERSAMPLE).save(os.fspath(png_path), format="PNG")
         return Path(png_path)
 
 

@@ -20,7 +20,8 @@ def _ink(img, x0, y0, x1, y1, w_mm=841.0, h_mm=594.0):
     """Share of dark pixels in a sheet rectangle given in mm (origin lower-left)."""
     h, w = img.shape[:2]
     sub = img[int(h * (1 - y1 / h_mm)):int(h * (1 - y0 / h_mm)), int(w * x0 / w_mm):int(w * x1 / w_mm)]
-    return float((sub[..., :3].mean(axis=-1) < 0.5).mean())
+    grey = sub[..., :3].mean(axis=-1) if sub.ndim == 3 else sub     # a grey PNG or an RGB(A) one
+    return float((grey < 0.5).mean())
 
 
 def test_png_has_paper_size_and_is_not_blank(png):

@@ -30,7 +30,8 @@ def _ink(text: str, tmp_path) -> np.ndarray:
     doc.header["$PLIMMAX"] = (30.0, 30.0)
     png = render_png(doc, tmp_path / f"{ord(text)}.png", dpi=100)
     from matplotlib import image
-    img = image.imread(png)[..., :3].mean(axis=-1)
+    img = image.imread(png)
+    img = img[..., :3].mean(axis=-1) if img.ndim == 3 else img     # a grey PNG or an RGB(A) one
     assert doc.styles.get("S").dxf.font == "osifont.ttf"          # the document is left as it was
     return img < 0.5
 
