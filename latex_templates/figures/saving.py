@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 import sys
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
@@ -247,7 +247,57 @@ class FigureQueue:
             _release(fig)
 
 
+class _SubsetFont:
+    """A subset font as matplotlib's PDF backend uses it here: only written out (``save``)."""
+
+    def __init__(self, data: bytes) -> None:
+        self.data = data
+
+    def save(self, file: Any, **_options: Any) -> None:     # reorderTables: the bytes are final
+        file.write(self.data)
+
+
+@dataclass(frozen=True)
+class _Subset:
+    """What ``get_glyphs_subset`` yields: the subset font and the old → new glyph numbers."""
+    font: _SubsetFont
+    glyph_index_map: dict[int, int]
+
+
+#: Subset fonts made in this process: (font file, face, glyphs) → (font bytes, glyph numbers).
+_SUBSETS: dict[tuple[str, int, frozenset[int]], tuple[bytes, dict[int, int]]] = {}
+
+
+def remember_font_subsets() -> None:
+    """Let matplotlib's PDF backend subset each font for a set of glyphs once per process.
+
+    Every figure embeds a subset of each font it uses (fontTools parses the font file, prunes it,
+    writes it: ≈ 10 ms each, ~100 on the press), and a third of them are the same font with the
+    same glyphs as an earlier figure's (the digits and letters of the axes' and scenes' labels).
+    A subset is a pure function of the font file, the face and the glyph set, so the bytes made
+    once are written again: the same PDF bytes (tests/speed/test_figure_saving.py)."""
+    from matplotlib.backends import _backend_pdf_ps as pdf_ps
+
+    original = pdf_ps.get_glyphs_subset
+    if getattr(original, "reportgen_memo", False):
+        return
+
+    def get_glyphs_subset(fontfile: Any, glyphs: Any) -> Any:
+        key = (str(fontfile), int(getattr(fontfile, "face_index", 0)), frozenset(int(g) for g in glyphs))
+        found = _SUBSETS.get(key)
+        if found is None:
+            with original(fontfile, glyphs) as subset:
+                found = (pdf_ps.font_as_file(subset.font).getvalue(), dict(subset.glyph_index_map))
+            _SUBSETS[key] = found
+        return nullcontext(_Subset(_SubsetFont(found[0]), dict(found[1])))
+
+    get_glyphs_subset.reportgen_memo = True          # type: ignore[attr-defined]
+    get_glyphs_subset.reportgen_original = original  # type: ignore[attr-defined]
+    pdf_ps.get_glyphs_subset = get_glyphs_subset
+
+
 def _save_all(items: list[tuple[Any, Path]], boxes: dict[int, Any] | None = None) -> int:
+    remember_font_subsets()
     for fig, target in items:
         save_pdf(fig, target, (boxes or {}).get(id(fig)))
     return len(items)
