@@ -227,12 +227,17 @@ def _along_one_line(own, other) -> bool:
                              _seg_point(own[0], other), _seg_point(own[1], other)) < 0.5
 
 
+def _rivals_of(own, rivals) -> list:
+    """The figure's other named vectors that a name of ``own`` must keep away from: not ``own``
+    itself, not one lying along it (their names share the room beside the line)."""
+    return [r for r in rivals if r != own and not _along_one_line(own, r)]
+
+
 def _own_vector(box, own, rivals, margin: float) -> bool:
-    """Is ``box`` nearer (by ``margin``) to its vector ``own`` than to any of the ``rivals`` (the
-    figure's other named vectors not lying along it)? A name nearer to another vector reads as its."""
+    """Is ``box`` nearer (by ``margin``) to its vector ``own`` than to any of the ``rivals``
+    (:func:`_rivals_of` it, found once per label)? A name nearer to another vector reads as its."""
     d = box_segment_distance(box, own)
-    return all(box_segment_distance(box, r) >= d + margin for r in rivals
-               if r != own and not _along_one_line(own, r))
+    return all(box_segment_distance(box, r) >= d + margin for r in rivals)
 
 
 def _leader_candidates(lb: Label, w: float, h: float, gap: float,
@@ -255,12 +260,17 @@ def _leader_candidates(lb: Label, w: float, h: float, gap: float,
     return out
 
 
+def _others_of(p, others: list) -> list:
+    """The figure's other labelled points, not ``p`` itself."""
+    return [q for q in others if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF]
+
+
 def _own(box, p, others: list, margin: float) -> bool:
-    """Is ``box`` nearer (by ``margin``) to its point ``p`` than to any of the ``others`` — the
-    figure's other labelled points? A letter nearer to another point reads as that point's."""
+    """Is ``box`` nearer (by ``margin``) to its point ``p`` than to any of the ``others``
+    (:func:`_others_of` it, found once per label)? A letter nearer to another point reads as that
+    point's."""
     d = _dist_box(p, box)
-    return all(_dist_box(q, box) >= d + margin for q in others
-               if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF)
+    return all(_dist_box(q, box) >= d + margin for q in others)
 
 
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
@@ -296,6 +306,10 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 t = min((w / 2) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
                         (h / 2) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
                 cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
+    if not point and rivals:
+        rivals = _rivals_of(lb.along, rivals)
+    if point and others:
+        others = _others_of(lb.at, others)
     passes = [(cands, lb.leader)]
     if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
         passes.append((_leader_candidates(lb, w, h, gap, (8.0, 11.0, 15.0, 20.0)), True))
