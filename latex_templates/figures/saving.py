@@ -146,6 +146,14 @@ def figure_sizes(fig: Any) -> dict[str, float]:
             "width_in": float(w), "height_in": float(h)}
 
 
+def content_keys_read() -> bool:
+    """Will anything read a figure's content key (:func:`content_key`)? Not in a build that queues
+    the figures without a cache (``--no-cache``): there, digesting each scene (≈ 0.1 s of the
+    note's CPU on the press) is skipped; elsewhere — a build with a cache, a caller outside a
+    build — the key is made."""
+    return _QUEUE is None or _QUEUE.cache is not None
+
+
 def kept_figure(key: str, make: Callable[[], Any]) -> Any:
     """A :class:`KeptFigure` when the build that queues the note's figures (:func:`queued`) has a
     cache keeping the figure with content ``key``; else None (the caller makes the figure)."""

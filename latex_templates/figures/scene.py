@@ -25,7 +25,7 @@ from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..parts import active
 from . import new_figure
-from .saving import kept_figure, mark_content
+from .saving import content_keys_read, kept_figure, mark_content
 from .labels import names
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
@@ -229,8 +229,11 @@ def _along_one_line(own, other) -> bool:
 
 def _rivals_of(own, rivals) -> list:
     """The figure's other named vectors that a name of ``own`` must keep away from: not ``own``
-    itself, not one lying along it (their names share the room beside the line)."""
-    return [r for r in rivals if r != own and not _along_one_line(own, r)]
+    itself, not one lying along it (their names share the room beside the line) — the nearest to
+    its middle first, where a candidate box fails soonest (the test is the same for any order)."""
+    mid = ((own[0][0] + own[1][0]) / 2, (own[0][1] + own[1][1]) / 2)
+    return sorted((r for r in rivals if r != own and not _along_one_line(own, r)),
+                  key=lambda r: _seg_point(mid, r))
 
 
 def _own_vector(box, own, rivals, margin: float) -> bool:
@@ -261,8 +264,9 @@ def _leader_candidates(lb: Label, w: float, h: float, gap: float,
 
 
 def _others_of(p, others: list) -> list:
-    """The figure's other labelled points, not ``p`` itself."""
-    return [q for q in others if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF]
+    """The figure's other labelled points, not ``p`` itself, the nearest first (see _rivals_of)."""
+    return sorted((q for q in others if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF),
+                  key=lambda q: math.hypot(q[0] - p[0], q[1] - p[1]))
 
 
 def _own(box, p, others: list, margin: float) -> bool:
@@ -385,16 +389,19 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
                  colours: bool = True, roles: tuple[str, ...] = ("point", "vector", "number")):
     """The scene as a matplotlib figure at a true reduction (see the module's docstring); inside a
     build whose cache keeps this figure, a stand-in with its sizes (:func:`.saving.kept_figure`)."""
-    def make():
-        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
+    key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles) \
+        if content_keys_read() else None
 
-    key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
-    kept = kept_figure(key, make)
+    def make():
+        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles,
+                                  key=key)
+
+    kept = kept_figure(key, make) if key is not None else None
     return kept if kept is not None else make()
 
 
 def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colours: bool,
-                       roles: tuple[str, ...]):
+                       roles: tuple[str, ...], key: str | None = None):
     r = reduction_for(scene, max_w_mm, max_h_mm)
     for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
         labels = place_labels(scene, r, roles)
@@ -489,8 +496,9 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
     fig.reportgen_reduction = r
     fig.width_cm = w_mm / 10.0
     fig.scene = scene
-    fig.reportgen_key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
-    mark_content(fig)
+    fig.reportgen_key = key          # its content key, where one is read (saving.content_keys_read)
+    if key is not None:
+        mark_content(fig)
     return fig
 
 
