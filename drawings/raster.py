@@ -165,6 +165,9 @@ def unsupported(doc: Drawing, font: str | None) -> str | None:
             return kind
         if e.dxf.hasattr("true_color") or e.dxf.get("invisible", 0):
             return f"{kind}: true colour or invisible"
+        layer = doc.layers.get(_layer_name(e, ctx))
+        if layer is not None and (layer.is_off() or layer.is_frozen()):
+            return f"{kind} on a layer that is off or frozen"
         if _gray(_color(doc, e, ctx)) is None:
             return f"{kind}: a colour other than black or grey"
         if kind == "DIMENSION":
