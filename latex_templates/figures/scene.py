@@ -247,19 +247,18 @@ def _leader_candidates(lb: Label, w: float, h: float, gap: float,
                        offs: tuple[float, ...] = (4.0, 6.0, 8.0, 11.0)) -> list[tuple[float, float]]:
     """Centres round the anchor (a point, or the middle of a vector: across it first) for a label
     on a leader."""
-    p = np.asarray(lb.at)
+    # plain floats: the same IEEE arithmetic as numpy's scalars, without their overhead
+    px, py = float(lb.at[0]), float(lb.at[1])
     if lb.along is not None:
-        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
-        d = b - a
-        base = math.atan2(d[0], -d[1])             # across the vector
+        (ax, ay), (bx, by) = lb.along
+        base = math.atan2(float(bx) - float(ax), -(float(by) - float(ay)))   # across the vector
     else:
         base = math.pi / 4
     out = []
     for off in offs:
         for k in range(16):
             ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
-            out.append((float(p[0] + math.cos(ang) * (w / 2 + gap * off)),
-                        float(p[1] + math.sin(ang) * (h / 2 + gap * off))))
+            out.append((px + math.cos(ang) * (w / 2 + gap * off), py + math.sin(ang) * (h / 2 + gap * off)))
     return out
 
 
@@ -289,27 +288,28 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
     if lb.role == "vector" and lb.along is not None and lb.leader:
         cands = _leader_candidates(lb, w, h, gap)
     elif lb.role == "vector" and lb.along is not None:
-        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
-        d = b - a
-        n = float(np.hypot(*d)) or 1.0
-        u = d / n
-        nrm = np.array([-u[1], u[0]])
+        (ax, ay), (bx, by) = lb.along
+        ax, ay, bx, by = float(ax), float(ay), float(bx), float(by)
+        dx, dy = bx - ax, by - ay
+        n = float(np.hypot(dx, dy)) or 1.0
+        nx, ny = -(dy / n), dx / n                 # the unit normal
         for off in (1.0, 2.0, 3.5, 5.0):
+            reach = gap * off + 0.5 * abs(nx) * w + 0.5 * abs(ny) * h
             for t in (0.5, 0.35, 0.65, 0.2, 0.8):
                 for side in (1.0, -1.0):
-                    q = a + d * t + side * nrm * (gap * off + 0.5 * abs(nrm[0]) * w + 0.5 * abs(nrm[1]) * h)
-                    cands.append((float(q[0]), float(q[1])))
+                    cands.append((ax + dx * t + side * nx * reach, ay + dy * t + side * ny * reach))
     else:
         p = np.asarray(lb.at)
         v = p - centre
         base = math.atan2(v[1], v[0]) if np.hypot(*v) > MM_ROUNDOFF else math.pi / 4
+        px, py = float(p[0]), float(p[1])
         for off in (1.0, 2.0, 3.5, 5.0, 7.0):
             for k in range(16):
                 ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
                 ux, uy = math.cos(ang), math.sin(ang)
                 t = min((w / 2) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
                         (h / 2) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
-                cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
+                cands.append((px + ux * (t + gap * off), py + uy * (t + gap * off)))
     if not point and rivals:
         rivals = _rivals_of(lb.along, rivals)
     if point and others:
