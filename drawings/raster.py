@@ -43,6 +43,9 @@ DEFAULT_LINEWEIGHT = 25
 #: supersampled page) between the curve and its chords.
 FLATTEN_PX = 0.25
 
+#: Pillow (a dependency of matplotlib) lays out text at a fractional size from 10.1 on.
+MIN_PILLOW = (10, 1)
+
 _DRAWN = frozenset({"LINE", "LWPOLYLINE", "CIRCLE", "ARC", "SOLID", "TEXT", "MTEXT", "DIMENSION", "INSERT"})
 _SKIPPED = frozenset({"POINT"})   # the dimensions' definition points (layer Defpoints): never drawn
 
@@ -157,6 +160,8 @@ def unsupported(doc: Drawing, font: str | None) -> str | None:
 
     if font is None:
         return "no preview font"
+    if _pillow_version() < MIN_PILLOW:
+        return "Pillow older than 10.1 (no fractional font sizes)"
     for e, ctx in _walk(doc, doc.modelspace(), _Context()):
         kind = e.dxftype()
         if kind in _SKIPPED:
@@ -204,6 +209,11 @@ def unsupported(doc: Drawing, font: str | None) -> str | None:
         if ext is not None and tuple(ext) != (0.0, 0.0, 1.0):
             return f"{kind} with an extrusion"
     return None
+
+
+def _pillow_version() -> tuple[int, ...]:
+    import PIL
+    return tuple(int(p) for p in PIL.__version__.split(".")[:2] if p.isdigit())
 
 
 @dataclass(frozen=True)
