@@ -274,6 +274,9 @@ class _Subset:
 
 #: Subset fonts made in this process: (font file, face, glyphs) → (font bytes, glyph numbers).
 _SUBSETS: dict[tuple[str, int, frozenset[int]], tuple[bytes, dict[int, int]]] = {}
+#: Subsets kept (the oldest forgotten first): a note makes ~70 distinct ones of 10–100 kB, and a
+#: process that builds many notes (``--watch``, ``batch``) must not grow without bound.
+KEEP_SUBSETS = 512
 
 
 def remember_font_subsets() -> None:
@@ -297,6 +300,8 @@ def remember_font_subsets() -> None:
             with original(fontfile, glyphs) as subset:
                 found = (pdf_ps.font_as_file(subset.font).getvalue(), dict(subset.glyph_index_map))
             _SUBSETS[key] = found
+            if len(_SUBSETS) > KEEP_SUBSETS:
+                del _SUBSETS[next(iter(_SUBSETS))]
         return nullcontext(_Subset(_SubsetFont(found[0]), dict(found[1])))
 
     get_glyphs_subset.reportgen_memo = True          # type: ignore[attr-defined]
