@@ -7,7 +7,8 @@ language (catalogue, decimal mark); the build cache adds the code's fingerprint 
 file, the libraries' versions, the fonts installed). Inside a build whose cache keeps a plot
 with that key, the function is not called: a :class:`.saving.KeptFigure` stands in and the kept
 PDF is copied. A plot whose arguments have no canonical form is made and saved as before (no
-key); one that gets artists after it is made loses its key (:func:`.saving.content_key`).
+key), as is every plot of a build without a cache (``content_keys_read``); one that gets artists
+after it is made loses its key (:func:`.saving.content_key`).
 
 The function must draw nothing but its arguments in the active language: no other global state,
 no stage of the project read on the side. ``skip``: dataclass fields of the arguments that the
@@ -21,7 +22,7 @@ from typing import Any, Callable, TypeVar
 from reportgen.errors import InternalError
 
 from ..parts import active, active_strings
-from .saving import kept_figure, mark_content
+from .saving import content_keys_read, kept_figure, mark_content
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -45,7 +46,7 @@ def keyed_plot(skip: frozenset[tuple[str, str]] = frozenset()) -> Callable[[F], 
     def wrap(fn: F) -> F:
         @functools.wraps(fn)
         def keyed(*args: Any, **kwargs: Any) -> Any:
-            key = plot_key(fn, args, kwargs, skip)
+            key = plot_key(fn, args, kwargs, skip) if content_keys_read() else None
             if key is None:
                 return fn(*args, **kwargs)
 
