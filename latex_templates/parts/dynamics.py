@@ -250,10 +250,14 @@ def scale_records(scenes: DynamicsScenes) -> dict[str, CalcRecord | Var]:
     mu_A = record(r"\mu_A", "mu_M * mu_phi * H", "Дж/мм", mu_M, H, mu_phi=mu_phi,
                   meaning=tr("dynamics.m22"))
     k = Var("k", "k", scenes.energy.values["k"], "", tr("dynamics.m04"))
-    mu_E = record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A,
-                  meaning=tr("dynamics.m23"))
+    # k < 1: ΔE is drawn reduced n = 1/k times (the Wittenbauer construction would not fit the sheet
+    # at μE = μA, reportgen.dynamics.graphical._enlargement): written μE = μA·n, as a student would
+    n = Var("n", "n", 1.0 / k.value, "", tr("dynamics.m04r"))
+    mu_E = (record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A, meaning=tr("dynamics.m23")) if k.value >= 1
+            else record(r"\mu_E", "mu_A * n", "Дж/мм", n, mu_A=mu_A, meaning=tr("dynamics.m23")))
     mu_J = Var("mu_J", r"\mu_J", scenes.wittenbauer.scale(MU_J).value, "кг·м²/мм", tr("dynamics.m05"))
-    return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
+    return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "n": n, "mu_E": mu_E,
+            "mu_J": mu_J}
 
 
 def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:

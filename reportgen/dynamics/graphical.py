@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from ..scenes.boxes import GraphLayout
+from ..scenes.dynamics import J_BEYOND_MM
 from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle, moment_and_inertia
 from ..geometry import readonly as _ro
@@ -57,7 +58,7 @@ class GraphicalReplica:
     mu_M: float
     H: float
     mu_A: float
-    enlargement: int
+    enlargement: float           # k of μE = μA / k: an int ≥ 1 (ENLARGE), or 1/n (a reduction)
     mu_E: float
     mu_J: float
     psi_max_deg: float
@@ -102,6 +103,37 @@ def replica_positions(cycle: Cycle, positions: int) -> np.ndarray:
     return np.union1d(np.union1d(th, cycle.breaks), [TWO_PI])
 
 
+def wittenbauer_height(e: np.ndarray, jx: np.ndarray, t_max: float, t_min: float) -> float:
+    """Height of the Wittenbauer construction, mm: the curve ΔE(J), the ΔE axis from 0, the points K
+    and L where the tangents cut it and the tangents' ends at the end of the J axis (as
+    :func:`reportgen.scenes.dynamics.wittenbauer_scene` draws them)."""
+    K, L = float(np.max(e - jx * t_max)), float(np.min(e - jx * t_min))
+    x_end = float(np.max(jx)) + J_BEYOND_MM
+    ys = np.concatenate((e, [0.0, K, L, K + x_end * t_max, L + x_end * t_min]))
+    return float(ys.max() - ys.min())
+
+
+def _enlargement(e_A: np.ndarray, jx: np.ndarray, mu_J: float, mu_A: float, omega_m: float, delta: float,
+                 layout: GraphLayout) -> float:
+    """k of μE = μA / k: the largest of ENLARGE that draws the span of ΔE within ``layout.e_height``
+    (1 if none), made smaller where the whole Wittenbauer construction would not fit
+    ``layout.w_height``: k = 1/n, n the smallest round reduction (1, 2, 2.5, 4, 5 × 10^j) that fits.
+
+    Every ordinate of that construction — ΔE, K, L, the tangents' ends — is ∝ 1/μE (tg ψ ∝ μJ/μE at a
+    fixed μJ), so its height at k is k times its height at k = 1. K and L stand about J_red·ω_m²/(2μE)
+    below the curve: a machine whose J_red·ω_m²/2 (or its variation) dwarfs ΔE (the press with its
+    lengths × 100 and its masses kept: ψ ≈ 86°) put them metres below the ΔE axis at μE = μA."""
+    span = float(e_A.max() - e_A.min())
+    t_max, t_min = tangent_slopes(mu_J, mu_A, omega_m, delta)      # at k = 1
+    height = wittenbauer_height(e_A, jx, t_max, t_min)
+    fits = [k for k in ENLARGE if k * span <= layout.e_height and k * height <= layout.w_height]
+    if fits:
+        return max(fits)
+    if height <= layout.w_height:
+        return 1
+    return 1.0 / round_up(height / layout.w_height, PLAN_SERIES)
+
+
 def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayout,
                scales: dict | None = None) -> dict:
     wm = cycle.omega_m
@@ -126,14 +158,13 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     mu_A = work_scale(mu_M, mu_phi, H)
     drive = -a[-1] * x / x[-1]
     e_A = a + drive
+    mu_J = s.setdefault("mu_J", nice_ceil(float(J.max()) / layout.j_width))
+    jx = J / mu_J
     if "enlargement" not in s:
-        span = float(e_A.max() - e_A.min())
-        s["enlargement"] = max([k for k in ENLARGE if k * span <= layout.e_height] or [1])
+        s["enlargement"] = _enlargement(e_A, jx, mu_J, mu_A, wm, delta, layout)
     k = s["enlargement"]
     mu_E = mu_A / k
     e = e_A * k
-    mu_J = s.setdefault("mu_J", nice_ceil(float(J.max()) / layout.j_width))
-    jx = J / mu_J
     t_max, t_min = tangent_slopes(mu_J, mu_E, wm, delta)
     up, lo = e - jx * t_max, e - jx * t_min
     iK, iL = int(np.argmax(up)), int(np.argmin(lo))
