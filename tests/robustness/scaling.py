@@ -1,0 +1,130 @@
+"""An example's task scaled: lengths × k, masses × m, the crank's speed × w, the given forces × f.
+
+Every number of the linkage's sections is scaled by the unit the task format gives its key
+(``reportgen.taskspec``: ``Key.unit()``), so a key added to the format with a unit is scaled too
+(and one with a unit this table does not know fails the test instead of being left as it was):
+
+=========  ==========  ===============================================================
+unit       factor      keys (today)
+=========  ==========  ===============================================================
+m          k           points, link length(s), a guide's ``through``
+kg         m           link masses
+kg·m²      m·k²        link inertias, ``dynamics.crank_inertia``
+kg/m       m/k         ``mass_rules.q`` (masses by the rule q·l scale as m)
+rad/s      w           the drive's ω
+rpm        w           the planetary's motor speed (the reducer's ratio stays)
+N          f           forces of the loads
+N·m        f·k         moments of the loads (a force × a length)
+m/s²       g_factor    g: 1, or k·w² for dynamic similarity (weights m·g scale as inertia forces)
+=========  ==========  ===============================================================
+
+Left as they are: angles, fractions, counts, δ, the flywheel's density, and the gears (their
+module in mm describes a gear pair that does not depend on the linkage).
+
+With ``f = m·k·w²`` and ``g_factor = k·w²`` the task is dynamically similar to the example: every
+force (given, weight, inertia, reaction) scales with f, every moment with f·k (:func:`similar`).
+"""
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from reportgen.taskspec import SECTION, SECTIONS
+from reportgen.zoo import toml_value
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "examples"
+#: The examples with a linkage, one of each mechanism (press-en, shaper-uk: the same numbers).
+LINKAGE_EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3", "control-work")
+#: The sections whose numbers are scaled; the others (document, gears, crane …) are copied.
+SCALED_SECTIONS = ("mechanism", "dynamics", "planetary")
+#: Units that are not scaled (angles, shares, a density, gear sizes in mm).
+UNSCALED_UNITS = ("", "degrees", "degrees (a crank angle)", "kg/m³", "mm", "%", "a share of the module")
+
+
+@dataclass(frozen=True)
+class Factors:
+    k: float = 1.0          # lengths
+    m: float = 1.0          # masses
+    w: float = 1.0          # the crank's speed
+    f: float = 1.0          # the given forces
+    g: float = 1.0          # gravity
+
+    def of(self, unit: str) -> float:
+        table = {"m": self.k, "kg": self.m, "kg·m²": self.m * self.k ** 2, "kg/m": self.m / self.k,
+                 "rad/s": self.w, "rpm": self.w, "N": self.f, "N·m": self.f * self.k, "m/s²": self.g}
+        if unit in table:
+            return table[unit]
+        assert unit in UNSCALED_UNITS, f"a key in {unit!r}: tests/robustness/scaling.py does not know how to scale it"
+        return 1.0
+
+
+def similar(k: float, m: float, w: float) -> Factors:
+    """Dynamic similarity: forces × m·k·w² (given ones too), g × k·w²."""
+    return Factors(k, m, w, m * k * w * w, k * w * w)
+
+
+def _units() -> dict[tuple[str, str], str]:
+    return {(s.path, key.name): key.unit() for s in SECTIONS for key in s.keys}
+
+
+UNITS = _units()
+
+
+def _scale_numbers(value: Any, factor: float) -> Any:
+    if isinstance(value, bool) or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)):
+        return float(value) * factor
+    if isinstance(value, list):
+        return [_scale_numbers(v, factor) for v in value]
+    if isinstance(value, dict):
+        return {k: _scale_numbers(v, factor) for k, v in value.items()}
+    return value
+
+
+def _walk(table: dict, path: str, fac: Factors) -> dict:
+    out: dict = {}
+    for key, value in table.items():
+        unit = UNITS.get((path, key))
+        sub = f"{path}.{key}"
+        if unit:
+            out[key] = _scale_numbers(value, fac.of(unit))
+        elif isinstance(value, dict):
+            out[key] = _walk(value, sub, fac)
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            out[key] = [_walk(v, sub, fac) for v in value]
+        else:
+            out[key] = value
+    return out
+
+
+def dumps(data: dict) -> str:
+    """TOML text of a task read by tomllib: one ``[section]`` per top-level table, everything
+    under it inline (arrays of tables as arrays of inline tables)."""
+    lines = []
+    for name, table in data.items():
+        lines.append(f"[{name}]")
+        lines += [f"{k} = {toml_value(v)}" for k, v in table.items()]
+        lines.append("")
+    return "\n".join(lines)
+
+
+def example_data(name: str) -> dict:
+    return tomllib.loads((EXAMPLES / name / "task.toml").read_text(encoding="utf-8"))
+
+
+def scaled(name: str, fac: Factors, drop: tuple[str, ...] = ()) -> str:
+    """The task text of example ``name`` scaled by ``fac`` (sections in ``drop`` left out)."""
+    data = example_data(name)
+    out = {}
+    for section, table in data.items():
+        if section in drop:
+            continue
+        out[section] = _walk(table, section, fac) if section in SCALED_SECTIONS else table
+    mech = out.get("mechanism")
+    if mech is not None and "g" not in mech and fac.g != 1.0:
+        mech["g"] = SECTION["mechanism"].default("g") * fac.g     # the default g, scaled
+    return dumps(out)
