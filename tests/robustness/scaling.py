@@ -15,13 +15,13 @@ rad/s      w           the drive's ω
 rpm        w           the planetary's motor speed (the reducer's ratio stays)
 N          f           forces of the loads
 N·m        f·k         moments of the loads (a force × a length)
-m/s²       g_factor    g: 1, or k·w² for dynamic similarity (weights m·g scale as inertia forces)
+m/s²       g_factor    g: 1, or 0 for dynamic similarity (no weights)
 =========  ==========  ===============================================================
 
 Left as they are: angles, fractions, counts, δ, the flywheel's density, and the gears (their
 module in mm describes a gear pair that does not depend on the linkage).
 
-With ``f = m·k·w²`` and ``g_factor = k·w²`` the task is dynamically similar to the example: every
+With ``f = m·k·w²`` and ``g_factor = 0`` the task is dynamically similar to the example: every
 force (given, weight, inertia, reaction) scales with f, every moment with f·k (:func:`similar`).
 """
 from __future__ import annotations
@@ -62,8 +62,9 @@ class Factors:
 
 
 def similar(k: float, m: float, w: float) -> Factors:
-    """Dynamic similarity: forces × m·k·w² (given ones too), g × k·w²."""
-    return Factors(k, m, w, m * k * w * w, k * w * w)
+    """Dynamic similarity: forces × m·k·w² (given ones too), without gravity (g = 0: a scaled g,
+    k·w²·9.81, leaves the loader's range 0 … 50 m/s² at once)."""
+    return Factors(k, m, w, m * k * w * w, 0.0)
 
 
 def _units() -> dict[tuple[str, str], str]:
