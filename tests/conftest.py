@@ -76,6 +76,9 @@ SLOW_TESTS = (
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_geometry_same_in_note_and_sheet",
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_caption_and_ab_from_the_scene",
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_note_designations_legible_and_clear",
+    # every sheet of scaled examples drawn (hypothesis), and scaled examples built without the PDF
+    "tests/robustness/test_scaled_sheets.py::test_scaled_example_every_sheet",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_example_builds_without_pdf",
 )
 
 

@@ -38,6 +38,8 @@ READING_MM = 0.5
 NICE = (*PLAN_SERIES, 10.0)
 #: Enlargements allowed from the work diagram to the ΔE diagram (μE = μA / k).
 ENLARGE = (1, 2, 4, 5, 10)
+#: A step past a round scale factor to the next one of the series (whose steps are ≥ 25 %).
+NEXT_ROUND = 0.01
 
 
 def nice_ceil(x: float) -> float:
@@ -134,6 +136,12 @@ def _enlargement(e_A: np.ndarray, jx: np.ndarray, mu_J: float, mu_A: float, omeg
     return 1.0 / round_up(height / layout.w_height, PLAN_SERIES)
 
 
+def _span(*arrays) -> float:
+    """From the lowest to the highest ordinate, 0 included (the diagram's axis), mm."""
+    v = np.concatenate([np.atleast_1d(np.asarray(a, dtype=float)) for a in arrays] + [np.zeros(1)])
+    return float(v.max() - v.min())
+
+
 def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayout,
                scales: dict | None = None) -> dict:
     wm = cycle.omega_m
@@ -145,24 +153,33 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     mu_phi = s.setdefault("mu_phi", TWO_PI / layout.phi_axis)
     # a machine without load (M_red ≈ 0) still gets a finite scale: a floor of 1e-9·J·ω² (N·m)
     m_ref = max(float(np.abs(np.concatenate((M, Mmid))).max()), RTOL_EQUAL * float(J.max()) * wm * wm)
-    mu_M = s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
     x = theta / mu_phi
-    y_mid = Mmid / mu_M
-    steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
-    a_H = np.concatenate(([0.0], np.cumsum(steps)))  # a·H, mm²
-    if "H" not in s:
-        need = float(np.abs(a_H).max()) / layout.a_height
-        s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - RTOL_ROUNDOFF))
-    H = s["H"]
-    a = a_H / H
-    mu_A = work_scale(mu_M, mu_phi, H)
-    drive = -a[-1] * x / x[-1]
-    e_A = a + drive
     mu_J = s.setdefault("mu_J", nice_ceil(float(J.max()) / layout.j_width))
     jx = J / mu_J
-    if "enlargement" not in s:
-        s["enlargement"] = _enlargement(e_A, jx, mu_J, mu_A, wm, delta, layout)
-    k = s["enlargement"]
+    choose = "mu_M" not in s
+    s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
+    while True:
+        mu_M = s["mu_M"]
+        y_mid = Mmid / mu_M
+        steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
+        a_H = np.concatenate(([0.0], np.cumsum(steps)))  # a·H, mm²
+        if "H" not in s:
+            need = float(np.abs(a_H).max()) / layout.a_height
+            s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - RTOL_ROUNDOFF))
+        H = s["H"]
+        a = a_H / H
+        mu_A = work_scale(mu_M, mu_phi, H)
+        drive = -a[-1] * x / x[-1]
+        e_A = a + drive
+        k = s["enlargement"] if "enlargement" in s else _enlargement(e_A, jx, mu_J, mu_A, wm, delta, layout)
+        # sheet 3's column holds M, A and ΔE one under the other: each filling its own box, they
+        # could overflow it together (conveyor with its lengths × 0.37 and its force × 8.5); then μM
+        # is the next round value, H kept (M and A shrink, ΔE keeps its own enlargement rule)
+        column = _span(M / mu_M, y_mid) + _span(a, [drive[-1]]) + _span(e_A * k)
+        if not choose or column <= layout.column_height:
+            break
+        s["mu_M"] = nice_ceil(mu_M * (1.0 + NEXT_ROUND))
+    s.setdefault("enlargement", k)
     mu_E = mu_A / k
     e = e_A * k
     t_max, t_min = tangent_slopes(mu_J, mu_E, wm, delta)

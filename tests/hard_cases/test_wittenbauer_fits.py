@@ -82,6 +82,29 @@ def test_sheet_3_has_room_for_w_height():
     assert LAY.w_height + 8.0 + dd.TOP_MM + dd.BOTTOM_MM + dd.GAP_MM + j_height <= room
 
 
+def test_sheet_3_column_has_room_for_column_height():
+    """GraphLayout.column_height (M, A, ΔE) + ω(φ) at its largest (2·omega_height) + four titles,
+    margins and gaps + the names of the break positions (≤ 6 letters: «к.р.х.», «e.w.s.») fit sheet 3's
+    left column."""
+    sheet = Sheet.a1(_project(1.0).task.document, title="", code="", number=3, count=4)
+    fr = sheet.frame
+    room = (sheet.extra_rect.y0 - dynamics.CLEAR_MM) - (fr.y0 + dynamics.CLEAR_MM)
+    names = 6 * 2.6 + 6.0                                       # dynamics_diagrams.spans()
+    fixed = 4 * (dd.TOP_MM + dd.BOTTOM_MM + 8.0) + names + 3 * dd.GAP_MM
+    assert LAY.column_height + 2 * LAY.omega_height + fixed <= room
+
+
+def test_conveyor_force_x8_column_fits():
+    """Conveyor with lengths × 0.365 and its force × 8.5: M, A and ΔE each filled their box and the
+    column ran 18 mm under the frame (ω(φ) outside it). Now μM is one round step coarser."""
+    project = Project(loads_task(scaled("conveyor", Factors(k=0.3654892944104133, f=8.527420119552934),
+                                        drop=("gears", "planetary"))))
+    g = project.dynamics.graphical
+    sheet = dynamics.draw(project, 3, 4)
+    assert sheet.overlaps() == [] and outside_frame(sheet) == []
+    assert g.mu_M == 20.0           # 10 fills the box of M alone
+
+
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(k=st.floats(0.01, 100.0), m=st.floats(0.01, 100.0))
 def test_the_construction_fits_for_any_lengths_and_masses(k, m):

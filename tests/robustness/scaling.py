@@ -26,6 +26,7 @@ force (given, weight, inertia, reaction) scales with f, every moment with f·k (
 """
 from __future__ import annotations
 
+import os
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -38,6 +39,9 @@ ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 #: The examples with a linkage, one of each mechanism (press-en, shaper-uk: the same numbers).
 LINKAGE_EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3", "control-work")
+#: Hypothesis examples per property test: few by default (each solves or draws a whole example);
+#: ``ROBUSTNESS_EXAMPLES=200`` for a longer hunt.
+EXAMPLES_PER_TEST = int(os.environ.get("ROBUSTNESS_EXAMPLES", "8"))
 #: The sections whose numbers are scaled; the others (document, gears, crane …) are copied.
 SCALED_SECTIONS = ("mechanism", "dynamics", "planetary")
 #: Units that are not scaled (angles, shares, a density, gear sizes in mm).
@@ -125,7 +129,32 @@ def scaled(name: str, fac: Factors, drop: tuple[str, ...] = ()) -> str:
         if section in drop:
             continue
         out[section] = _walk(table, section, fac) if section in SCALED_SECTIONS else table
-    mech = out.get("mechanism")
-    if mech is not None and "g" not in mech and fac.g != 1.0:
-        mech["g"] = SECTION["mechanism"].default("g") * fac.g     # the default g, scaled
+    _scaled_defaults(out, fac)
     return dumps(out)
+
+
+def _scaled_defaults(data: dict, fac: Factors) -> None:
+    """A key left out takes the loader's default, which is not scaled: write it, scaled (the mass
+    rule's q of crank-slider, g). Tables (not arrays of tables) under a scaled section only."""
+    for section in SECTIONS:
+        if section.shape == "array" or section.path.split(".")[0] not in SCALED_SECTIONS:
+            continue
+        *parents, leaf = section.path.split(".")
+        holder = data
+        for name in parents:
+            holder = holder.get(name) if isinstance(holder, dict) else None
+            if holder is None:
+                break
+        if not isinstance(holder, dict):
+            continue
+        for key in section.keys:
+            default = key.default
+            if not key.unit() or isinstance(default, bool) or not isinstance(default, (int, float)):
+                continue
+            if fac.of(key.unit()) == 1.0:
+                continue
+            table = holder.setdefault(leaf, {}) if parents else holder[leaf] if leaf in holder else None
+            if table is None:
+                continue
+            if key.name not in table:
+                table[key.name] = float(default) * fac.of(key.unit())

@@ -24,7 +24,7 @@ from reportgen.kinetostatics import solve_reactions, virtual_power_moment
 from reportgen.project import Project
 from reportgen.taskfile import load_task, loads_task
 
-from .scaling import EXAMPLES, LINKAGE_EXAMPLES, Factors, scaled, similar
+from .scaling import EXAMPLES, EXAMPLES_PER_TEST, LINKAGE_EXAMPLES, Factors, scaled, similar
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "hard_cases"))
 from test_hard_stages import check_kinetostatics  # noqa: E402
@@ -38,7 +38,7 @@ REL = 1e-7
 EXTRA_DEG = (17.0, 133.0, 251.0)
 #: Few examples, no shrinking (a solve takes up to a second: shrinking a failure took minutes); a
 #: failure prints the example's name and factors, enough to reproduce it with ``scaled``.
-SETTINGS = settings(max_examples=8, deadline=None, phases=(Phase.explicit, Phase.reuse, Phase.generate),
+SETTINGS = settings(max_examples=EXAMPLES_PER_TEST, deadline=None, phases=(Phase.explicit, Phase.reuse, Phase.generate),
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 
 _BASE: dict[str, Project] = {}
@@ -129,7 +129,7 @@ def test_scaled_example_is_solved_or_refused(tmp_path, capsys, name, k, m, w, f)
 @given(name=st.sampled_from(LINKAGE_EXAMPLES), k=FACTOR, m=FACTOR, w=FACTOR)
 def test_dynamically_similar_example_scales_every_force(name, k, m, w):
     fac = similar(k, m, w)
-    project, error = _project_or_error(scaled(name, fac))
+    project, error = _project_or_error(scaled(name, fac, drop=("gears", "planetary")))
     assert project is not None, error
     ref = base(name, g0=True)
     phi = _angles(ref)
@@ -147,9 +147,9 @@ def test_dynamically_similar_example_scales_every_force(name, k, m, w):
         assert d.J_flywheel == pytest.approx(dr.J_flywheel * m * k * k, rel=1e-6)
         assert d.M_drive == pytest.approx(dr.M_drive * fac.f * k, rel=1e-9)
         assert d.delta_achieved == pytest.approx(dr.delta_achieved, rel=1e-6)
-        # the sheet's construction keeps its proportions: the same k of μE, the same ψ
-        assert d.graphical.enlargement == dr.graphical.enlargement
-        assert d.graphical.psi_max_deg == pytest.approx(dr.graphical.psi_max_deg, rel=1e-9)
+        # the sheet's scales are round numbers each (not similar), but the replica still reads the
+        # flywheel within its own drawing accuracy (as tests/dynamics checks for the examples)
+        assert abs(d.graphical.J_fly - d.J_flywheel) <= d.graphical.accuracy
 
 
 def test_the_helper_scales_what_it_says():
