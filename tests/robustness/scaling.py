@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from reportgen.taskspec import SECTION, SECTIONS
+from reportgen.taskspec import SECTIONS
 from reportgen.zoo import toml_value
 
 ROOT = Path(__file__).resolve().parents[2]
