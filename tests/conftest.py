@@ -79,6 +79,8 @@ SLOW_TESTS = (
     # every sheet of scaled examples drawn (hypothesis), and scaled examples built without the PDF
     "tests/robustness/test_scaled_sheets.py::test_scaled_example_every_sheet",
     "tests/robustness/test_scaled_sheets.py::test_scaled_example_builds_without_pdf",
+    # section 3 of the press × 100 rendered in three languages
+    "tests/hard_cases/test_wittenbauer_fits.py::test_the_note_says_the_energy_graph_is_reduced",
 )
 
 

@@ -116,3 +116,25 @@ def test_the_construction_fits_for_any_lengths_and_masses(k, m):
     assert math.degrees(math.atan(tmax)) == pytest.approx(g.psi_max_deg, rel=1e-12)
     sheet = dynamics.draw(project, 3, 4)                  # the layout raised BuildError here
     assert overlaps(sheet) == [] and outside_frame(sheet) == []
+
+
+@pytest.mark.parametrize("lang, words", [("ru", "с~уменьшением в~20~раз"), ("uk", "зі~зменшенням у~20~разів"),
+                                         ("en", "drawn reduced 20~times")])
+def test_the_note_says_the_energy_graph_is_reduced(tmp_path, lang, words):
+    """Section 3 of the press × 100 (masses kept) in each language: the sentence of the reduction,
+    μE = μA·n as a record, and every record re-evaluates from its printed numbers."""
+    from latex_templates import NoteBuilder
+    from latex_templates.compose import compose
+    from latex_templates.render import Strings
+    from reportgen.calc import evaluate_displayed
+
+    text = scaled("press", Factors(k=100.0), drop=("gears", "planetary"))
+    assert 'language = "ru"' in text
+    project = Project(loads_task(text.replace('language = "ru"', f'language = "{lang}"')))
+    sections, _ = compose(project, Strings(lang), only=("linkage", "dynamics"))
+    note = NoteBuilder(project.task.document)
+    for s in sections:
+        note.add_section(s.section)
+    tex = note.render(tmp_path).read_text(encoding="utf-8")
+    assert words in tex
+    assert all(evaluate_displayed(rec).ok for rec in note.records)
