@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import given, strategies as st
 
 from drawings.primitives import format_number
 from drawings.sheet import Sheet
@@ -28,7 +28,7 @@ from reportgen.scenes.boxes import DEFAULT
 from reportgen.taskfile import loads_task
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from robustness.scaling import Factors, scaled  # noqa: E402
+from robustness.scaling import Factors, robustness_settings, scaled  # noqa: E402
 from robustness.sheetcheck import outside_frame, overlaps  # noqa: E402
 
 LAY = DEFAULT.diagrams
@@ -105,7 +105,7 @@ def test_conveyor_force_x8_column_fits():
     assert g.mu_M == 20.0           # 10 fills the box of M alone
 
 
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@robustness_settings(6)
 @given(k=st.floats(0.01, 100.0), m=st.floats(0.01, 100.0))
 def test_the_construction_fits_for_any_lengths_and_masses(k, m):
     project = _project(k, m)

@@ -42,6 +42,19 @@ LINKAGE_EXAMPLES = ("press", "crank-slider", "shaper", "conveyor", "class3", "co
 #: Hypothesis examples per property test: few by default (each solves or draws a whole example);
 #: ``ROBUSTNESS_EXAMPLES=200`` for a longer hunt.
 EXAMPLES_PER_TEST = int(os.environ.get("ROBUSTNESS_EXAMPLES", "8"))
+#: The suite draws the same examples every run (derandomized: CI does not turn red by chance);
+#: ``ROBUSTNESS_RANDOM=1`` draws new ones (with ``--hypothesis-seed=N`` to repeat a hunt).
+RANDOM = bool(os.environ.get("ROBUSTNESS_RANDOM"))
+
+
+def robustness_settings(max_examples: int = EXAMPLES_PER_TEST):
+    """Few examples, no shrinking (a solve or a drawing takes a second or more: shrinking one failure
+    took minutes; a failure prints the example's name and factors, enough to reproduce it with
+    :func:`scaled`), derandomized unless ``ROBUSTNESS_RANDOM`` is set."""
+    from hypothesis import HealthCheck, Phase, settings
+    return settings(max_examples=max_examples, deadline=None, derandomize=not RANDOM,
+                    phases=(Phase.explicit, Phase.reuse, Phase.generate) if RANDOM else (Phase.explicit, Phase.generate),
+                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 #: The sections whose numbers are scaled; the others (document, gears, crane …) are copied.
 SCALED_SECTIONS = ("mechanism", "dynamics", "planetary")
 #: Units that are not scaled (angles, shares, a density, gear sizes in mm).

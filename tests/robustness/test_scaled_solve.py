@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, Phase, given, settings, strategies as st
+from hypothesis import given, strategies as st
 
 from reportgen.cli import main
 from reportgen.dynamics import dynamics_of
@@ -24,7 +24,7 @@ from reportgen.kinetostatics import solve_reactions, virtual_power_moment
 from reportgen.project import Project
 from reportgen.taskfile import load_task, loads_task
 
-from .scaling import EXAMPLES, EXAMPLES_PER_TEST, LINKAGE_EXAMPLES, Factors, scaled, similar
+from .scaling import EXAMPLES, LINKAGE_EXAMPLES, Factors, robustness_settings, scaled, similar
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "hard_cases"))
 from test_hard_stages import check_kinetostatics  # noqa: E402
@@ -36,10 +36,7 @@ FACTOR = st.floats(-2.0, 2.0).map(lambda e: float(10.0 ** e))
 REL = 1e-7
 #: The crank angles at which the identities are checked: the analysed positions and a few more.
 EXTRA_DEG = (17.0, 133.0, 251.0)
-#: Few examples, no shrinking (a solve takes up to a second: shrinking a failure took minutes); a
-#: failure prints the example's name and factors, enough to reproduce it with ``scaled``.
-SETTINGS = settings(max_examples=EXAMPLES_PER_TEST, deadline=None, phases=(Phase.explicit, Phase.reuse, Phase.generate),
-                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+SETTINGS = robustness_settings()
 
 _BASE: dict[str, Project] = {}
 
