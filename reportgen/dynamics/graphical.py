@@ -40,6 +40,9 @@ NICE = (*PLAN_SERIES, 10.0)
 ENLARGE = (1, 2, 4, 5, 10)
 #: A step past a round scale factor to the next one of the series (whose steps are ≥ 25 %).
 NEXT_ROUND = 0.01
+#: At most this many steps to a coarser μM (five a decade: a column 10^20 times too tall; a NaN
+#: ordinate, which never fits, stops here instead of looping).
+COARSER_STEPS = 100
 
 
 def nice_ceil(x: float) -> float:
@@ -158,7 +161,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     jx = J / mu_J
     choose = "mu_M" not in s
     s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
-    while True:
+    for _coarser in range(COARSER_STEPS + 1):
         mu_M = s["mu_M"]
         y_mid = Mmid / mu_M
         steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
@@ -176,7 +179,7 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
         # could overflow it together (conveyor with its lengths × 0.37 and its force × 8.5); then μM
         # is the next round value, H kept (M and A shrink, ΔE keeps its own enlargement rule)
         column = _span(M / mu_M, y_mid) + _span(a, [drive[-1]]) + _span(e_A * k)
-        if not choose or column <= layout.column_height:
+        if not choose or column <= layout.column_height or _coarser == COARSER_STEPS:
             break
         s["mu_M"] = nice_ceil(mu_M * (1.0 + NEXT_ROUND))
     s.setdefault("enlargement", k)
