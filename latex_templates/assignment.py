@@ -136,7 +136,11 @@ def introduction_paragraphs(project, left_out) -> list:
         out.append(text)
     out += _work_paragraphs(project, strings)
     if left_out:
-        out.append(strings.get("sections.left_out") + Tex(" ") + Tex("; ").join(left_out) + Tex("."))
+        # the titles in quotes: «не приводятся: «Проектирование зубчатых передач».», not a capital
+        # letter in the middle of the sentence (issue 12)
+        q0, q1 = strings.get("title.quote_open"), strings.get("title.quote_close")
+        out.append(strings.get("sections.left_out") + Tex(" ")
+                   + Tex(", ").join(Tex(q0 + t + q1) for t in left_out) + Tex("."))
     return out
 
 

@@ -567,12 +567,15 @@ def _sci(x: float) -> str:
 
 
 def _conclusions(project, ks, comparison) -> tuple[str, ...]:
-    from ..numbers import num
+    """The section's findings: φ1 to 0,01° and the discrepancy as the note prints them elsewhere
+    (issue 12: one quantity, one rounding — «φ1 = 338,4°» against 338,39° in the text)."""
+    from ..numbers import mfixed, num
     from ..render import Strings
     strings = Strings(project.task.document.language or "ru")
     out = [strings.get("findings_kinetostatics.balancing").format(
-        phi=Tex(num(ks.phi_deg)), M=Tex(num(ks.balancing_moment, 6)),
-        Mz=Tex(num(ks.balancing_moment_zhukovsky, 6)), delta=Tex(num(comparison["delta"].value, 2)))]
+        phi=Tex(mfixed(ks.phi_deg, 2)), M=Tex(num(ks.balancing_moment, 6)),
+        Mz=Tex(num(ks.balancing_moment_zhukovsky, 6)),
+        delta=Tex("$" + comparison["delta"].result_number_latex() + "$"))]   # as printed in 2.7
     if any(mu < WARN_TRANSMISSION_DEG for mu in ks.transmission_deg.values()):
         out.append(strings.get("findings_kinetostatics.dead_centre"))
     return tuple(out)

@@ -135,6 +135,8 @@ def test_front_matter(example, built):
     assert "Механизм преобразует" in intro and "[1, 2]" in intro and "[3]" in intro
     if example == "conveyor":
         assert "проектирование эвольвентной" not in intro      # no [gears]: the work designs no gears
+        # the left-out section named in quotes, not as a capitalised word mid-sentence
+        assert "не приводятся: «Проектирование зубчатых передач»." in intro
 
 
 _AFTER_DISPLAY = re.compile(r"^\s*(\\end\{(equation|wherelist|align|gather|multline)\*?\}|\\\])\s*$")
