@@ -118,8 +118,9 @@ def introduction_paragraphs(project, left_out) -> list:
     """Paragraphs about this task, from the strings catalogue (``intro.*``)."""
     from .render import Tex
     from .numbers import num
-    strings = Strings(_lang(project))
     task = project.task
+    # a control work's own words where a course project has its own (control.overrides)
+    strings = Strings(_lang(project), overlay="control.overrides" if task.document.kind == "control-work" else None)
     out = []
     if task.mechanism is not None:
         mech = task.mechanism

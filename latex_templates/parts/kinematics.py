@@ -292,7 +292,9 @@ def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
     fig_a = scene_figure(project.scenes.acceleration_plans[i])
     sgn = 1.0 if project.model.omega >= 0 else -1.0
     ctx = {"i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "suffix": suffix,
-           "stroke": stroke_of(float(kin.phi[i]), project.strokes if project.full_cycle else None, sgn),
+           # a control work gives one position and no resistance: no working or idle stroke to name
+           "stroke": None if project.task.document.kind == "control-work" else
+           stroke_of(float(kin.phi[i]), project.strokes if project.full_cycle else None, sgn),
            "control": project.task.document.kind == "control-work", "tip": tip, "axis": axis,
            "fig_v": fv, "fig_a": fa, "fig_w_v": f"{fig_v.width_cm:.2f}cm", "fig_w_a": f"{fig_a.width_cm:.2f}cm",
            "fig_note_v": scene_caption(project, fig_v), "fig_note_a": scene_caption(project, fig_a),
