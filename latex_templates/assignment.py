@@ -61,6 +61,9 @@ def assignment_section(project) -> Section:
         ctx["mech"] = {"name": mech.name, "links": rows, "ground": ground, "slides": slides, "loads": loads,
                        "omega": mech.drive.omega, "drive": mech.drive.link, "g": mech.g,
                        "rules": mech.mass_rules, "any_rule": any(not ln.mass_given for ln in mech.links),
+                       # the rules' clauses this mechanism uses: no slider, no triangle → not named
+                       "rule_slider": any(ln.kind == "slider" and not ln.mass_given for ln in mech.links),
+                       "rule_triangle": any(len(ln.points) >= 3 and not ln.inertia_given for ln in mech.links),
                        "n_rpm": abs(mech.drive.omega) * 30 / math.pi}
     cw = task.control_work
     if cw is not None and cw.table is not None and cw.variant is not None:

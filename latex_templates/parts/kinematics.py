@@ -119,8 +119,10 @@ def content(project) -> PartContent:
         s_out = (x - x0) * strokes.direction
     else:
         s_out = np.zeros(len(kin.phi))
+    # a rocker's swing in degrees, as the text gives its range (ψ = 47,73°), not in radians
+    rocker = strokes is not None and strokes.output.kind != "slider"
     for j, ph in enumerate(kin.phi):
-        out_rows.append([j, math.degrees(ph) % 360, float(s_out[j])] +
+        out_rows.append([j, math.degrees(ph) % 360, math.degrees(float(s_out[j])) if rocker else float(s_out[j])] +
                         [float(kin.transmission_deg[g.key][j]) for g in st.groups[1:]])
     # --- velocity and acceleration plans of every plan position (the analysed one first) --------
     plan_ctx = []
