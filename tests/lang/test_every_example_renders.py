@@ -98,3 +98,11 @@ def test_the_note_speaks_only_of_what_the_mechanism_has(language, moment, tmp_pa
     for absent in ("ползун", "повзун", "slider", "треугольн", "трикутн", "triangular"):
         assert absent not in rules, absent
     assert r"$\psi$, \textdegree" in tex and r"$\psi$, рад" not in tex and r"$\psi$, rad" not in tex
+
+
+def test_a_prismatic_pair_is_named_in_the_group_description(tmp_path):
+    """Issue 12 (a teacher's mark): «внутренних D и внешних B, D» named D twice; the outer D is the
+    slider's prismatic pair with the frame, and the note says so."""
+    tex = _render("press", "ru", tmp_path)
+    assert "внутренних $D$ и~внешних $B$, $D$~(поступательная)" in tex
+    assert "внутренних $B$ и~внешних $A$, $C$;" in tex
