@@ -11,7 +11,7 @@ from typing import cast
 
 from ..render import Tex
 
-from reportgen.calc import CalcRecord, Var
+from reportgen.calc import CalcRecord, Var, record
 from reportgen.planetary.schemes import expand
 
 from . import PartContent
@@ -112,7 +112,8 @@ def triangle_records(stage, u_main: CalcRecord) -> dict[str, CalcRecord]:
                   z1=zv["z1"], z2=zv["z2"])
     r["v_a"] = _rec("v_A", "w1 * r1 / 1000", "м/с", 4, _t("planetary.m10"), w1=w1, r1=r["r1"])
     la = Var("la", r"\overline{pa}", tri.vector_mm, "мм", _t("planetary.m11"))
-    r["mu_v"] = _rec(r"\mu_v", "v_a / la", "(м/с)/мм", 4, _t("planetary.m12"), v_a=r["v_a"], la=la)
+    # 5 significant digits, as sheet 4 prints it (drawings/scenes/planetary_dxf.py)
+    r["mu_v"] = record(r"\mu_v", "v_a / la", "(м/с)/мм", digits=5, meaning=_t("planetary.m12"), v_a=r["v_a"], la=la)
     lb = Var("lb", r"\overline{pb}", abs(tri.v_b_mm_read), "мм", _t("planetary.m13"))
     r["v_b"] = _rec("v_B", "mu_v * lb", "м/с", 4, _t("planetary.m14"), mu_v=r["mu_v"], lb=lb)
     r["omega_h"] = _rec(r"\omega_H", "v_b / (a / 1000)", "рад/с", 4, _t("planetary.m15"), v_b=r["v_b"], a=r["a"])
