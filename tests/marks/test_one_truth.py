@@ -230,7 +230,7 @@ def test_tangent_angles_print_as_on_sheet_3(example, built):
     out = built(example)
     mark = _mark(example)
     rows = [(label, vals) for label, vals in labelled_values(sheet_texts(out / "sheets"), mark)
-            if re.search(r"ψ ?m(ax|in)", label)]
+            if re.search(r"ψ ?m(ax|in)\s*,\s*°", label)]          # the table row «Угол ψmax, °»
     if not rows:
         pytest.skip("no Wittenbauer diagram in this work")
     note = re.sub(r"\s+", " ", pdf_text(out / "report.pdf"))
