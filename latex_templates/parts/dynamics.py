@@ -262,11 +262,16 @@ def scale_records(scenes: DynamicsScenes) -> dict[str, CalcRecord | Var]:
 
 def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     """ψmax, ψmin by the course's formula, KL measured on the Wittenbauer scene and J_fly from it."""
+    from .gear_pair import places
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
-    psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Tex(tr("dynamics.m50")), **common)
-    psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Tex(tr("dynamics.m51")), **common)
+
+    def angle(symbol: str, expr: str, meaning: str) -> CalcRecord:
+        """An angle to the course's 0,01° (sheet 3 prints the same: ψmin = 9,05°, not 9,046°)."""
+        probe = record(symbol, expr, "°", omega, delta, **common)
+        return record(symbol, expr, "°", omega, delta, meaning=Tex(meaning),
+                      digits=places(probe.value, ANGLE_DECIMALS), **common)
+    psi_max = angle(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", tr("dynamics.m50"))
+    psi_min = angle(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", tr("dynamics.m51"))
     KL = Var("KL", "KL", scenes.wittenbauer.values["KL_mm"], "мм", Tex(tr("dynamics.m24")))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
                   mu_E=sc["mu_E"], meaning=tr("dynamics.m25"))
