@@ -76,6 +76,14 @@ SLOW_TESTS = (
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_geometry_same_in_note_and_sheet",
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_caption_and_ab_from_the_scene",
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_note_designations_legible_and_clear",
+    # scaled examples (hypothesis): solved through the CLI and in process (~30 s), sheet 3 of each
+    # (~9 s), every sheet drawn, built without the PDF
+    "tests/robustness/test_scaled_solve.py::test_scaled_example_is_solved_or_refused",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_dynamics_sheet",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_example_every_sheet",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_example_builds_without_pdf",
+    # section 3 of the press × 100 rendered in three languages
+    "tests/hard_cases/test_wittenbauer_fits.py::test_the_note_says_the_energy_graph_is_reduced",
 )
 
 
