@@ -192,6 +192,8 @@ def test_russian_only_documents_refuse_another_language(lang):
 # совпадает с заданным…», «на плане — отрезок 0,9 мм», «что на схеме составляет»).
 _DISPLAY_LINE = re.compile(r"^\s*(\\VAR\{\s*(m\.calc|eq|m\.balance)\(|\\VAR\{[\w.]*equation\w*\}\s*$|\\\]\s*$|\\end\{(equation|align|gather|multline)\*?\}\s*$)")
 _CONTROL = re.compile(r"^\s*(\\BLOCK\{[^{}]*\}\s*)+")
+#: a line opening another branch of the same condition (its text never follows the display before it)
+_OTHER_BRANCH = re.compile(r"^\s*\\BLOCK\{\s*(elif|else)\b")
 #: the words that may continue a sentence after its display (the where-list and its kin)
 _CONTINUES = {"ru": ("где",), "uk": ("де",), "en": ("where",)}
 
@@ -203,6 +205,8 @@ def _sentence_after_display(lang: str, text: str) -> list[str]:
         if not _DISPLAY_LINE.match(line):
             continue
         for nxt in lines[i + 1:]:
+            if _OTHER_BRANCH.match(nxt):
+                break                # the display ended its branch; the text after it is another branch's
             rest = _CONTROL.sub("", nxt).strip()
             if not rest or rest.startswith(("\\VAR{m.calc", "\\VAR{eq(", "\\VAR{m.figure", "\\VAR{m.table", "%")):
                 continue                                     # the next display, a figure, a loop's end
