@@ -122,18 +122,13 @@ def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
     return None
 
 
-def lever_panel_of(project: Project, max_mm: float | None = None):
-    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's);
-    ``max_mm``: the turned plan at a round μv of its own within that many mm (an A3 control sheet)."""
+def lever_panel_of(project: Project):
+    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's), at
+    the replica's μv: the scale chosen for the sheet that draws it (``SceneBoxes.lever_for``), which
+    the note prints and at which the arms were read."""
     from drawings.scenes import kinetostatics_views as kv
     from reportgen.scenes.lever import lever_scene
-    ks = project.kinetostatics
-    mu_v = None
-    if max_mm is not None:
-        kin = ks.reactions.kin
-        far = max(float(np.hypot(*np.asarray(m.vel)[0])) for m in kin.points.values())
-        mu_v = max(ks.graphical.lever.scale, round_scale(far, max_mm))
-    return kv.lever_panel("lever", lever_scene(ks, project.linkage, mu_v=mu_v))
+    return kv.lever_panel("lever", lever_scene(project.kinetostatics, project.linkage))
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:

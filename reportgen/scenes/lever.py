@@ -91,14 +91,14 @@ def _seg_dist(x: np.ndarray, s0: np.ndarray, s1: np.ndarray) -> float:
     return float(np.hypot(*(x - s0 - t * d)))
 
 
-def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: float | None = None) -> Scene:
-    """The lever of :class:`reportgen.kinetostatics.Kinetostatics` ``ks`` (its analysed position);
-    ``mu_v``: the turned plan at another round μv than the note's (an A3 control sheet)."""
+def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None) -> Scene:
+    """The lever of :class:`reportgen.kinetostatics.Kinetostatics` ``ks`` (its analysed position) at
+    the replica's μv — the one scale of the sheet that draws it and of the note — with the arms as
+    the replica measured them there."""
     from ..kinetostatics.zhukovsky import turn_cw
     L, lev, r = ks.graphical.lever, ks.lever, ks.reactions
     kin = r.kin
-    mu_v = L.scale if mu_v is None else mu_v
-    k_arm = L.scale / mu_v            # the measured arms (mm at the note's μv) at this μv
+    mu_v = L.scale
     points: dict[str, tuple[float, float]] = {}
     for name, mo in kin.points.items():
         img = turn_cw(np.asarray(mo.vel))[0] / mu_v
@@ -111,7 +111,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
             ents.append(Segment(f"ray:{n}", (0.0, 0.0), points[n], "thin"))
         for a, b in zip(names, names[1:]):
             ents.append(Segment(f"link{k}:{a}{b}", points[a], points[b], "contour"))
-    loads = [(t.name, np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], t.arm_mm_measured * k_arm, "load")
+    loads = [(t.name, np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], t.arm_mm_measured, "load")
              for t, f in zip(L.terms, lev.forces) if t.magnitude > 0.0]
     pin = np.asarray(lev.crank_pin_image)[0] / mu_v
     fb = np.asarray(r.balancing_force)[0]
