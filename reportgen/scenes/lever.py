@@ -3,7 +3,7 @@ replica's μv (mm), every load at the image of its point at one round force scal
 than ``MIN_ARROW_MM`` drawn at that length), the balancing force F_ур at the image of the crank pin
 (found from the lever), each force named beside its own arrow, and the arm of each force with a
 non-zero arm (from the pole square to the force's line) named h1, h2, … in the order of the terms
-(or by ``arm_names``).
+(or by ``arm_names``); forces on one line of action share one arm, named «h1 = h9».
 
 Only a force's line of action and sense count on the lever (its moment about the pole), so an arrow
 may pull its point (tail at the point) or push it (head at the point), as statics draws either.
@@ -83,6 +83,21 @@ def _own_part(foot: np.ndarray, feet: list) -> np.ndarray:
     return u * max(ts + [0.0])
 
 
+def _shared_arms(arms: list) -> list:
+    """The arms (name, h, foot) with one foot (forces on one line of action: the press's F_пс and F_и5
+    at d, G3 and G4 whose images lie on one vertical) drawn once and named once, «h_{1} = h_{9}»
+    — as a student writes two equal arms on one line — instead of two names on one segment."""
+    out: list = []
+    for name, h, foot in arms:
+        same = next((k for k, (_, _, f) in enumerate(out) if float(np.hypot(*(f - foot))) < MM_EPS), None)
+        if same is None:
+            out.append((name, h, foot))
+        else:
+            n0, h0, f0 = out[same]
+            out[same] = (n0, f"{h0} = {h}", f0)
+    return out
+
+
 def _seg_dist(x: np.ndarray, s0: np.ndarray, s1: np.ndarray) -> float:
     """Distance from the point ``x`` to the segment s0–s1 (mm)."""
     d = s1 - s0
@@ -152,7 +167,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None) -> Scene:
             n_arm += 1
             if float(np.hypot(*foot)) > 3.0:
                 arms.append((name, (arm_names or {}).get(name, f"h_{{{n_arm}}}"), foot))
-    for name, h, foot in arms:
+    for name, h, foot in _shared_arms(arms):
         ents.append(Segment(f"arm:{name}", (0.0, 0.0), _pt(foot), "construction"))
         start = _own_part(foot, [f for _, _, f in arms])
         labels.append(Label(h, f"arm:{name}", _pt((start + foot) / 2), "vector", (_pt(start), _pt(foot))))
