@@ -575,7 +575,11 @@ def lever_scale(lever: Lever, reactions: Reactions, i: int, box: tuple[float, fl
 
 def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float,
            box: tuple[float, float] = DEFAULT_BOXES.lever) -> LeverGraphic:
-    mu_v = lever_scale(lever, reactions, i, box)
+    return lever_graphic(lever, reactions, i, arm_step, lever_scale(lever, reactions, i, box))
+
+
+def lever_graphic(lever: Lever, reactions: Reactions, i: int, arm_step: float, mu_v: float) -> LeverGraphic:
+    """The lever drawn at ``mu_v``: each arm measured on it (to ``arm_step`` mm), pa, F_ур = ∓ΣF·h/pa."""
     terms, total = [], 0.0
     for f in lever.forces:
         mag = float(np.hypot(*f.vector[i]))
