@@ -138,11 +138,42 @@ def test_the_lever_fills_the_room_sheet_2_gives_it(example):
         f"{example}: the lever would fit at μv = {_finer(mu):g} (drawn at {mu:g})"
 
 
-def test_the_control_works_lever_takes_its_room(built):
-    """On the control work's A1 sheet (sheet 1's drawing and the lever) the lever spans at least half
-    the width of the free field right of the plans (on main: 0,1 (м/с)/мм, 137 mm of ~300)."""
-    project, _, doc, rect = built
-    if project.task.document.kind != "control-work":
-        pytest.skip("sheet 2's lever: test_the_lever_fills_the_room_sheet_2_gives_it")
-    scene = _lever_panel_at(project, project.kinetostatics.graphical.lever.scale)
-    assert scene.width >= 0.5 * 300.0, scene.width
+def test_the_control_works_lever_takes_its_room():
+    """On the control work's A1 sheet the lever's plan spans at least half of the box the sheet gives it
+    (``SceneBoxes.lever_control``) one way (on main: 0,1 (м/с)/мм, 137 × 99 mm of 300 × 250)."""
+    from reportgen.scenes.boxes import DEFAULT
+    from reportgen.kinetostatics.graphical import lever_scale
+    project = example_project("control-work")
+    ks = project.kinetostatics
+    box = DEFAULT.lever_for(project.task)
+    assert box == DEFAULT.lever_control
+    mu = ks.graphical.lever.scale
+    assert mu == lever_scale(ks.lever, ks.reactions, 0, box)
+    scene = _lever_panel_at(project, mu)
+    assert scene.width - 24.0 >= 0.5 * box[0] or scene.height >= 0.5 * box[1], (scene.width, scene.height)
+
+
+def test_the_a3_control_sheet_draws_the_notes_lever(tmp_path):
+    """The control work on A3: the sheet's lever is at the μv the note prints, with the note's arms (on
+    main the A3 sheet redrew the lever at a μv of its own, 0,2 (м/с)/мм, while the note printed 0,1)."""
+    import ezdxf
+
+    from reportgen.project import Project
+    from reportgen.taskfile import load_task
+    from scene_readback import ROOT
+    text = (ROOT / "examples" / "control-work" / "task.toml").read_text(encoding="utf-8")
+    assert '\nsheet = "A1"' in text
+    task = tmp_path / "task.toml"
+    task.write_text(text.replace('\nsheet = "A1"', '\nsheet = "A3"').replace("#:schema ../task.schema.json", ""),
+                    encoding="utf-8")
+    project = Project(load_task(task))
+    content = part.content(project)
+    drawn = control_sheet.draw(project, 1, 1)
+    drawn.save(tmp_path / "s.dxf")
+    doc = ezdxf.readfile(tmp_path / "s.dxf")
+    rect = drawn.views["lever"].rect
+    assert content.context["lever"]["mu_v"].value == pytest.approx(_sheet_mu_v(doc, rect), rel=1e-12)
+    on_sheet = sorted(_sheet_arms(doc, rect))
+    printed = _printed_arms(content)
+    assert on_sheet and all(any(abs(x - mm) <= 0.005 + 1e-9 for mm in printed.values()) for x in on_sheet), \
+        (on_sheet, printed)
