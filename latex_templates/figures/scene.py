@@ -69,8 +69,9 @@ FIXED_ROLES = ("detail", "detail-title", "detail-scale")
 
 
 #: Scenes whose vectors' names are kept nearer to their own vector than to any other named vector
-#: (the force polygons and the lever, issue 12; tests/labels checks the same figures).
-OWN_VECTOR_SCENES = ("polygon", "lever")
+#: (issue 12: the force polygons, the lever, the groups' free-body diagrams, the velocity and
+#: acceleration plans; tests/labels checks the same figures).
+OWN_VECTOR_SCENES = ("polygon", "lever", "free-body", "velocity-plan", "acceleration-plan")
 
 
 def fixed_text(lb: Label, scene: Scene | None = None) -> str:
