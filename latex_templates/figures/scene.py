@@ -381,9 +381,10 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
 
 
 def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colours: bool,
-                       roles: tuple[str, ...]):
-    r = reduction_for(scene, max_w_mm, max_h_mm)
-    for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
+                       roles: tuple[str, ...], shrink: float = 1.0):
+    r = reduction_for(scene, max_w_mm, max_h_mm) / shrink
+    def frame(r: float):
+        """The labels placed at reduction ``r`` and the figure's extent (scene mm) and size (page mm)."""
         labels = place_labels(scene, r, roles)
         x0, y0, x1, y1 = scene.bounds()
         for _, _, pl in labels:
@@ -391,11 +392,16 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
             x1, y1 = max(x1, pl.box[2]), max(y1, pl.box[3])
         pad = 1.5 / r
         x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
-        w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
+        return labels, (x0, y0, x1, y1), pad, (x1 - x0) * r, (y1 - y0) * r
+
+    for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
+        labels, (x0, y0, x1, y1), pad, w_mm, h_mm = frame(r)
         over = max(w_mm / max_w_mm, h_mm / max_h_mm)
         if over <= 1.0 + RTOL_EQUAL:
             break
         r /= over * 1.001
+    else:                                # the last reduction's own frame (widened below if need be)
+        labels, (x0, y0, x1, y1), pad, w_mm, h_mm = frame(r)
     fig = new_figure(w_mm / 10.0, h_mm / 10.0)
     ax = fig.add_axes([0.0, 0.0, 1.0, 1.0])
     ax.set_xlim(x0, x1)
@@ -471,6 +477,12 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
         fig.set_size_inches(w_mm / 25.4, h_mm / 25.4)
         ax.set_xlim(x0, x1)
         ax.set_ylim(y0, y1)
+    over = max(w_mm / max_w_mm, h_mm / max_h_mm)
+    if over > 1.0 + RTOL_EQUAL and shrink < 2.0:     # larger than its room (the text block): reduce more
+        import matplotlib.pyplot as plt
+        plt.close(fig)
+        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours,
+                                  roles=roles, shrink=shrink * over * 1.001)
     fig.reportgen_exact = True
     fig.reportgen_labels = tuple(pl for _, _, pl in labels)
     fig.reportgen_reduction = r
