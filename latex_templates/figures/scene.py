@@ -299,7 +299,7 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
     passes = [(cands, lb.leader)]
     if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
-        passes.append((_leader_candidates(lb, w, h, gap, (8.0, 11.0, 15.0, 20.0)), True))
+        passes.append((_leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True))
     for group, leader in passes:
         best = None
         for rank, c in enumerate(group):
