@@ -177,3 +177,25 @@ def test_the_a3_control_sheet_draws_the_notes_lever(tmp_path):
     printed = _printed_arms(content)
     assert on_sheet and all(any(abs(x - mm) <= 0.005 + 1e-9 for mm in printed.values()) for x in on_sheet), \
         (on_sheet, printed)
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_equal_arms_are_drawn_and_named_once(example):
+    """Forces on one line of action have one arm: it is drawn once and named once, «h_{1} = h_{9}»
+    (on main the press's F_пс and F_и5, G3 and G4 had two arm segments on one spot and two names
+    on them); every arm name of the equation is on the figure."""
+    from latex_templates.parts import active_strings
+    from latex_templates.render import Strings
+    project = example_project(example)
+    with active_strings(Strings(project.task.document.language or "ru")):
+        content = part.content(project)
+    scene = content.figures["kst_lever"].scene
+    feet = [np.asarray(e.b) for e in scene.entities if isinstance(e, Segment) and e.id.startswith("arm:")]
+    same = [(i, j) for i in range(len(feet)) for j in range(i + 1, len(feet)) if np.hypot(*(feet[i] - feet[j])) < 0.01]
+    assert not same, same
+    names = [lb.text for lb in scene.labels if lb.anchor.startswith("arm:")]
+    on_figure = {h.strip() for text in names for h in text.split("=")}
+    printed = {h for h, mm in _printed_arms(content).items() if mm > UNDRAWN_ARM_MM + 0.01}
+    assert printed <= on_figure, printed - on_figure
+    if example in ("press", "shaper", "crank-slider"):          # F_пс and F_и at the slider's image
+        assert any("=" in t for t in names), names
