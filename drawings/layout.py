@@ -9,6 +9,7 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Iterable, Sequence
 
 import shapely
@@ -187,30 +188,42 @@ def try_pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 
         tx, ty = _corner_target(region, req.preferred)
         fx = {"top-left": 0.0, "bottom-left": 0.0, "top-right": 1.0, "bottom-right": 1.0}.get(req.preferred, 0.5)
         fy = {"top-left": 1.0, "top-right": 1.0, "bottom-left": 0.0, "bottom-right": 0.0}.get(req.preferred, 0.5)
-        blocked = [p.expanded(gap - eps) for p in done] + [n.expanded(-eps) for n in notches]
-        best: tuple[float, Rect] | None = None
-        for cx, cy in _candidates(region, done, req.width, req.height, gap):
-            if cx < bx0 - eps or cy < by0 - eps or cx + req.width > bx1 + eps or cy + req.height > by1 + eps:
+        # the blocked rectangles as tuples, and each candidate's corners as Rect.from_size sets
+        # them, tested as Rect.overlaps does: the same arithmetic without an object per candidate
+        blocked = [(b.x0, b.y0, b.x1, b.y1) for b in
+                   [p.expanded(gap - eps) for p in done] + [n.expanded(-eps) for n in notches]]
+        w, h = req.width, req.height
+        best: tuple[float, float, float] | None = None
+        for cx, cy in _candidates(region, done, w, h, gap):
+            if cx < bx0 - eps or cy < by0 - eps or cx + w > bx1 + eps or cy + h > by1 + eps:
                 continue
-            d = (cx + fx * req.width - tx) ** 2 + (cy + fy * req.height - ty) ** 2
+            d = (cx + fx * w - tx) ** 2 + (cy + fy * h - ty) ** 2
             if best is not None and d >= best[0] - MM_ROUNDOFF:
                 continue
-            rect = Rect.from_size(cx, cy, req.width, req.height)
-            if any(rect.overlaps(b) for b in blocked):
+            x1, y1 = cx + w, cy + h
+            if any(cx < b2 and b0 < x1 and cy < b3 and b1 < y1 for b0, b1, b2, b3 in blocked):
                 continue
-            best = (d, rect)
+            best = (d, cx, cy)
         if best is None:
             return None
-        done.append(best[1])
-        out.append(best[1])
+        rect = Rect.from_size(best[1], best[2], w, h)
+        done.append(rect)
+        out.append(rect)
     return out
 
 
 def walls(region: BaseGeometry) -> list[Rect]:
     """The parts of ``region``'s bounding box outside it (the notches of the title block and
     graph 26), as rectangles (bounding boxes of the parts)."""
+    return list(_walls(region))
+
+
+@lru_cache(maxsize=32)
+def _walls(region: BaseGeometry) -> tuple[Rect, ...]:
+    """:func:`walls`, once per region (shapely geometries are immutable and hash by value): sheet 1
+    tries some 500 arrangements in one free field."""
     rest = box(*region.bounds).difference(region)
-    return [Rect(*g.bounds) for g in getattr(rest, "geoms", [rest]) if not g.is_empty and g.area > AREA_EPS_MM2]
+    return tuple(Rect(*g.bounds) for g in getattr(rest, "geoms", [rest]) if not g.is_empty and g.area > AREA_EPS_MM2)
 
 
 def clearance(region: BaseGeometry, rect: Rect, others: Sequence[Rect],

@@ -68,7 +68,28 @@ def _ignore(*_args: object, **_kwargs: object) -> None:
 
 def render_png(source: str | os.PathLike[str] | Drawing, png_path: str | os.PathLike[str],
                *, dpi: int = 100) -> Path:
-    """Render the modelspace of a DXF (path or document) to a PNG on white paper."""
+    """Render the modelspace of a DXF (path or document) to a PNG on white paper.
+
+    The sheets' entities are drawn straight with Pillow (:mod:`drawings.raster`, several times
+    faster); a document with anything that module does not draw goes through ezdxf's drawing
+    add-on and matplotlib (:func:`render_png_ezdxf`)."""
+    from . import raster
+    from .sheet_font import completed_font, preview_font
+    from .style import ensure_sheet_font
+
+    doc = _load(source)
+    ensure_sheet_font()
+    font = completed_font()
+    if raster.unsupported(doc, os.fspath(font) if font is not None else None) is None:
+        assert font is not None
+        return raster.render_png(doc, png_path, dpi=dpi, font_path=os.fspath(font), font_name=preview_font())
+    return render_png_ezdxf(doc, png_path, dpi=dpi)
+
+
+def render_png_ezdxf(source: str | os.PathLike[str] | Drawing, png_path: str | os.PathLike[str],
+                     *, dpi: int = 100) -> Path:
+    """Render the modelspace with ezdxf's drawing add-on (matplotlib, Agg): every entity ezdxf
+    knows, the letters as outline paths."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

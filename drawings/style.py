@@ -125,9 +125,11 @@ def ensure_sheet_font() -> bool:
 WIDTH_MARGIN = 1.1
 
 
+@lru_cache(maxsize=16384)
 def text_width(text: str, height: float) -> float:
     """Width (mm) of a one-line ``text`` of capital height ``height`` in the sheet text style,
-    conservatively (TTF advance × :data:`WIDTH_MARGIN`)."""
+    conservatively (TTF advance × :data:`WIDTH_MARGIN`). Remembered: the label placers ask for the
+    same few texts tens of thousands of times (sheet 1: 55 000 calls, 140 distinct)."""
     if not text:
         return 0.0
     return float(_font(round(height, 6)).text_width(text)) * WIDTH_MARGIN

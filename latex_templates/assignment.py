@@ -61,6 +61,9 @@ def assignment_section(project) -> Section:
         ctx["mech"] = {"name": mech.name, "links": rows, "ground": ground, "slides": slides, "loads": loads,
                        "omega": mech.drive.omega, "drive": mech.drive.link, "g": mech.g,
                        "rules": mech.mass_rules, "any_rule": any(not ln.mass_given for ln in mech.links),
+                       # the rules' clauses this mechanism uses: no slider, no triangle → not named
+                       "rule_slider": any(ln.kind == "slider" and not ln.mass_given for ln in mech.links),
+                       "rule_triangle": any(len(ln.points) >= 3 and not ln.inertia_given for ln in mech.links),
                        "n_rpm": abs(mech.drive.omega) * 30 / math.pi}
     cw = task.control_work
     if cw is not None and cw.table is not None and cw.variant is not None:
@@ -118,8 +121,9 @@ def introduction_paragraphs(project, left_out) -> list:
     """Paragraphs about this task, from the strings catalogue (``intro.*``)."""
     from .render import Tex
     from .numbers import num
-    strings = Strings(_lang(project))
     task = project.task
+    # a control work's own words where a course project has its own (control.overrides)
+    strings = Strings(_lang(project), overlay="control.overrides" if task.document.kind == "control-work" else None)
     out = []
     if task.mechanism is not None:
         mech = task.mechanism
@@ -136,7 +140,11 @@ def introduction_paragraphs(project, left_out) -> list:
         out.append(text)
     out += _work_paragraphs(project, strings)
     if left_out:
-        out.append(strings.get("sections.left_out") + Tex(" ") + Tex("; ").join(left_out) + Tex("."))
+        # the titles in quotes: «не приводятся: «Проектирование зубчатых передач».», not a capital
+        # letter in the middle of the sentence (issue 12)
+        q0, q1 = strings.get("title.quote_open"), strings.get("title.quote_close")
+        out.append(strings.get("sections.left_out") + Tex(" ")
+                   + Tex(", ").join(Tex(q0 + t + q1) for t in left_out) + Tex("."))
     return out
 
 

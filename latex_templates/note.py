@@ -13,6 +13,7 @@ from reportgen.errors import InternalError, OptionError, ParameterError
 from reportgen.task import Document
 
 from .build import BuildReport, build_pdf
+from .tables import continued_heads, keep_rows_together
 from .render import LANGUAGES, Strings, SymbolTracker, Tex, make_environment
 
 FrameKind = Literal["none", "frame", "eskd"]
@@ -135,7 +136,8 @@ from reportgen.task import Document
             raise InternalError("note", "printed balance equations do not hold with their printed results: "
                                 + "; ".join(f"{b.equation_latex()} with {b.result.symbol} = "
                                             f"{b.result.result_number_latex()}" for b in unbalanced))
-        text = self.strings.localize_latex(text)
+        text = keep_rows_together(continued_heads(self.strings.localize_latex(text),
+                                                  str(self.strings.get("captions.table_continued"))))
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")
         return tex_path

@@ -508,6 +508,14 @@ def _pack(terms: list[str], width: int) -> list[list[str]]:
     return groups
 
 
+def result_with_unit(rec: CalcRecord) -> str:
+    """The printed result and its unit; an angle in degrees takes the sign without a space
+    (``9{,}98^\\circ``, as every other angle of the note: issue 12, «= 9,98 °»)."""
+    if rec.unit in ("°", "град"):
+        return rec.result_number_latex() + "^\\circ"
+    return rec.result_latex()
+
+
 def calc_parts(rec: CalcRecord) -> CalcParts:
     """Symbol, symbolic form, substitution and result of a record, and whether to split it."""
     symbolic = rec.symbolic_latex()
@@ -517,17 +525,17 @@ def calc_parts(rec: CalcRecord) -> CalcParts:
     show_substituted = substituted != result_number
     # the line as printed: symbol = symbolic = substitution = result (each «=» a character)
     width = visible_width(" = ".join([rec.symbol, *([symbolic] if show_symbolic else []),
-                                      *([substituted] if show_substituted else []), rec.result_latex()]))
+                                      *([substituted] if show_substituted else []), result_with_unit(rec)]))
     wide = width > WIDE_FORMULA and show_symbolic and show_substituted
     lines: tuple[Tex, ...] = ()
-    tail = visible_width("= " + rec.result_latex())
+    tail = visible_width("= " + result_with_unit(rec))
     if wide and visible_width(substituted) + tail > LINE_WIDTH:
         lines = tuple(Tex(p) for p in break_sum(substituted, tail=tail))
     return CalcParts(
         symbol=Tex(rec.symbol),
         symbolic=Tex(symbolic) if show_symbolic else None,
         substituted=Tex(substituted) if show_substituted else None,
-        result=Tex(rec.result_latex()),
+        result=Tex(result_with_unit(rec)),
         wide=wide,
         substituted_lines=lines if len(lines) > 1 else (),
     )

@@ -66,6 +66,8 @@ class Balance:
     partial_unit: str = ""
     partial_meaning: str = ""
     per_line: int = 3
+    #: the meaning of the total of the partial sums (``partial`` alone): not a partial sum itself
+    total_meaning: str = ""
 
     def __post_init__(self) -> None:
         if self.unknown_sign not in (1, -1):
@@ -123,7 +125,8 @@ class Balance:
             # many partial sums: their total first (a sum wraps over lines; a long fraction cannot)
             expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()
             named = {k: v for _, d in final_items for k, v in d.items()}
-            total = record(self.partial, expr, self.partial_unit, *_vars(named), meaning=self.partial_meaning)
+            total = record(self.partial, expr, self.partial_unit, *_vars(named),
+                           meaning=self.total_meaning or self.partial_meaning)
             parts.append(total)
             final_items = [("+ T", {"T": total})]
         expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()

@@ -89,7 +89,9 @@ class StrokeWindow:
     def on_working(self, phi: np.ndarray) -> np.ndarray:
         span = (self.sign * (self.phi_end - self.phi_start)) % (2 * math.pi)
         off = (self.sign * (np.asarray(phi) - self.phi_start)) % (2 * math.pi)
-        return off <= span + ABS_ROUNDOFF
+        # round-off either side of both ends: an angle 1e-16 before the start (the same position
+        # computed another way, e.g. a scaled task's) is the start, not the end of the idle stroke
+        return (off <= span + ABS_ROUNDOFF) | (off >= 2 * math.pi - ABS_ROUNDOFF)
 
     def switching_angles(self) -> tuple[float, float]:
         return (self.phi_start, self.phi_end)

@@ -79,6 +79,14 @@ SLOW_TESTS = (
     # sheet 2's arrangement tried with the lever one round step larger, for every example; the A3 control sheet
     "tests/scenes/test_lever_scale.py::test_the_lever_fills_the_room_sheet_2_gives_it",
     "tests/scenes/test_lever_scale.py::test_the_a3_control_sheet_draws_the_notes_lever",
+    # scaled examples (hypothesis): solved through the CLI and in process (~30 s), sheet 3 of each
+    # (~9 s), every sheet drawn, built without the PDF
+    "tests/robustness/test_scaled_solve.py::test_scaled_example_is_solved_or_refused",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_dynamics_sheet",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_example_every_sheet",
+    "tests/robustness/test_scaled_sheets.py::test_scaled_example_builds_without_pdf",
+    # section 3 of the press × 100 rendered in three languages
+    "tests/hard_cases/test_wittenbauer_fits.py::test_the_note_says_the_energy_graph_is_reduced",
 )
 
 

@@ -223,7 +223,9 @@ def draw_energy(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -
     """ΔE(φ) = A_дв + A_с at μE, by subtracting the line from the chords."""
     sp = spans(g)["E"]
     v = _view(sheet, "energy", lay.energy, lay.o_energy)
-    k = tr("sheets.dd08", v1=g.enlargement) if g.enlargement > 1 else ""
+    k = (tr("sheets.dd08", v1=g.enlargement) if g.enlargement > 1
+         else tr("sheets.dd16", v1=format_significant(1.0 / g.enlargement, 4), v2=1.0 / g.enlargement)
+         if g.enlargement < 1 else "")
     _title(v, tr("sheets.dd09"), tr("sheets.dd10", v1=format_significant(scene.scale(ds.MU_E).value, 4), k=k))
     _phi_axes(v, g, sp, "ΔE", labels, numbers=True)
     draw_entities(v, _construction(scene))

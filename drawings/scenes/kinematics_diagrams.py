@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 
+from drawings import style
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import Sheet, View
 from drawings.scenes import kinematics_labels as rl
@@ -103,7 +104,17 @@ def _strokes(view: View, o: tuple[float, float], length: float, y: float, start_
 
 
 def _title(view: View, o: tuple[float, float], rng: tuple[float, float], text: str) -> None:
-    view.text((o[0] + 30.0, o[1] + rng[0] + od.TOP_MM - 7.0), text, 5.0, "bottom-left")
+    """The diagram's title and scale, 30 mm right of its origin; a title longer than the room left
+    in the view (a scale of many digits: class3 with its lengths × 47 and its crank 50 times slower
+    wrote «με = 0,0007234 …» over the frame) starts at the view's left edge, then drops to 3.5 mm."""
+    x, y = view.transform((o[0] + 30.0, o[1] + rng[0] + od.TOP_MM - 7.0))
+    r = view.rect
+    height = 5.0
+    if x + style.text_width(text, height) > r.x1:
+        x = r.x0 + 2.0
+        if x + style.text_width(text, height) > r.x1:
+            height = 3.5
+    view.text_mm((x, y), text, height, "bottom-left")
 
 
 def _axes(view: View, o: tuple[float, float], d: Diagrams, rng: tuple[float, float], y_label: str,

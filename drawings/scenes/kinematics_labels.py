@@ -251,6 +251,11 @@ def text_extent(label: Label, center: Vec, height: float) -> Polygon:
     """Where the letters of ``label`` centred at ``center`` are: the union of its texts' boxes as
     :func:`draw_rich` sets them (each its advance without the placer's width margin, from its
     descenders to its cap height) — what a reader, and the label check, measures."""
+    return shapely.union_all([box(*b) for b in _extent_boxes(label, center, height)])
+
+
+def _extent_boxes(label: Label, center: Vec, height: float) -> list[tuple[float, float, float, float]]:
+    """The boxes (x0, y0, x1, y1) whose union is :func:`text_extent`."""
     small = _smaller(height)
     w, _, _ = size(label, height)
     x = center[0] - w / 2
@@ -259,7 +264,7 @@ def text_extent(label: Label, center: Vec, height: float) -> Polygon:
 
     def piece(px: float, py: float, text: str, h: float) -> None:
         pw = style.text_width(text, h) / style.WIDTH_MARGIN
-        pieces.append(box(px, py - descent(text, h), px + pw, py + h))
+        pieces.append((px, py - descent(text, h), px + pw, py + h))
     for k, rich in enumerate(_items(label)):
         if k:
             piece(x, y0, SEPARATOR.strip(), height)
@@ -271,7 +276,13 @@ def text_extent(label: Label, center: Vec, height: float) -> Polygon:
         if rich.sub:
             piece(xb, y0 - 0.35 * height, rich.sub, small)
         x += _one_width(rich, height)
-    return shapely.union_all(pieces)
+    return pieces
+
+
+def _distance_to_boxes(boxes: Sequence[tuple[float, float, float, float]], p: Vec) -> float:
+    """Distance (mm) from point ``p`` to the union of axis-parallel ``boxes`` (0 inside one)."""
+    return min(math.hypot(max(b[0] - p[0], 0.0, p[0] - b[2]), max(b[1] - p[1], 0.0, p[1] - b[3]))
+               for b in boxes)
 
 
 def own_point(candidates: Sequence[Vec], label: Label, height: float, p: Vec,
@@ -279,14 +290,12 @@ def own_point(candidates: Sequence[Vec], label: Label, height: float, p: Vec,
     """Those candidate centres whose label box lies within ``near_mm`` of its point ``p`` and no
     nearer to any of the ``others`` (the view's other labelled points) than to ``p`` — a letter a
     reader would take for another point's is no place for it (issue 12: «O» nearer to S₁)."""
-    from shapely.geometry import Point
-    pt = Point(p)
-    qs = [Point(q) for q in others if math.dist(q, p) > MM_ROUNDOFF]
+    qs = [q for q in others if math.dist(q, p) > MM_ROUNDOFF]
     out = []
-    for c in candidates:
-        b = text_extent(label, c, height)
-        d = b.distance(pt)
-        if d <= near_mm and all(b.distance(q) >= d + 0.5 for q in qs):
+    for c in candidates:        # the distances to text_extent's union, from its boxes directly
+        b = _extent_boxes(label, c, height)
+        d = _distance_to_boxes(b, p)
+        if d <= near_mm and all(_distance_to_boxes(b, q) >= d + 0.5 for q in qs):
             out.append(c)
     return out
 

@@ -15,6 +15,7 @@ from typing import Callable
 import numpy as np
 from shapely.geometry import LineString, MultiLineString, Point
 
+from drawings import style
 from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
@@ -172,8 +173,9 @@ def polygon_panel(name: str, title: str, polygon, first: int = 0) -> Panel:
             if lb.role in ("detail", "detail-title"):
                 view.text_mm(view.transform(lb.at), detail_text(lb), 5.0, "center")
             elif lb.role == "detail-scale":
-                view.text_mm(view.transform(lb.at), tr("sheets.kv05", v1=format_significant(
-                    scene.scale(f"μF:{lb.text}").value, 4)), 3.5, "center")
+                text = tr("sheets.kv05", v1=format_significant(scene.scale(f"μF:{lb.text}").value, 4))
+                view.text_mm(_within(view.sheet.frame, view.transform(lb.at), style.text_width(text, 3.5)), text, 3.5,
+                             "center")
         rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
                        for lb in scene.labels if lb.along is not None)
         for lb in scene.labels:
@@ -187,6 +189,15 @@ def polygon_panel(name: str, title: str, polygon, first: int = 0) -> Panel:
                 place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside, rivals)
         return view
     return Panel(name, w, h, paint)
+
+
+def _within(rect: Rect, centre, width: float) -> tuple[float, float]:
+    """A centre moved along x so that a text ``width`` wide stays inside ``rect``, the frame (a detail's scale
+    of six digits, «μF = 100000 Н/мм» of the press with its crank 550 times faster, stood 5 mm over
+    the frame)."""
+    half = width / 2 + 2.0
+    x = min(max(centre[0], rect.x0 + half), rect.x1 - half) if rect.x1 - rect.x0 > 2 * half else centre[0]
+    return (x, centre[1])
 
 
 def leader_name(view: View, a, b, rich, height: float, inside) -> None:

@@ -62,18 +62,24 @@ def draw_marks(view, marks) -> None:
         view.dimension(d.p1, d.p2, offset_mm=d.offset_mm, unit_factor=1.0, text=d.text)
 
 
+#: Names a, P, b closer than this along ρ (mm) are staggered one line up.
+NAME_GAP_MM = 6.0
+
+
 def draw_sliding(sheet, pair, rect, k: float) -> None:
     """The specific-sliding diagram λ1, λ2 over ρ = N1K (x at the meshing scale ``k``)."""
     from drawings.primitives import Transform, format_number
     sl = pair.sliding
     g = pair.geometry
-    # ρ at a ГОСТ scale that uses the width of the view
-    k = next((f for f in GOST_SCALES if g.g * f <= rect.width - 70), GOST_SCALES[-1])
+    # ρ at a ГОСТ scale that uses the width of the view; the active line a…b can stand out of
+    # N1…N2 (interference: a pair on that limit of its blocking contour drew b 13 mm over the frame)
+    x_lo, x_hi = min(0.0, g.n1a), max(g.g, g.n1b)
+    k = next((f for f in GOST_SCALES if (x_hi - x_lo) * f <= rect.width - 70), GOST_SCALES[-1])
     x_len = g.g * k
     lam_low = math.floor(min(sl.lambda1_a, sl.lambda2_b, -1.0) * 1.5)
     span = 1.0 - lam_low
     per_unit = next(v for v in (40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0) if v * span <= rect.height - 38)
-    ox = rect.x0 + 22
+    ox = rect.x0 + 22 - x_lo * k
     oy = rect.y0 + 14 + (-lam_low) * per_unit
     view = sheet.place_view("sliding", rect, Transform(1.0, (0.0, 0.0), (ox, oy)))
     yt = [(v * per_unit, format_number(v, 0)) for v in range(int(lam_low), 2)]
@@ -84,9 +90,14 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
         pts = [(r_ * k, v * per_unit) for r_, v in zip(rho, lam) if v >= lam_low]
         if len(pts) > 1:
             view.polyline(pts, "contour")
-    for name, x in (("a", g.n1a), ("P", g.n1p), ("b", g.n1b)):
-        view.line((x * k, lam_low * per_unit), (x * k, per_unit), "thin")
-        view.text((x * k + 1.5, per_unit + 1.5), name, 3.5)
+    # a, P, b above their lines; a name too near the one before it (P near a or b at the limits of
+    # the contour) goes one line higher
+    prev_x, level = -math.inf, 0
+    for name, x in sorted((("a", g.n1a), ("P", g.n1p), ("b", g.n1b)), key=lambda item: item[1]):
+        level = level + 1 if x * k - prev_x < NAME_GAP_MM else 0
+        view.line((x * k, lam_low * per_unit), (x * k, per_unit + 5.0 * level), "thin")
+        view.text((x * k + 1.5, per_unit + 1.5 + 5.0 * level), name, 3.5)
+        prev_x = x * k
     view.line((g.g * k, -2.0), (g.g * k, 2.0), "thin")
     view.text((g.g * k, -3.0), "N2", 3.5, "top-center")
     i1 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.2 * g.g))

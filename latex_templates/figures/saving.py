@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 import sys
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator
@@ -74,9 +74,27 @@ def page_size_pt(fig: Any, box: Any = None) -> tuple[float, float]:
     return float(w) * 72.0, float(h) * 72.0
 
 
+def artists(fig: Any) -> list[Any]:
+    """The artists of ``fig`` as ``findobj`` lists them, but not looking inside an axis: an axis
+    makes its ticks when first asked for them, and asking made ~340 ticks in the scene figures,
+    whose axes are off and never draw them (0.2 s of the note's CPU). What a part adds to a
+    figure (lines, texts, patches) belongs to its axes, not to an axis, so it is counted."""
+    from matplotlib.axis import Axis
+
+    out: list[Any] = []
+    stack = [fig]
+    while stack:
+        a = stack.pop()
+        out.append(a)
+        children = getattr(a, "get_children", None)
+        if children is not None and not isinstance(a, Axis):
+            stack.extend(reversed(children()))
+    return out
+
+
 def mark_content(fig: Any) -> None:
     """Note that ``fig`` is now whole as its ``reportgen_key`` describes it (:func:`content_key`)."""
-    fig.reportgen_artists = len(fig.findobj())
+    fig.reportgen_artists = len(artists(fig))
 
 
 def content_key(fig: Any) -> str | None:
@@ -85,7 +103,7 @@ def content_key(fig: Any) -> str | None:
     key = getattr(fig, "reportgen_key", None)
     if isinstance(fig, KeptFigure):
         return key
-    if key is None or len(fig.findobj()) != getattr(fig, "reportgen_artists", -1):
+    if key is None or len(artists(fig)) != getattr(fig, "reportgen_artists", -1):
         return None
     return key
 
@@ -126,6 +144,14 @@ def figure_sizes(fig: Any) -> dict[str, float]:
     w, h = fig.get_size_inches()
     return {"width_cm": float(fig.width_cm), "reduction": float(fig.reportgen_reduction),
             "width_in": float(w), "height_in": float(h)}
+
+
+def content_keys_read() -> bool:
+    """Will anything read a figure's content key (:func:`content_key`)? Not in a build that queues
+    the figures without a cache (``--no-cache``): there, digesting each scene (≈ 0.1 s of the
+    note's CPU on the press) is skipped; elsewhere — a build with a cache, a caller outside a
+    build — the key is made."""
+    return _QUEUE is None or _QUEUE.cache is not None
 
 
 def kept_figure(key: str, make: Callable[[], Any]) -> Any:
@@ -178,8 +204,8 @@ class FigureQueue:
 
         weighed = []
         for i, (fig, target) in enumerate(self.items):
-            artists = fig.findobj()
-            weight = len(artists) + 2 * sum(isinstance(a, Text) for a in artists)
+            drawn = artists(fig)
+            weight = len(drawn) + 2 * sum(isinstance(a, Text) for a in drawn)
             weighed.append((-weight, i, fig, target))
         weighed.sort(key=lambda w: (w[0], w[1]))
         loads = [0] * parts
@@ -229,7 +255,62 @@ class FigureQueue:
             _release(fig)
 
 
+class _SubsetFont:
+    """A subset font as matplotlib's PDF backend uses it here: only written out (``save``)."""
+
+    def __init__(self, data: bytes) -> None:
+        self.data = data
+
+    def save(self, file: Any, **_options: Any) -> None:     # reorderTables: the bytes are final
+        file.write(self.data)
+
+
+@dataclass(frozen=True)
+class _Subset:
+    """What ``get_glyphs_subset`` yields: the subset font and the old → new glyph numbers."""
+    font: _SubsetFont
+    glyph_index_map: dict[int, int]
+
+
+#: Subset fonts made in this process: (font file, face, glyphs) → (font bytes, glyph numbers).
+_SUBSETS: dict[tuple[str, int, frozenset[int]], tuple[bytes, dict[int, int]]] = {}
+#: Subsets kept (the oldest forgotten first): a note makes ~70 distinct ones of 10–100 kB, and a
+#: process that builds many notes (``--watch``, ``batch``) must not grow without bound.
+KEEP_SUBSETS = 512
+
+
+def remember_font_subsets() -> None:
+    """Let matplotlib's PDF backend subset each font for a set of glyphs once per process.
+
+    Every figure embeds a subset of each font it uses (fontTools parses the font file, prunes it,
+    writes it: ≈ 10 ms each, ~100 on the press), and a third of them are the same font with the
+    same glyphs as an earlier figure's (the digits and letters of the axes' and scenes' labels).
+    A subset is a pure function of the font file, the face and the glyph set, so the bytes made
+    once are written again: the same PDF bytes (tests/speed/test_figure_saving.py)."""
+    from matplotlib.backends import _backend_pdf_ps as pdf_ps
+
+    original = pdf_ps.get_glyphs_subset
+    if getattr(original, "reportgen_memo", False):
+        return
+
+    def get_glyphs_subset(fontfile: Any, glyphs: Any) -> Any:
+        key = (str(fontfile), int(getattr(fontfile, "face_index", 0)), frozenset(int(g) for g in glyphs))
+        found = _SUBSETS.get(key)
+        if found is None:
+            with original(fontfile, glyphs) as subset:
+                found = (pdf_ps.font_as_file(subset.font).getvalue(), dict(subset.glyph_index_map))
+            _SUBSETS[key] = found
+            if len(_SUBSETS) > KEEP_SUBSETS:
+                del _SUBSETS[next(iter(_SUBSETS))]
+        return nullcontext(_Subset(_SubsetFont(found[0]), dict(found[1])))
+
+    get_glyphs_subset.reportgen_memo = True          # type: ignore[attr-defined]
+    get_glyphs_subset.reportgen_original = original  # type: ignore[attr-defined]
+    pdf_ps.get_glyphs_subset = get_glyphs_subset
+
+
 def _save_all(items: list[tuple[Any, Path]], boxes: dict[int, Any] | None = None) -> int:
+    remember_font_subsets()
     for fig, target in items:
         save_pdf(fig, target, (boxes or {}).get(id(fig)))
     return len(items)

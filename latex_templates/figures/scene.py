@@ -25,7 +25,7 @@ from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..parts import active
 from . import new_figure
-from .saving import kept_figure, mark_content
+from .saving import content_keys_read, kept_figure, mark_content
 from .labels import names
 
 #: The text block of the note, mm (A4, margins 30 + 15 mm; the height left for a figure and its
@@ -228,40 +228,53 @@ def _along_one_line(own, other) -> bool:
                              _seg_point(own[0], other), _seg_point(own[1], other)) < 0.5
 
 
+def _rivals_of(own, rivals) -> list:
+    """The figure's other named vectors that a name of ``own`` must keep away from: not ``own``
+    itself, not one lying along it (their names share the room beside the line) — the nearest to
+    its middle first, where a candidate box fails soonest (the test is the same for any order)."""
+    mid = ((own[0][0] + own[1][0]) / 2, (own[0][1] + own[1][1]) / 2)
+    return sorted((r for r in rivals if r != own and not _along_one_line(own, r)),
+                  key=lambda r: _seg_point(mid, r))
+
+
 def _own_vector(box, own, rivals, margin: float) -> bool:
-    """Is ``box`` nearer (by ``margin``) to its vector ``own`` than to any of the ``rivals`` (the
-    figure's other named vectors not lying along it)? A name nearer to another vector reads as its."""
+    """Is ``box`` nearer (by ``margin``) to its vector ``own`` than to any of the ``rivals``
+    (:func:`_rivals_of` it, found once per label)? A name nearer to another vector reads as its."""
     d = box_segment_distance(box, own)
-    return all(box_segment_distance(box, r) >= d + margin for r in rivals
-               if r != own and not _along_one_line(own, r))
+    return all(box_segment_distance(box, r) >= d + margin for r in rivals)
 
 
 def _leader_candidates(lb: Label, w: float, h: float, gap: float,
                        offs: tuple[float, ...] = (4.0, 6.0, 8.0, 11.0)) -> list[tuple[float, float]]:
     """Centres round the anchor (a point, or the middle of a vector: across it first) for a label
     on a leader."""
-    p = np.asarray(lb.at)
+    # plain floats: the same IEEE arithmetic as numpy's scalars, without their overhead
+    px, py = float(lb.at[0]), float(lb.at[1])
     if lb.along is not None:
-        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
-        d = b - a
-        base = math.atan2(d[0], -d[1])             # across the vector
+        (ax, ay), (bx, by) = lb.along
+        base = math.atan2(float(bx) - float(ax), -(float(by) - float(ay)))   # across the vector
     else:
         base = math.pi / 4
     out = []
     for off in offs:
         for k in range(16):
             ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
-            out.append((float(p[0] + math.cos(ang) * (w / 2 + gap * off)),
-                        float(p[1] + math.sin(ang) * (h / 2 + gap * off))))
+            out.append((px + math.cos(ang) * (w / 2 + gap * off), py + math.sin(ang) * (h / 2 + gap * off)))
     return out
 
 
+def _others_of(p, others: list) -> list:
+    """The figure's other labelled points, not ``p`` itself, the nearest first (see _rivals_of)."""
+    return sorted((q for q in others if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF),
+                  key=lambda q: math.hypot(q[0] - p[0], q[1] - p[1]))
+
+
 def _own(box, p, others: list, margin: float) -> bool:
-    """Is ``box`` nearer (by ``margin``) to its point ``p`` than to any of the ``others`` — the
-    figure's other labelled points? A letter nearer to another point reads as that point's."""
+    """Is ``box`` nearer (by ``margin``) to its point ``p`` than to any of the ``others``
+    (:func:`_others_of` it, found once per label)? A letter nearer to another point reads as that
+    point's."""
     d = _dist_box(p, box)
-    return all(_dist_box(q, box) >= d + margin for q in others
-               if abs(q[0] - p[0]) + abs(q[1] - p[1]) > MM_ROUNDOFF)
+    return all(_dist_box(q, box) >= d + margin for q in others)
 
 
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
@@ -276,27 +289,32 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
     if lb.role == "vector" and lb.along is not None and lb.leader:
         cands = _leader_candidates(lb, w, h, gap)
     elif lb.role == "vector" and lb.along is not None:
-        a, b = np.asarray(lb.along[0]), np.asarray(lb.along[1])
-        d = b - a
-        n = float(np.hypot(*d)) or 1.0
-        u = d / n
-        nrm = np.array([-u[1], u[0]])
+        (ax, ay), (bx, by) = lb.along
+        ax, ay, bx, by = float(ax), float(ay), float(bx), float(by)
+        dx, dy = bx - ax, by - ay
+        n = float(np.hypot(dx, dy)) or 1.0
+        nx, ny = -(dy / n), dx / n                 # the unit normal
         for off in (1.0, 2.0, 3.5, 5.0):
+            reach = gap * off + 0.5 * abs(nx) * w + 0.5 * abs(ny) * h
             for t in (0.5, 0.35, 0.65, 0.2, 0.8):
                 for side in (1.0, -1.0):
-                    q = a + d * t + side * nrm * (gap * off + 0.5 * abs(nrm[0]) * w + 0.5 * abs(nrm[1]) * h)
-                    cands.append((float(q[0]), float(q[1])))
+                    cands.append((ax + dx * t + side * nx * reach, ay + dy * t + side * ny * reach))
     else:
         p = np.asarray(lb.at)
         v = p - centre
         base = math.atan2(v[1], v[0]) if np.hypot(*v) > MM_ROUNDOFF else math.pi / 4
+        px, py = float(p[0]), float(p[1])
         for off in (1.0, 2.0, 3.5, 5.0, 7.0):
             for k in range(16):
                 ang = base + (k + 1) // 2 * (1 if k % 2 else -1) * math.pi / 8
                 ux, uy = math.cos(ang), math.sin(ang)
                 t = min((w / 2) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
                         (h / 2) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
-                cands.append((float(p[0] + ux * (t + gap * off)), float(p[1] + uy * (t + gap * off))))
+                cands.append((px + ux * (t + gap * off), py + uy * (t + gap * off)))
+    if not point and rivals:
+        rivals = _rivals_of(lb.along, rivals)
+    if point and others:
+        others = _others_of(lb.at, others)
     passes = [(cands, lb.leader)]
     if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
         passes.append((_leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True))
@@ -372,17 +390,21 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
                  colours: bool = True, roles: tuple[str, ...] = ("point", "vector", "number")):
     """The scene as a matplotlib figure at a true reduction (see the module's docstring); inside a
     build whose cache keeps this figure, a stand-in with its sizes (:func:`.saving.kept_figure`)."""
-    def make():
-        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
+    key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles) \
+        if content_keys_read() else None
 
-    key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
-    kept = kept_figure(key, make)
+    def make():
+        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles,
+                                  key=key)
+
+    kept = kept_figure(key, make) if key is not None else None
     return kept if kept is not None else make()
 
 
 def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colours: bool,
-                       roles: tuple[str, ...], shrink: float = 1.0):
+                       roles: tuple[str, ...], key: str | None = None, shrink: float = 1.0):
     r = reduction_for(scene, max_w_mm, max_h_mm) / shrink
+
     def frame(r: float):
         """The labels placed at reduction ``r`` and the figure's extent (scene mm) and size (page mm)."""
         labels = place_labels(scene, r, roles)
@@ -482,14 +504,15 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
         import matplotlib.pyplot as plt
         plt.close(fig)
         return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours,
-                                  roles=roles, shrink=shrink * over * 1.001)
+                                  roles=roles, key=key, shrink=shrink * over * 1.001)
     fig.reportgen_exact = True
     fig.reportgen_labels = tuple(pl for _, _, pl in labels)
     fig.reportgen_reduction = r
     fig.width_cm = w_mm / 10.0
     fig.scene = scene
-    fig.reportgen_key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles)
-    mark_content(fig)
+    fig.reportgen_key = key          # its content key, where one is read (saving.content_keys_read)
+    if key is not None:
+        mark_content(fig)
     return fig
 
 

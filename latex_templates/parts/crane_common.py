@@ -10,6 +10,7 @@ so the order of the course lives in Python (one place) and every word in the cat
 """
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import replace
 
@@ -18,6 +19,7 @@ from markupsafe import Markup
 from reportgen.calc import CalcRecord, format_decimal, unit_latex
 from reportgen.crane.steps import upright_cyrillic_in_math
 from reportgen.errors import NameLookupError
+from reportgen.tolerances import ABS_ZERO, RTOL_EQUAL
 
 from ..render import Strings, _StringTable, escape_latex
 
@@ -145,6 +147,15 @@ def _symbol(calc, key: str | None) -> str:
     return ""
 
 
+def _as_printed(calc, key: str | None, value: float) -> str:
+    """A checked quantity as its formula printed it (issue 12: «D_бл = 1130,5 мм» in (1.6) and
+    «D_бл = 1130 ≥ …» in the check were one quantity with two roundings); else 4 digits."""
+    rec = calc.records.get(key) if key else None
+    if rec is not None and math.isclose(rec.value, value, rel_tol=RTOL_EQUAL, abs_tol=ABS_ZERO):
+        return rec.result_number_latex()
+    return m(value)
+
+
 def check_sentence(c, calc, strings: Strings) -> Markup:
     sym_a, sym_b = CHECK_SYMBOLS.get(c.key, (None, None))
     if c.key.startswith("coupling"):
@@ -153,8 +164,8 @@ def check_sentence(c, calc, strings: Strings) -> Markup:
     a = _symbol(calc, sym_a)
     b = _symbol(calc, sym_b)
     value = ("|" + a + "|" if c.key == "speed" and a else a)
-    left = f"{value} = {m(c.value)}" if value else m(c.value)
-    right = f"{b} = {m(c.limit)}" if b else m(c.limit)
+    left = f"{value} = {_as_printed(calc, sym_a, c.value)}" if value else m(c.value)
+    right = f"{b} = {_as_printed(calc, sym_b, c.limit)}" if b else m(c.limit)
     unit_tex = f"~{unit_latex(c.unit)}" if c.unit else ""
     verdict = strings.get("crane.text.pass" if c.passed else "crane.text.fail")
     text = fmt(strings.get("crane.text.check_line"), name=Markup(upright_cyrillic_in_math(strings.get(f"crane.checks.{c.key}"))),

@@ -250,19 +250,28 @@ def scale_records(scenes: DynamicsScenes) -> dict[str, CalcRecord | Var]:
     mu_A = record(r"\mu_A", "mu_M * mu_phi * H", "Дж/мм", mu_M, H, mu_phi=mu_phi,
                   meaning=tr("dynamics.m22"))
     k = Var("k", "k", scenes.energy.values["k"], "", tr("dynamics.m04"))
-    mu_E = record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A,
-                  meaning=tr("dynamics.m23"))
+    # k < 1: ΔE is drawn reduced n = 1/k times (the Wittenbauer construction would not fit the sheet
+    # at μE = μA, reportgen.dynamics.graphical._enlargement): written μE = μA·n, as a student would
+    n = Var("n", "n", 1.0 / k.value, "", tr("dynamics.m04r"))
+    mu_E = (record(r"\mu_E", "mu_A / k", "Дж/мм", k, mu_A=mu_A, meaning=tr("dynamics.m23")) if k.value >= 1
+            else record(r"\mu_E", "mu_A * n", "Дж/мм", n, mu_A=mu_A, meaning=tr("dynamics.m23")))
     mu_J = Var("mu_J", r"\mu_J", scenes.wittenbauer.scale(MU_J).value, "кг·м²/мм", tr("dynamics.m05"))
-    return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "mu_E": mu_E, "mu_J": mu_J}
+    return {"L": L, "mu_phi": mu_phi, "mu_M": mu_M, "H": H, "mu_A": mu_A, "k": k, "n": n, "mu_E": mu_E,
+            "mu_J": mu_J}
 
 
 def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
     """ψmax, ψmin by the course's formula, KL measured on the Wittenbauer scene and J_fly from it."""
+    from .gear_pair import places
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
-    psi_max = record(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Tex(tr("dynamics.m50")), **common)
-    psi_min = record(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", "°",
-                     omega, delta, meaning=Tex(tr("dynamics.m51")), **common)
+
+    def angle(symbol: str, expr: str, meaning: str) -> CalcRecord:
+        """An angle to the course's 0,01° (sheet 3 prints the same: ψmin = 9,05°, not 9,046°)."""
+        probe = record(symbol, expr, "°", omega, delta, **common)
+        return record(symbol, expr, "°", omega, delta, meaning=Tex(meaning),
+                      digits=places(probe.value, ANGLE_DECIMALS), **common)
+    psi_max = angle(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", tr("dynamics.m50"))
+    psi_min = angle(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", tr("dynamics.m51"))
     KL = Var("KL", "KL", scenes.wittenbauer.values["KL_mm"], "мм", Tex(tr("dynamics.m24")))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
                   mu_E=sc["mu_E"], meaning=tr("dynamics.m25"))

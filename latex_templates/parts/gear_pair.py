@@ -21,10 +21,12 @@ def available(project) -> bool:
 
 
 def places(value: float, decimals: int) -> int:
-    """Significant digits that show ``value`` with ``decimals`` places (integer part kept)."""
+    """Significant digits that show ``value`` with ``decimals`` places (integer part kept; at least
+    one: a value below the last place shows its first digit, not ``decimals`` more, issue 12:
+    «Δu = −0,004594 %» for a difference of numbers printed to 4 places)."""
     if value == 0 or not math.isfinite(value):
         return decimals + 1
-    return max(1, math.floor(math.log10(abs(value))) + 1) + decimals
+    return max(1, math.floor(math.log10(abs(value))) + 1 + decimals)
 
 
 @dataclass(frozen=True)

@@ -119,8 +119,10 @@ def content(project) -> PartContent:
         s_out = (x - x0) * strokes.direction
     else:
         s_out = np.zeros(len(kin.phi))
+    # a rocker's swing in degrees, as the text gives its range (ψ = 47,73°), not in radians
+    rocker = strokes is not None and strokes.output.kind != "slider"
     for j, ph in enumerate(kin.phi):
-        out_rows.append([j, math.degrees(ph) % 360, float(s_out[j])] +
+        out_rows.append([j, math.degrees(ph) % 360, math.degrees(float(s_out[j])) if rocker else float(s_out[j])] +
                         [float(kin.transmission_deg[g.key][j]) for g in st.groups[1:]])
     # --- velocity and acceleration plans of every plan position (the analysed one first) --------
     plan_ctx = []
@@ -292,7 +294,9 @@ def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
     fig_a = scene_figure(project.scenes.acceleration_plans[i])
     sgn = 1.0 if project.model.omega >= 0 else -1.0
     ctx = {"i": i, "phi_i": math.degrees(kin.phi[i]) % 360, "suffix": suffix,
-           "stroke": stroke_of(float(kin.phi[i]), project.strokes if project.full_cycle else None, sgn),
+           # a control work gives one position and no resistance: no working or idle stroke to name
+           "stroke": None if project.task.document.kind == "control-work" else
+           stroke_of(float(kin.phi[i]), project.strokes if project.full_cycle else None, sgn),
            "control": project.task.document.kind == "control-work", "tip": tip, "axis": axis,
            "fig_v": fv, "fig_a": fa, "fig_w_v": f"{fig_v.width_cm:.2f}cm", "fig_w_a": f"{fig_a.width_cm:.2f}cm",
            "fig_note_v": scene_caption(project, fig_v), "fig_note_a": scene_caption(project, fig_a),

@@ -215,7 +215,8 @@ def content(project) -> PartContent:
             bal = Balance(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}}", f"R^{{\\tau}}_{{{sp.name[1:]}}}", "Н",
                           -1, l, _balance_terms(terms) + _couples(extra, mu_l, sp.link),
                           Tex(tr("kinetostatics.m43", v1=Tex(sym(sp.name)))),
-                          partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"), per_line=TERMS_PER_RECORD)
+                          partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                          total_meaning=tr("kinetostatics.m30t"), per_line=TERMS_PER_RECORD)
             sol = bal.solve()
             parts, rec = list(sol.parts), sol.result
             _check(rec, sp.tau_measured, f"R^τ {sp.name}")
@@ -347,6 +348,7 @@ def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> 
     sol = Balance(f"\\sum M_{{{frame[0].joint}}}^{{({k3})}}", sym(name), "Н", 1, arm,
                   tuple(terms) + extra, Tex(active().get("marks.slot.reaction").format(R=Tex(sym(name)))),
                   partial=f"\\Sigma^{{({k3})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  total_meaning=tr("kinetostatics.m30t"),
                   per_line=TERMS_PER_RECORD).solve()
     exact = float(np.asarray(P.on(k3)[0]) @ d)
     return {"balance": sol, "parts": list(sol.parts), "rec": sol.result, "exact": exact, "name": Tex(f"${sym(name)}$"),
@@ -465,7 +467,8 @@ def _crank(ks, read_mags, counter, mu_l, figures, body) -> dict:
     sol = Balance(f"\\sum M_{{{r.crank_axis}}}", "F_{\\text{ур}}", "Н", 1, OA,
                   _balance_terms(terms) + _couples(extra, mu_l, d),
                   tr("kinetostatics.m39") + r.crank_pin + tr("kinetostatics.m26"),
-                  partial="\\Sigma^{(1)}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"), per_line=TERMS_PER_RECORD).solve()
+                  partial="\\Sigma^{(1)}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  total_meaning=tr("kinetostatics.m30t"), per_line=TERMS_PER_RECORD).solve()
     parts, F = list(sol.parts), sol.result
     _check(F, c.balancing_force_measured, "F_ур (groups)")
     l_oa = Var("l_OA", f"l_{{{r.crank_axis}{r.crank_pin}}}", float(np.hypot(*(r.balancing_point[0] - fp.point[0]))),
@@ -515,7 +518,8 @@ def _lever(project, ks, counter, figures) -> dict:
     # F_ур at the image of the pin: its moment about p is +F·pa when the crank turns counter-clockwise
     sol = Balance("\\sum M_{p}", "F_{\\text{ур}}^{\\text{Ж}}", "Н", 1 if lev.omega1 >= 0 else -1, pa,
                   _balance_terms(terms) + extra, tr("kinetostatics.m12"),
-                  partial="\\Sigma^{(\\text{Ж})}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"), per_line=TERMS_PER_RECORD).solve()
+                  partial="\\Sigma^{(\\text{Ж})}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  total_meaning=tr("kinetostatics.m30t"), per_line=TERMS_PER_RECORD).solve()
     parts, F = list(sol.parts), sol.result
     _check(F, L.balancing_force_measured, "F_ур (lever)")
     fp = next(p for p in r.pairs if p.group == str(r.crank))
@@ -563,12 +567,15 @@ def _sci(x: float) -> str:
 
 
 def _conclusions(project, ks, comparison) -> tuple[str, ...]:
-    from ..numbers import num
+    """The section's findings: φ1 to 0,01° and the discrepancy as the note prints them elsewhere
+    (issue 12: one quantity, one rounding — «φ1 = 338,4°» against 338,39° in the text)."""
+    from ..numbers import mfixed, num
     from ..render import Strings
     strings = Strings(project.task.document.language or "ru")
     out = [strings.get("findings_kinetostatics.balancing").format(
-        phi=Tex(num(ks.phi_deg)), M=Tex(num(ks.balancing_moment, 6)),
-        Mz=Tex(num(ks.balancing_moment_zhukovsky, 6)), delta=Tex(num(comparison["delta"].value, 2)))]
+        phi=Tex(mfixed(ks.phi_deg, 2)), M=Tex(num(ks.balancing_moment, 6)),
+        Mz=Tex(num(ks.balancing_moment_zhukovsky, 6)),
+        delta=Tex("$" + comparison["delta"].result_number_latex() + "$"))]   # as printed in 2.7
     if any(mu < WARN_TRANSMISSION_DEG for mu in ks.transmission_deg.values()):
         out.append(strings.get("findings_kinetostatics.dead_centre"))
     return tuple(out)

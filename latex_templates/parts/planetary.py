@@ -11,7 +11,7 @@ from typing import cast
 
 from ..render import Tex
 
-from reportgen.calc import CalcRecord, Var
+from reportgen.calc import CalcRecord, Var, record
 from reportgen.planetary.schemes import expand
 
 from . import PartContent
@@ -58,7 +58,7 @@ def planetary_records(stage) -> dict[str, object]:
         za = Var("za", "z_a", drive.z1_open, "", _t("planetary.m28"))
         zb = Var("zb", "z_b", drive.z2_open, "", _t("planetary.m29"))
         w1 = Var("w1", r"\omega_\text{кр}", drive.omega_crank, "рад/с", _t("planetary.m30"))
-        r["u_req"] = _rec(r"u_\text{тр}", "za * wm / (zb * w1)", "", 3, _t("planetary.m31"),
+        r["u_req"] = _rec(r"u_\text{тр}", "za * wm / (zb * w1)", "", 4, _t("planetary.m31"),
                           za=za, wm=r["omega_m"], zb=zb, w1=w1)
     names = {k: v for k, v in zv.items() if k in willis_expr(d)}
     r["u1h"] = _rec("u_{1H}^{(3)}", willis_expr(d), "", 4, _t("planetary.m02"), **names)
@@ -69,7 +69,7 @@ def planetary_records(stage) -> dict[str, object]:
     target = Var("ut", r"u_\text{тр}", stage.target, "", _t("planetary.m03"))
     u_shown = Var("u", u_main.symbol, round(abs(u_main.value), 4), "")
     r["deviation"] = _rec(r"\delta_u", "(u - ut) / ut * 100", "%", 2, _t("planetary.m04"),
-                          u=u_shown, ut=Var("ut", r"u_\text{тр}", round(stage.target, 3), "", _t("planetary.m41")))
+                          u=u_shown, ut=Var("ut", r"u_\text{тр}", round(stage.target, 4), "", _t("planetary.m41")))
     r["target"] = target
     # adjacency: (2a/m)·sin(π/K) > z_p + 2ha*, and the course's K limit; 2a/m = z1 ± z2
     adj = d.adjacency
@@ -112,7 +112,8 @@ def triangle_records(stage, u_main: CalcRecord) -> dict[str, CalcRecord]:
                   z1=zv["z1"], z2=zv["z2"])
     r["v_a"] = _rec("v_A", "w1 * r1 / 1000", "м/с", 4, _t("planetary.m10"), w1=w1, r1=r["r1"])
     la = Var("la", r"\overline{pa}", tri.vector_mm, "мм", _t("planetary.m11"))
-    r["mu_v"] = _rec(r"\mu_v", "v_a / la", "(м/с)/мм", 4, _t("planetary.m12"), v_a=r["v_a"], la=la)
+    # 5 significant digits, as sheet 4 prints it (drawings/scenes/planetary_dxf.py)
+    r["mu_v"] = record(r"\mu_v", "v_a / la", "(м/с)/мм", digits=5, meaning=_t("planetary.m12"), v_a=r["v_a"], la=la)
     lb = Var("lb", r"\overline{pb}", abs(tri.v_b_mm_read), "мм", _t("planetary.m13"))
     r["v_b"] = _rec("v_B", "mu_v * lb", "м/с", 4, _t("planetary.m14"), mu_v=r["mu_v"], lb=lb)
     r["omega_h"] = _rec(r"\omega_H", "v_b / (a / 1000)", "рад/с", 4, _t("planetary.m15"), v_b=r["v_b"], a=r["a"])
@@ -186,7 +187,7 @@ def content(project) -> PartContent:
     ctx = {"stage": stage, "d": d, "r": r, "tr": tr, "tri": stage.triangle, "crank": crank, "z": z,
            "z_row": z_row, "alternatives": alternatives, "undercut": undercut,
            "coax": _coax_text(d), "u_main": u_main}
-    concl = _conclusion(stage, tr)
+    concl = _conclusion(stage, tr, cast(CalcRecord, r["deviation"]))
     return PartContent("sections/planetary.tex.j2", ctx, figures, (concl,))
 
 
@@ -206,13 +207,15 @@ def _coax_text(d) -> dict:
             "holds": d.coaxial.holds}
 
 
-def _conclusion(stage, tr) -> str:
+def _conclusion(stage, tr, deviation: CalcRecord) -> str:
+    """The conclusion's item; the deviation is the printed record's number (one rounding of one
+    quantity, issue 12: −0,213 % in the text against −0,22 % in the conclusion)."""
     from latex_templates.numbers import mnum
     d = stage.design
     zs = ", ".join(f"$z_{{{lab.replace('′', chr(39))}}} = {zz}$" for lab, zz in zip(d.scheme.labels, d.z))
     text = _t("planetary.m01", v1=_t("planetary_schemes." + d.scheme.name), zs=Tex(zs), v3=d.satellites,
               v4=Tex(mnum(abs(d.ratio), 5)), v5=Tex(mnum(stage.target, 5)),
-              v6=Tex(mnum(100 * d.ratio_check.deviation, 3)))
+              v6=Tex(deviation.result_number_latex()))
     if tr is not None:
         text += _t("planetary.m21", v1=Tex(mnum(tr['u_graph'].value, 5)), v2=Tex(tr['diff'].result_number_latex()))
     return Tex(text)

@@ -56,7 +56,9 @@ def content(project) -> PartContent:
         outer = [p for p in g.pairs if p.external]
         groups.append({"label": g.label, "links": g.links, "class": g.group_class, "order": g.order,
                        "kind": g.kind, "figure": name, "n": len(g.links), "p": len(g.pairs),
-                       "inner": [f"{p.point}" for p in inner], "outer": [f"{p.point}" for p in outer]})
+                       # a prismatic pair is named as such: «внешних B, D» read as the revolute D twice
+                       "inner": [{"point": p.point, "prismatic": p.kind == "P"} for p in inner],
+                       "outer": [{"point": p.point, "prismatic": p.kind == "P"} for p in outer]})
     ctx = {"links": links, "pairs": pairs, "W": W, "structure": st, "groups": groups,
            "formula": st.formula, "driver": st.groups[0].links[0]}
     from ..render import Tex

@@ -113,6 +113,7 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     todo = _sheet_list(project) if sheets else []
     if todo and parallel_possible():
         _shared_imports()
+        _shared_stages(project, todo)
     child = _Child.start(project, tmp, todo, cache) if todo and parallel_possible() else None
     pending = None
     try:
@@ -160,6 +161,15 @@ def _shared_imports() -> None:
 
     import latex_templates.figures  # noqa: F401
     import latex_templates.render  # noqa: F401
+
+
+def _shared_stages(project: Any, todo: list[tuple[str, Any]]) -> None:
+    """Compute before the fork the costly stages that both the note and a sheet read, so that the
+    two processes do not each compute them: the meshing picture with its designations placed
+    (≈ 0.2 s of CPU; section 4 and the gears' sheet). The note reads it anyway, so the main process
+    does no more than it would; the cheaper scenes are left to whichever process reads them."""
+    if project.task.gears is not None and any(stem.endswith("-gears") for stem, _ in todo):
+        _ = project.scenes.meshing
 
 
 def _sheet_list(project: Any) -> list[tuple[str, Any]]:

@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from ..scenes.boxes import GraphLayout
+from ..scenes.dynamics import J_BEYOND_MM
 from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle, moment_and_inertia
 from ..geometry import readonly as _ro
@@ -37,6 +38,11 @@ READING_MM = 0.5
 NICE = (*PLAN_SERIES, 10.0)
 #: Enlargements allowed from the work diagram to the ΔE diagram (μE = μA / k).
 ENLARGE = (1, 2, 4, 5, 10)
+#: A step past a round scale factor to the next one of the series (whose steps are ≥ 25 %).
+NEXT_ROUND = 0.01
+#: At most this many steps to a coarser μM (five a decade: a column 10^20 times too tall; a NaN
+#: ordinate, which never fits, stops here instead of looping).
+COARSER_STEPS = 100
 
 
 def nice_ceil(x: float) -> float:
@@ -57,7 +63,7 @@ class GraphicalReplica:
     mu_M: float
     H: float
     mu_A: float
-    enlargement: int
+    enlargement: float           # k of μE = μA / k: an int ≥ 1 (ENLARGE), or 1/n (a reduction)
     mu_E: float
     mu_J: float
     psi_max_deg: float
@@ -102,6 +108,43 @@ def replica_positions(cycle: Cycle, positions: int) -> np.ndarray:
     return np.union1d(np.union1d(th, cycle.breaks), [TWO_PI])
 
 
+def wittenbauer_height(e: np.ndarray, jx: np.ndarray, t_max: float, t_min: float) -> float:
+    """Height of the Wittenbauer construction, mm: the curve ΔE(J), the ΔE axis from 0, the points K
+    and L where the tangents cut it and the tangents' ends at the end of the J axis (as
+    :func:`reportgen.scenes.dynamics.wittenbauer_scene` draws them)."""
+    K, L = float(np.max(e - jx * t_max)), float(np.min(e - jx * t_min))
+    x_end = float(np.max(jx)) + J_BEYOND_MM
+    ys = np.concatenate((e, [0.0, K, L, K + x_end * t_max, L + x_end * t_min]))
+    return float(ys.max() - ys.min())
+
+
+def _enlargement(e_A: np.ndarray, jx: np.ndarray, mu_J: float, mu_A: float, omega_m: float, delta: float,
+                 layout: GraphLayout) -> float:
+    """k of μE = μA / k: the largest of ENLARGE that draws the span of ΔE within ``layout.e_height``
+    (1 if none), made smaller where the whole Wittenbauer construction would not fit
+    ``layout.w_height``: k = 1/n, n the smallest round reduction (1, 2, 2.5, 4, 5 × 10^j) that fits.
+
+    Every ordinate of that construction — ΔE, K, L, the tangents' ends — is ∝ 1/μE (tg ψ ∝ μJ/μE at a
+    fixed μJ), so its height at k is k times its height at k = 1. K and L stand about J_red·ω_m²/(2μE)
+    below the curve: a machine whose J_red·ω_m²/2 (or its variation) dwarfs ΔE (the press with its
+    lengths × 100 and its masses kept: ψ ≈ 86°) put them metres below the ΔE axis at μE = μA."""
+    span = float(e_A.max() - e_A.min())
+    t_max, t_min = tangent_slopes(mu_J, mu_A, omega_m, delta)      # at k = 1
+    height = wittenbauer_height(e_A, jx, t_max, t_min)
+    fits = [k for k in ENLARGE if k * span <= layout.e_height and k * height <= layout.w_height]
+    if fits:
+        return max(fits)
+    if height <= layout.w_height:
+        return 1
+    return 1.0 / round_up(height / layout.w_height, PLAN_SERIES)
+
+
+def _span(*arrays) -> float:
+    """From the lowest to the highest ordinate, 0 included (the diagram's axis), mm."""
+    v = np.concatenate([np.atleast_1d(np.asarray(a, dtype=float)) for a in arrays] + [np.zeros(1)])
+    return float(v.max() - v.min())
+
+
 def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayout,
                scales: dict | None = None) -> dict:
     wm = cycle.omega_m
@@ -113,27 +156,35 @@ def _construct(cycle: Cycle, theta: np.ndarray, delta: float, layout: GraphLayou
     mu_phi = s.setdefault("mu_phi", TWO_PI / layout.phi_axis)
     # a machine without load (M_red ≈ 0) still gets a finite scale: a floor of 1e-9·J·ω² (N·m)
     m_ref = max(float(np.abs(np.concatenate((M, Mmid))).max()), RTOL_EQUAL * float(J.max()) * wm * wm)
-    mu_M = s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
     x = theta / mu_phi
-    y_mid = Mmid / mu_M
-    steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
-    a_H = np.concatenate(([0.0], np.cumsum(steps)))  # a·H, mm²
-    if "H" not in s:
-        need = float(np.abs(a_H).max()) / layout.a_height
-        s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - RTOL_ROUNDOFF))
-    H = s["H"]
-    a = a_H / H
-    mu_A = work_scale(mu_M, mu_phi, H)
-    drive = -a[-1] * x / x[-1]
-    e_A = a + drive
-    if "enlargement" not in s:
-        span = float(e_A.max() - e_A.min())
-        s["enlargement"] = max([k for k in ENLARGE if k * span <= layout.e_height] or [1])
-    k = s["enlargement"]
-    mu_E = mu_A / k
-    e = e_A * k
     mu_J = s.setdefault("mu_J", nice_ceil(float(J.max()) / layout.j_width))
     jx = J / mu_J
+    choose = "mu_M" not in s
+    s.setdefault("mu_M", nice_ceil(m_ref / layout.m_height))
+    for _coarser in range(COARSER_STEPS + 1):
+        mu_M = s["mu_M"]
+        y_mid = Mmid / mu_M
+        steps = y_mid * np.diff(x)                       # = a_{i+1}·H − a_i·H
+        a_H = np.concatenate(([0.0], np.cumsum(steps)))  # a·H, mm²
+        if "H" not in s:
+            need = float(np.abs(a_H).max()) / layout.a_height
+            s["H"] = max(layout.pole_step, layout.pole_step * math.ceil(need / layout.pole_step - RTOL_ROUNDOFF))
+        H = s["H"]
+        a = a_H / H
+        mu_A = work_scale(mu_M, mu_phi, H)
+        drive = -a[-1] * x / x[-1]
+        e_A = a + drive
+        k = s["enlargement"] if "enlargement" in s else _enlargement(e_A, jx, mu_J, mu_A, wm, delta, layout)
+        # sheet 3's column holds M, A and ΔE one under the other: each filling its own box, they
+        # could overflow it together (conveyor with its lengths × 0.37 and its force × 8.5); then μM
+        # is the next round value, H kept (M and A shrink, ΔE keeps its own enlargement rule)
+        column = _span(M / mu_M, y_mid) + _span(a, [drive[-1]]) + _span(e_A * k)
+        if not choose or column <= layout.column_height or _coarser == COARSER_STEPS:
+            break
+        s["mu_M"] = nice_ceil(mu_M * (1.0 + NEXT_ROUND))
+    s.setdefault("enlargement", k)
+    mu_E = mu_A / k
+    e = e_A * k
     t_max, t_min = tangent_slopes(mu_J, mu_E, wm, delta)
     up, lo = e - jx * t_max, e - jx * t_min
     iK, iL = int(np.argmax(up)), int(np.argmin(lo))

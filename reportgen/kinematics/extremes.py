@@ -18,7 +18,7 @@ from ..errors import ReportgenError
 from ..roots import brent_root, brent_roots
 from .constraints import rot, world
 from .solve import KinematicModel
-from ..tolerances import CONSTRUCTION_TOL, ROOT_XTOL
+from ..tolerances import CONSTRUCTION_TOL, ROOT_XTOL, RTOL_EQUAL, TINY
 
 GRID = 720
 
@@ -132,6 +132,30 @@ def _roots_of_velocity(model: KinematicModel, out: Output, grid: np.ndarray, v: 
     return [float(r) for r in found if r is not None]
 
 
+def _extreme_indices(roots, rx: np.ndarray, sgn: float) -> tuple[int, int]:
+    """Indices of the largest and the smallest output coordinate among the roots of v(φ).
+
+    An output can reach its largest (or smallest) value twice a turn, equal by construction (class3:
+    the rocker reaches its upper extreme at φ1 = 10.8° and 61.2°, dipping 0.3° between them): argmax
+    then chose by round-off, and the same mechanism scaled × 0.1 had its working stroke 206.2° instead
+    of 204.2° and position 0 half a turn away. Of equal extremes (within RTOL_EQUAL of the stroke) the
+    one taken is the last before the other extreme in the direction of rotation, where the output
+    leaves for it (the choice round-off made for the examples)."""
+    rx = np.asarray(rx, dtype=float)
+    tol = RTOL_EQUAL * max(float(rx.max() - rx.min()), TINY)
+    i_max, i_min = int(np.argmax(rx)), int(np.argmin(rx))
+
+    def before(candidates, target: float) -> int:
+        # the crank angle from each candidate to the target, in the direction of rotation: the smallest
+        return min(candidates, key=lambda i: ((sgn * (target - roots[i])) % (2 * math.pi), i))
+
+    tied_max = [i for i in range(len(rx)) if rx[i] >= rx[i_max] - tol]
+    tied_min = [i for i in range(len(rx)) if rx[i] <= rx[i_min] + tol]
+    i_max = before(tied_max, roots[i_min])
+    i_min = before(tied_min, roots[i_max])
+    return i_max, i_min
+
+
 def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
     """Extreme positions by root finding; ``working`` = "slow" (default) or "fast"."""
     out = find_output(model)
@@ -146,7 +170,7 @@ def find_strokes(model: KinematicModel, working: str = "slow") -> Strokes:
         raise NoExtremesError("the output link has no extreme positions (it turns fully)")
     rq, _ = model.positions(np.array(roots))
     rx = output_coordinate(model, out, rq)
-    i_max, i_min = int(np.argmax(rx)), int(np.argmin(rx))
+    i_max, i_min = _extreme_indices(roots, rx, sgn)
     phi_max, phi_min = roots[i_max], roots[i_min]
     # crank angle from max to min in the direction of rotation
     a_max_to_min = math.degrees((sgn * (phi_min - phi_max)) % (2 * math.pi))

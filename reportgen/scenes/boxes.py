@@ -17,6 +17,13 @@ class GraphLayout:
     a_height: float = 80.0        # largest |A| of the work diagram
     e_height: float = 80.0        # span of ΔE
     j_width: float = 160.0        # largest J_red (from J = 0)
+    #: the Wittenbauer construction from its lowest to its highest point (the curve, K, L, the
+    #: tangents to the end of the J axis): sheet 3 gives it the field's height less J_red(φ) under it
+    w_height: float = 210.0
+    #: the ordinates of M_red, A (with A_дв) and ΔE together, each from its lowest to its highest
+    #: point with its axis: sheet 3's left column holds them with ω(φ) (2·omega_height), the four
+    #: titles, the position numbers and names and the gaps (tests/hard_cases/test_wittenbauer_fits.py)
+    column_height: float = 268.0
     pole_step: float = 10.0       # H is a multiple of this
     omega_height: float = 36.0    # largest |ω − ω_m| (or the band) of ω(φ)
 

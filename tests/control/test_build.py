@@ -30,6 +30,13 @@ def test_new_build_without_latex(tmp_path):
     tex = (out / "report.tex").read_text(encoding="utf-8")
     assert "реконструирована" in tex and "Задание на контрольную работу" in tex
     assert "Реакции в~кинематических парах" not in tex        # a control work has no reactions
+    # issue 12: the introduction and the plans speak of a control work, not of a course project
+    # with force polygons, several sheets and strokes (nothing the control work has)
+    intro = tex[tex.index("Объект"):tex.index("\\section", tex.index("Объект"))]
+    assert "Объект контрольной работы" in intro and "на~листе графической" in intro
+    for absent in ("проект", "планов сил", "на~листах"):
+        assert absent not in intro, absent
+    assert "рабочий ход)" not in tex and "холостой ход)" not in tex
     import ezdxf
     doc = ezdxf.readfile(out / "sheets" / "sheet1-control.dxf")
     xs = [x for e in doc.modelspace().query("LINE") for x in (e.dxf.start.x, e.dxf.end.x)]

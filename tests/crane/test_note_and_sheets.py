@@ -65,6 +65,14 @@ def test_check_sentences_print_the_checked_numbers(rendered, project):
     assert c.passed and "не~выполняется" not in tex
 
 
+def test_a_check_prints_the_quantity_as_its_formula_did(rendered):
+    """Issue 12: one quantity, one rounding — (1.6) ends «D_бл = … = 1130,5 мм», so its check reads
+    «D_бл = 1130,5 ≥ …», not «1130»; (1.13) «l_0max = … = 1187,6 мм», its check «≤ l_0max = 1187,6»."""
+    _, tex = rendered
+    assert r"D_{\text{бл}} = 1130{,}5 \ge" in tex
+    assert r"l_{0\max} = 1187{,}6~\text{мм}$~---" in tex
+
+
 def test_a_failed_check_prints_the_advice(project, tmp_path):
     import dataclasses as dc
     from latex_templates.parts.crane_document import note_builder

@@ -30,7 +30,8 @@ def _ink(text: str, tmp_path) -> np.ndarray:
     doc.header["$PLIMMAX"] = (30.0, 30.0)
     png = render_png(doc, tmp_path / f"{ord(text)}.png", dpi=100)
     from matplotlib import image
-    img = image.imread(png)[..., :3].mean(axis=-1)
+    img = image.imread(png)
+    img = img[..., :3].mean(axis=-1) if img.ndim == 3 else img     # a grey PNG or an RGB(A) one
     assert doc.styles.get("S").dxf.font == "osifont.ttf"          # the document is left as it was
     return img < 0.5
 
@@ -47,8 +48,11 @@ def test_the_preview_letters_yo_as_ie_with_dots(tmp_path):
 def test_the_preview_letters_e_as_a_mirrored_es_with_a_bar(tmp_path):
     e, es = _ink("Э", tmp_path), _ink("С", tmp_path)
     assert e.sum() > es.sum() and not np.array_equal(e, es)
-    mirrored = es[:, ::-1]
     cols = np.nonzero(es.any(axis=0))[0]
     shift = (es.shape[1] - 1 - cols.max()) - cols.min()            # mirror about the letter's middle
-    mirrored = np.roll(mirrored, -shift, axis=1)
-    assert (mirrored & ~e).sum() < 0.05 * es.sum()                 # the bowl is С's, mirrored
+    # the middle falls between pixels as it may: a stem's edge column can land on either side of
+    # the ink threshold (measured: 0–6 % of С's ink for the same letters moved by 0.05 mm, in either
+    # renderer), so the mirror axis may sit one pixel either way
+    miss = min((np.roll(es[:, ::-1], -(shift + d), axis=1) & ~e).sum() for d in (-1, 0, 1))
+    assert miss < 0.05 * es.sum()                                  # the bowl is С's, mirrored
+    assert (es & ~e).sum() > 0.2 * es.sum()                        # (С itself, unmirrored, is not)

@@ -132,6 +132,20 @@ def test_many_terms_go_through_partial_sums_and_still_balance():
     assert abs(total) < 0.5 * 77.7 + 3
 
 
+def test_the_total_of_partial_sums_is_not_called_a_partial_sum():
+    """Issue 12 (press p. 38): «Σ(Ж) — частичная сумма моментов» was printed for the total of the
+    five partial sums; the total record carries its own meaning."""
+    terms = tuple(BalanceTerm(1, Var("F", f"F_{{{k}}}", 10.0 + k, "Н", "сила"),
+                              Var("h", f"h_{{{k}}}", 5.0 + k, "мм", "плечо")) for k in range(13))
+    sol = Balance("\\sum M_{p}", "F", "Н", 1, Var("l", "pa", 50.0, "мм", "отрезок"), terms,
+                  partial="\\Sigma", partial_unit="Н·мм", partial_meaning="частичная сумма моментов",
+                  total_meaning="сумма моментов всех известных сил").solve()
+    *partials, total = sol.parts
+    assert len(partials) == 5 and total.symbol == "\\Sigma"
+    assert all(p.meaning == "частичная сумма моментов" for p in partials)
+    assert total.meaning == "сумма моментов всех известных сил"
+
+
 def test_split_terms_reads_signs():
     assert _split_terms("-a \\cdot b + c \\cdot d - \\frac{e}{f}") == [(-1, "a \\cdot b"), (1, "c \\cdot d"),
                                                                        (-1, "\\frac{e}{f}")]

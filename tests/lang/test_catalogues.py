@@ -185,3 +185,53 @@ def test_russian_only_documents_refuse_another_language(lang):
     with pytest.raises(TaskError) as err:
         parse_task(data)
     assert err.value.path == "document.language"
+
+
+# A display (a calculation record, a displayed equation) ends its sentence: the where-list after it
+# ends with a full stop, and a teacher reads what follows as a new sentence (issue 12: «что
+# совпадает с заданным…», «на плане — отрезок 0,9 мм», «что на схеме составляет»).
+_DISPLAY_LINE = re.compile(r"^\s*(\\VAR\{\s*(m\.calc|eq|m\.balance)\(|\\VAR\{[\w.]*equation\w*\}\s*$|\\\]\s*$|\\end\{(equation|align|gather|multline)\*?\}\s*$)")
+_CONTROL = re.compile(r"^\s*(\\BLOCK\{[^{}]*\}\s*)+")
+#: the words that may continue a sentence after its display (the where-list and its kin)
+_CONTINUES = {"ru": ("где",), "uk": ("де",), "en": ("where",)}
+
+
+def _sentence_after_display(lang: str, text: str) -> list[str]:
+    bad = []
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        if not _DISPLAY_LINE.match(line):
+            continue
+        for nxt in lines[i + 1:]:
+            rest = _CONTROL.sub("", nxt).strip()
+            if not rest or rest.startswith(("\\VAR{m.calc", "\\VAR{eq(", "\\VAR{m.figure", "\\VAR{m.table", "%")):
+                continue                                     # the next display, a figure, a loop's end
+            word = re.match(r"[~\s]*([^\W\d_]+)", rest)
+            if word and word.group(1)[0].islower() and word.group(1) not in _CONTINUES[lang]:
+                bad.append(rest[:60])
+            break
+    return bad
+
+
+@pytest.mark.parametrize("lang", LANGUAGES)
+def test_no_sentence_starts_in_lower_case_after_a_display(lang):
+    """In every catalogue snippet and template, the line after a display starts a new sentence
+    (a capital letter) or continues it with the where-list's word («где», «де», «where»)."""
+    def walk(node, prefix=""):
+        for k, v in node.items():
+            if isinstance(v, dict):
+                yield from walk(v, f"{prefix}{k}.")
+            elif isinstance(v, str):
+                yield prefix + k, v
+    bad = [(key, b) for key, v in walk(_catalogue(lang)) for b in _sentence_after_display(lang, v)]
+    if lang == "ru":
+        for path in sorted((ROOT / "latex_templates" / "templates").rglob("*.j2")):
+            bad += [(path.name, b) for b in _sentence_after_display(lang, path.read_text(encoding="utf-8"))]
+    assert not bad, bad
+
+
+def test_the_display_check_sees_a_lower_case_continuation():
+    assert _sentence_after_display("ru", "\\VAR{m.calc(e.h)}\nчто на~схеме составляет\n")
+    assert _sentence_after_display("en", "\\VAR{eq(r.x)}\n\\BLOCK{endif}\nwhich on the scheme is\n")
+    assert not _sentence_after_display("ru", "\\VAR{m.calc(e.h)}\nНа~схеме это плечо\n")
+    assert not _sentence_after_display("uk", "\\VAR{m.calc(e.h)}\nде $x$~--- ...\n")

@@ -60,3 +60,49 @@ def test_renders_in_every_language(name, tmp_path):
         if lang == "en":
             assert not re.search("[\u0400-\u04FF]", body), re.findall(r".{40}[\u0400-\u04FF]+.{10}", body)[:3]
     assert counts["ru"] == counts["uk"] == counts["en"], counts
+
+
+def _four_bar_task(path: Path, language: str) -> Path:
+    """A crank–rocker with a resistance moment on the rocker: a mechanism no example has (no slider,
+    no triangular link, no gears)."""
+    from reportgen.zoo import four_bar
+    text = four_bar(0.08, 0.30, 0.22, 0.28, phi_deg=30.0, omega=15.0, name="Rocker",
+                    loads=[{"kind": "resistance", "link": 3, "moment": 120.0, "law": [[0.0, 1.0], [1.0, 1.0]],
+                            "stroke": "working"}],
+                    analysis={"positions": 12, "start": "extreme", "force_position": 3},
+                    extra="[dynamics]\ndelta = 0.05\ncrank_inertia = 0.4\n")
+    path.write_text(f'[document]\nlanguage = "{language}"\ntitle = "Rocker"\n\n' + text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("language,moment", [("ru", "Момент полезного сопротивления"),
+                                             ("uk", "Момент корисного опору"),
+                                             ("en", "The useful resistance moment")])
+def test_the_note_speaks_only_of_what_the_mechanism_has(language, moment, tmp_path):
+    """Issue 12: «a statement about something the task does not have». A rocker driven against a
+    resistance moment: the assignment calls it a moment (not «Сила … M_пс»), the mass rules name no
+    slider and no triangular link, and the table of positions gives the rocker's angle in degrees as
+    the text does (ψ = 47,73°), not in radians."""
+    task = load_task(_four_bar_task(tmp_path / "task.toml", language))
+    project = Project(task)
+    strings = Strings(language)
+    sections, left_out = compose(project, strings)
+    note = NoteBuilder(task.document, designation="X", introduction=introduction_paragraphs(project, left_out),
+                       conclusions=[c for s in sections for c in s.conclusions], assignment=assignment_section(project))
+    for s in sections:
+        note.add_section(s.section)
+    tex = note.render(tmp_path / "out").read_text(encoding="utf-8")
+    assert moment in tex
+    rules = tex[tex.index("${}^{*}$"):]
+    rules = rules[:rules.index("\n\n")]
+    for absent in ("ползун", "повзун", "slider", "треугольн", "трикутн", "triangular"):
+        assert absent not in rules, absent
+    assert r"$\psi$, \textdegree" in tex and r"$\psi$, рад" not in tex and r"$\psi$, rad" not in tex
+
+
+def test_a_prismatic_pair_is_named_in_the_group_description(tmp_path):
+    """Issue 12 (a teacher's mark): «внутренних D и внешних B, D» named D twice; the outer D is the
+    slider's prismatic pair with the frame, and the note says so."""
+    tex = _render("press", "ru", tmp_path)
+    assert "внутренних $D$ и~внешних $B$, $D$~(поступательная)" in tex
+    assert "внутренних $B$ и~внешних $A$, $C$;" in tex

@@ -221,3 +221,19 @@ def test_reducer_table_is_the_results(example, built):
     assert set(seen) == set(wheels) | {"u", "K"}, seen
     for k, (z, d) in wheels.items():
         assert seen[k][0].value == z and seen[k][1].agrees(d), (k, seen[k], z, d)
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_tangent_angles_print_as_on_sheet_3(example, built):
+    """Wittenbauer's ψmax, ψmin: the note's formulas end with the numbers of sheet 3's table (issue
+    12: one quantity, one rounding — the note printed ψmin = 9,046°, the sheet 9,05)."""
+    out = built(example)
+    mark = _mark(example)
+    rows = [(label, vals) for label, vals in labelled_values(sheet_texts(out / "sheets"), mark)
+            if re.search(r"ψ ?m(ax|in)\s*,\s*°", label)]          # the table row «Угол ψmax, °»
+    if not rows:
+        pytest.skip("no Wittenbauer diagram in this work")
+    note = re.sub(r"\s+", " ", pdf_text(out / "report.pdf"))
+    for label, vals in rows:
+        assert vals, label
+        assert re.search(rf"= {re.escape(vals[0].text)} ?[°∘]", note), (label, vals[0].text)

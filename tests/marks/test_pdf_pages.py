@@ -135,3 +135,67 @@ def test_front_matter(example, built):
     assert "Механизм преобразует" in intro and "[1, 2]" in intro and "[3]" in intro
     if example == "conveyor":
         assert "проектирование эвольвентной" not in intro      # no [gears]: the work designs no gears
+        # the left-out section named in quotes, not as a capitalised word mid-sentence
+        assert "не приводятся: «Проектирование зубчатых передач»." in intro
+
+
+_AFTER_DISPLAY = re.compile(r"^\s*(\\end\{(equation|wherelist|align|gather|multline)\*?\}|\\\])\s*$")
+#: the words that may continue a sentence after its display (the where-list and its kin)
+_CONTINUES = ("где", "де", "where")
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_sentence_starts_in_lower_case_after_a_display(example, built):
+    """The note's source as typeset: after a displayed formula or its where-list (which ends with a
+    full stop) the text starts a new sentence with a capital letter — never «что на схеме
+    составляет», «на плане — отрезок 0,9 мм», «что не превышает допустимых 5 %» (issue 12: a
+    sentence without a subject, starting in lower case)."""
+    lines = (built(example) / "report.tex").read_text(encoding="utf-8").splitlines()
+    bad = []
+    for i, line in enumerate(lines):
+        if not _AFTER_DISPLAY.match(line):
+            continue
+        nxt = next((ln.strip() for ln in lines[i + 1:] if ln.strip()), "")
+        word = re.match(r"[~\s]*([^\W\d_]+)", nxt)
+        if word and word.group(1)[0].islower() and word.group(1) not in _CONTINUES:
+            bad.append((i + 2, nxt[:70]))
+    assert not bad, bad
+
+
+def _table_parts(text: str, caption: str, continued: str):
+    """(table, rows) of every part of a table on one page: the rows that follow its caption or its
+    «continued» head, up to the first blank line (pdftotext -layout leaves one after a table)."""
+    parts = []
+    for page in text.split("\f"):
+        lines = page.splitlines()
+        for i, ln in enumerate(lines):
+            m = re.match(rf"\s*(?:{re.escape(caption)} (\d+\.\d+) —|{re.escape(continued)} (\d+\.\d+))", ln)
+            if not m:
+                continue
+            j = i + 1
+            while j < len(lines) and lines[j].strip():
+                j += 1                                  # the caption's other lines, the column header
+            while j < len(lines) and not lines[j].strip():
+                j += 1
+            rows = 0
+            while j < len(lines) and lines[j].strip():
+                rows += 1
+                j += 1
+            parts.append((m.group(1) or m.group(2), rows))
+    return parts
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_table_part_is_a_single_row(example, built):
+    """A table broken over pages leaves at least two rows on each page (issue 12: orphaned table
+    rows, pp. 8, 11, 56 of the press note), and its next page starts with «Продолжение таблицы N»
+    (ГОСТ 7.32)."""
+    text = _pdftext(built(example) / "report.pdf")
+    caption = _word(example, "captions.table")
+    continued = _word(example, "captions.table_continued")
+    parts = _table_parts(text, caption, continued)
+    numbers = [n for n, _ in parts]
+    broken = {n for n in numbers if numbers.count(n) > 1}
+    bad = [(n, rows) for n, rows in parts if n in broken and rows < 2]
+    assert not bad, bad
+    assert all(re.search(rf"{re.escape(continued)} {re.escape(n)}\b", text) for n in broken), broken

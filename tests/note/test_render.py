@@ -112,6 +112,13 @@ def test_calc_macro_prints_numbered_equation_and_first_where_list():
     assert tracker.records[0] is va and len(tracker.records) == 2
 
 
+def test_an_angle_result_takes_the_degree_sign_without_a_space():
+    """Issue 12: «ψmax = arctg … = 9,98 °» — the degree sign follows the number, as in 85,23°."""
+    env, m = _macros(SymbolTracker())
+    out = str(m.calc(record(r"\psi", "degrees(atan(x))", "°", Var("x", "x", 0.176, "", "отношение"))))
+    assert r"= 9{,}982^\circ" in out and r"\text{°}" not in out
+
+
 def test_wide_formula_is_split_after_the_symbolic_form():
     env, m = _macros(SymbolTracker())
     rec = record("l_{AC}", "sqrt(a**2 + b**2 - 2*a*b*cos(radians(g)))", "м",

@@ -85,3 +85,31 @@ def test_an_error_while_saving_comes_back_with_its_class_and_fields(tmp_path, po
         queue.save(fork=pipeline._fork_figures)
     assert info.value.what == "figure saving"
     assert "made up for the test" in info.value.detail
+
+
+def test_a_font_subset_made_once_writes_the_bytes_of_one_made_anew(tmp_path, monkeypatch):
+    """remember_font_subsets: a figure whose fonts and glyphs an earlier one used gets the same
+    PDF bytes from the remembered subsets as from fontTools run again."""
+    from matplotlib.backends import _backend_pdf_ps as pdf_ps
+
+    from latex_templates.figures import saving
+
+    monkeypatch.setattr(saving, "_SUBSETS", {})
+    anew = pdf_ps.get_glyphs_subset                    # matplotlib's, unless a save installed ours
+    anew = getattr(anew, "reportgen_original", anew)
+    made = []
+
+    def counted(fontfile, glyphs):
+        made.append(str(fontfile))
+        return anew(fontfile, glyphs)
+
+    monkeypatch.setattr(pdf_ps, "get_glyphs_subset", counted)
+    save_pdf(_figures(1)[0], tmp_path / "plain.pdf")           # fontTools every time
+    plain_count = len(made)
+    saving.remember_font_subsets()
+    save_pdf(_figures(1)[0], tmp_path / "first.pdf")           # made and remembered
+    first_count = len(made) - plain_count
+    save_pdf(_figures(1)[0], tmp_path / "again.pdf")           # from memory
+    assert plain_count > 0 and first_count == plain_count and len(made) == 2 * plain_count
+    assert (tmp_path / "again.pdf").read_bytes() == (tmp_path / "first.pdf").read_bytes() \
+        == (tmp_path / "plain.pdf").read_bytes()
