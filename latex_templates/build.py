@@ -17,6 +17,8 @@ from pathlib import Path
 
 from reportgen.errors import BuildError
 
+from .passes import PASS_LINE
+
 STAGE = "note (LaTeX)"
 APT_INSTALL = ("sudo apt-get install texlive-latex-recommended texlive-lang-cyrillic "
                "texlive-xetex texlive-fonts-recommended latexmk fonts-liberation")
@@ -38,6 +40,7 @@ class BuildReport:
     log: Path
     seconds: float
     warnings: tuple[str, ...] = ()
+    passes: int = 0          # xelatex passes run (as the driver or latexmk reports them)
 
 
 def build_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_references: bool = True,
@@ -96,7 +99,10 @@ class PendingPdf:
         warnings += undefined
         pdf = work / (tex.stem + ".pdf")
         shutil.copyfile(built, pdf)
-        self._report = BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings))
+        passes = sum(line.strip() == PASS_LINE or "of rule 'xelatex'" in line
+                     for line in ((out or "") + "\n" + (err or "")).splitlines())
+        self._report = BuildReport(pdf=pdf, tex=tex, log=log, seconds=seconds, warnings=tuple(warnings),
+                                   passes=passes)
         return self._report
 
 
@@ -129,12 +135,17 @@ class PendingPasses(PendingPdf):
     """xelatex's first pass running on placeholder figures (:mod:`latex_templates.passes`);
     :meth:`figures_ready` lets it go on with the real ones; :meth:`wait` as for latexmk."""
 
-    def figures_ready(self) -> None:
+    def figures_ready(self, same_boxes: bool = False) -> None:
+        """The figures are saved; ``same_boxes``: each has its placeholder's page box, so that a
+        first pass that left the auxiliary files as it found them is the last
+        (:data:`latex_templates.passes.SAME_BOXES`)."""
+        from .passes import FIGURES_REAL, SAME_BOXES
+
         stdin = self.proc.stdin
         if stdin is None:
             return
         try:
-            stdin.write("1")
+            stdin.write((SAME_BOXES if same_boxes else FIGURES_REAL).decode())
             stdin.close()
         except (BrokenPipeError, OSError):   # the first pass failed already: wait() says why
             pass

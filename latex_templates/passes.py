@@ -12,6 +12,14 @@ PDF, because the passes continue until the auxiliary files are stable on the rea
 
 Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3).
 Exit status: 0, or the failing program's status (its log says why).
+
+The byte ``2`` instead of ``1`` says more: every real figure has the page box of its placeholder,
+written the same way (:func:`media_box`; a figure kept by the build cache is its real PDF already).
+xelatex reads nothing of a figure but that box — the ``.xdv`` names the file, ``xdvipdfmx`` embeds
+it — so the first pass then typeset the real figures. If that pass also left the auxiliary files
+as it found them (an earlier build's, restored by the build cache), a next pass would read the same
+input and write the same output: the first pass is the last one (latexmk's rule, met after one
+pass), and only ``xdvipdfmx`` runs. Otherwise the passes go on as above.
 """
 from __future__ import annotations
 
@@ -46,19 +54,29 @@ def _run(cmd: list[str], cwd: Path) -> int:
     return subprocess.run(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL).returncode
 
 
-def drive(tex: Path, build_dir_name: str, go: Callable[[], bool]) -> int:
+#: What the build writes to the driver's standard input once the figures are saved: they are real;
+#: they are real and each has its placeholder's page box (:func:`media_box`).
+FIGURES_REAL, SAME_BOXES = b"1", b"2"
+
+
+def drive(tex: Path, build_dir_name: str, go: Callable[[], bytes | bool]) -> int:
     """Pass 1 now, then (once ``go()`` says the figures are real) the passes until the auxiliary
-    files are stable, then xdvipdfmx. Returns an exit status."""
+    files are stable, then xdvipdfmx; none after pass 1 when ``go()`` says :data:`SAME_BOXES` and
+    pass 1 left the auxiliary files as they were. Returns an exit status."""
     work = tex.parent
     build_dir = work / build_dir_name
-    status = _run(xelatex_command(tex.name, build_dir_name), work)
+    found = _aux_state(build_dir) if build_dir.is_dir() else None
+    status = _xelatex(tex, build_dir_name)
     if status != 0:
         return status
-    if not go():
+    said = go()
+    if not said:
         return CANCELLED
+    if said == SAME_BOXES and _aux_state(build_dir) == found:
+        return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
     for _ in range(MAX_PASSES):
         before = _aux_state(build_dir)
-        status = _run(xelatex_command(tex.name, build_dir_name), work)
+        status = _xelatex(tex, build_dir_name)
         if status != 0:
             return status
         if _aux_state(build_dir) == before:
@@ -66,12 +84,27 @@ def drive(tex: Path, build_dir_name: str, go: Callable[[], bool]) -> int:
     return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
 
 
+#: The line the driver writes on its standard output after each xelatex pass (counted by the build).
+PASS_LINE = "xelatex pass"
+
+
+def _xelatex(tex: Path, build_dir_name: str) -> int:
+    print(PASS_LINE, flush=True)
+    return _run(xelatex_command(tex.name, build_dir_name), tex.parent)
+
+
+def _pdf_number(x: float) -> bytes:
+    """A number as matplotlib writes it into a PDF (``%.10f``, trailing zeros dropped)."""
+    return (b"%.10f" % x).rstrip(b"0").rstrip(b".")
+
+
 def placeholder_pdf(width_pt: float, height_pt: float) -> bytes:
-    """A one-page PDF of the given size with nothing on it (what xelatex reads of a figure)."""
+    """A one-page PDF of the given size with nothing on it (what xelatex reads of a figure); its
+    page box written as matplotlib writes a figure's (:func:`media_box` compares them)."""
     objects = [b"<< /Type /Catalog /Pages 2 0 R >>",
                b"<< /Type /Pages /Kids [3 0 R] /Count 1 >>",
-               b"<< /Type /Page /Parent 2 0 R /MediaBox [0 0 %.6f %.6f] /Contents 4 0 R "
-               b"/Resources << >> >>" % (width_pt, height_pt),
+               b"<< /Type /Page /Parent 2 0 R /MediaBox [ 0 0 " + _pdf_number(width_pt) + b" "
+               + _pdf_number(height_pt) + b" ] /Contents 4 0 R /Resources << >> >>",
                b"<< /Length 0 >>\nstream\n\nendstream"]
     out = bytearray(b"%PDF-1.4\n")
     offsets = []
@@ -86,8 +119,28 @@ def placeholder_pdf(width_pt: float, height_pt: float) -> bytes:
     return bytes(out)
 
 
-def _go_from_stdin() -> bool:
-    return sys.stdin.buffer.read(1) == b"1"
+def media_box(pdf: Path) -> bytes | None:
+    """The page box of a one-page PDF as written (``/MediaBox [ 0 0 w h ]``: the placeholder's and
+    matplotlib's; read from the file's head, where both write it), or None when there is none
+    there, or a second box (a page's own, a crop box, a rotation) that xelatex might read."""
+    import re
+
+    try:
+        with open(pdf, "rb") as f:
+            head = f.read(4096)
+            size = f.seek(0, 2)
+        whole = head if size <= len(head) else pdf.read_bytes()
+    except OSError:
+        return None
+    boxes = re.findall(rb"/MediaBox\s*\[([^\]]*)\]", whole)
+    if len(boxes) != 1 or re.search(rb"/(CropBox|Rotate|UserUnit|Count\s+(?!1\b)\d)", whole):
+        return None
+    return b" ".join(boxes[0].split())
+
+
+def _go_from_stdin() -> bytes:
+    said = sys.stdin.buffer.read(1)
+    return said if said in (FIGURES_REAL, SAME_BOXES) else b""
 
 
 def main(argv: list[str] | None = None) -> int:

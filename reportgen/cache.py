@@ -12,18 +12,25 @@ What, each under a key that is a SHA-256 of everything the entry depends on:
   bytes + the build options. A hit copies the folder: the same bytes a build would write, since
   the build is a pure function of these (tests check builds with different hash seeds, folders
   and times, and cached against uncached).
-- ``previews/<key>.png``: a sheet's PNG preview; key = the DXF's bytes + the code. A sheet is
-  always drawn again (cheap), its preview only when its DXF changed.
+- ``previews/<key>.png``: a sheet's PNG preview; key = the DXF's bytes + the code. A sheet drawn
+  again renders its preview only when its DXF changed.
+- ``sheets/<sheet>/<variant>/``: a whole sheet (DXF + preview); ``<sheet>`` = the code + the sheet
+  module, file name, number, count and language; ``<variant>`` = what the sheet read of the
+  project when it was drawn (:mod:`reportgen.read_trace`) + the digest of each value read. A
+  sheet whose reads digest as before on the new project is copied, not drawn
+  (:meth:`BuildCache.restore_sheet`).
 - ``tex/<key>/``: LaTeX's auxiliary files of the last build of a task file (key = its absolute
-  path): latexmk starts from them and runs only the passes the change needs (often one).
-- ``figures/<key>.pdf``: a note's figure drawn from a scene; key = the code + the figure's
-  content key (:func:`content_digest` of the scene, the renderer's options and the note's language,
-  made by ``latex_templates.figures.scene.scene_figure``). A hit copies the PDF instead of saving
-  the figure (the figure is still made: the note reads its size). The matplotlib plots have no key
-  and are always saved.
+  path): the passes start from them and often need one (:mod:`latex_templates.passes`).
+- ``figures/<key>.pdf``: a note's figure — drawn from a scene, or a matplotlib plot; key = the
+  code + the figure's content key (:func:`content_digest` of the scene or of the plot's arguments,
+  the renderer's options and the note's language: ``latex_templates.figures.scene.figure_key``,
+  ``latex_templates.figures.keyed.plot_key``). A hit neither makes nor saves the figure: a stand-in
+  with its kept sizes is placed and the PDF copied.
 - ``jinja/<key>.code``: the note's templates and catalogue snippets compiled by Jinja (key = the
   source, its name, the syntax options, the Jinja and Python versions; ``latex_templates.jinja_cache``).
 
+"The code" (:func:`code_fingerprint`) is every source file, the drawing libraries' versions, the
+xelatex binary and the fonts installed (:func:`fonts_fingerprint`).
 Each kind keeps its newest entries only (``KEEP``). A cache that cannot be written is skipped.
 """
 from __future__ import annotations
@@ -37,7 +44,7 @@ from pathlib import Path
 from typing import Mapping
 
 #: Newest entries kept of each kind.
-KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400}
+KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60}
 #: Source files whose bytes make the code's fingerprint.
 _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
@@ -77,21 +84,49 @@ def code_fingerprint() -> str:
         h.update(f"{lib}={version};".encode())
     tex = shutil.which("xelatex")
     h.update((os.path.realpath(tex) if tex else "no-xelatex").encode())
+    h.update(fonts_fingerprint().encode())
     return h.hexdigest()
 
 
-def content_digest(obj: object) -> str:
-    """SHA-256 of plain data — dataclasses, mappings, sequences, numbers, strings, numpy arrays —
-    by a canonical walk (type names, field names, float bits), the same in every process whatever
-    the hash seed; anything else is an error, so a key never rests on an object's ``repr``."""
+#: Where the fonts the figures and the sheets' previews are drawn with may come from (fontconfig's
+#: folders; matplotlib's own fonts go with its version).
+FONT_FOLDERS = ("/usr/share/fonts", "/usr/local/share/fonts", "~/.fonts", "~/.local/share/fonts")
+
+
+def fonts_fingerprint() -> str:
+    """SHA-256 of the font files installed (path, size, modification time): a font installed,
+    removed or updated changes every figure and preview the cache keeps."""
     h = hashlib.sha256()
-    _feed(h, obj)
+    for folder in FONT_FOLDERS:
+        base = Path(folder).expanduser()
+        if not base.is_dir():
+            continue
+        for dirpath, dirnames, filenames in os.walk(base):
+            dirnames.sort()
+            for name in sorted(filenames):
+                try:
+                    st = os.stat(os.path.join(dirpath, name))
+                except OSError:
+                    continue
+                h.update(f"{dirpath}/{name}:{st.st_size}:{st.st_mtime_ns};".encode())
     return h.hexdigest()
 
 
-def _feed(h: "hashlib._Hash", obj: object) -> None:
+def content_digest(obj: object, *, skip: "frozenset[tuple[str, str]]" = frozenset()) -> str:
+    """SHA-256 of plain data — dataclasses, mappings, sequences, sets, numbers (fractions too),
+    strings, numpy arrays — by a canonical walk (type names, field names, float bits), the same in
+    every process whatever the hash seed; anything else is an error, so a key never rests on an
+    object's ``repr``. ``skip``: (class name, field name) pairs of dataclass fields left out
+    (:data:`reportgen.read_trace.MASS_FIELDS`)."""
+    h = hashlib.sha256()
+    _feed(h, obj, skip)
+    return h.hexdigest()
+
+
+def _feed(h: "hashlib._Hash", obj: object, skip: "frozenset[tuple[str, str]]" = frozenset()) -> None:
     import dataclasses
     import struct
+    from fractions import Fraction
 
     if obj is None or isinstance(obj, bool):
         h.update(f"<{obj!r}>".encode())
@@ -102,29 +137,41 @@ def _feed(h: "hashlib._Hash", obj: object) -> None:
     elif isinstance(obj, str):
         data = obj.encode()
         h.update(b"s%d:" % len(data) + data)
+    elif isinstance(obj, Fraction):
+        h.update(b"q%d/%d;" % (obj.numerator, obj.denominator))
     elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        h.update(f"D{type(obj).__qualname__}(".encode())
-        for f in dataclasses.fields(obj):
-            h.update(f.name.encode() + b"=")
-            _feed(h, getattr(obj, f.name))
+        name = type(obj).__qualname__
+        h.update(f"D{name}(".encode())
+        for field_name in _field_names(type(obj)):
+            if (name, field_name) in skip:
+                continue
+            h.update(field_name.encode() + b"=")
+            _feed(h, getattr(obj, field_name), skip)
         h.update(b")")
     elif isinstance(obj, (tuple, list)):
+        packed = _packed_floats(obj)
+        if packed is not None:           # a run of floats, or of points: one update, not one per number
+            h.update(packed)
+            return
         h.update(b"T%d[" % len(obj))
         for item in obj:
-            _feed(h, item)
+            _feed(h, item, skip)
         h.update(b"]")
+    elif isinstance(obj, (set, frozenset)):       # in the order of the items' digests: no hash seed
+        items = sorted(content_digest(item, skip=skip) for item in obj)
+        h.update(b"S%d{" % len(items) + "".join(items).encode() + b"}")
     elif isinstance(obj, Mapping):
         h.update(b"M%d{" % len(obj))           # insertion order: the scenes build their mappings in a fixed order
         for k in obj.keys():
-            _feed(h, k)
-            _feed(h, obj[k])
+            _feed(h, k, skip)
+            _feed(h, obj[k], skip)
         h.update(b"}")
     elif type(obj).__module__ == "numpy":
         import numpy as np
 
         a = np.ascontiguousarray(obj)
         if a.dtype == object:
-            _feed(h, a.tolist())
+            _feed(h, a.tolist(), skip)
         else:
             h.update(f"A{a.dtype.str}{a.shape}".encode())
             h.update(a.tobytes())
@@ -132,6 +179,32 @@ def _feed(h: "hashlib._Hash", obj: object) -> None:
         from .errors import InternalError
 
         raise InternalError("content_digest", f"no canonical form for {type(obj).__name__}")
+
+
+@lru_cache(maxsize=None)
+def _field_names(cls: type) -> tuple[str, ...]:
+    import dataclasses
+    return tuple(f.name for f in dataclasses.fields(cls))
+
+
+def _packed_floats(seq: tuple | list) -> bytes | None:
+    """A sequence of floats (tag ``F``) or of equally long tuples of floats (tag ``P``, points) as
+    one run of little-endian doubles with its shape; None for anything else (walked item by item)."""
+    import struct
+
+    n = len(seq)
+    if n < 2:
+        return None
+    first = seq[0]
+    if type(first) is float:
+        if all(type(x) is float for x in seq):
+            return b"F%d[" % n + struct.pack(f"<{n}d", *seq)
+        return None
+    if type(first) is tuple and first and all(type(x) is float for x in first):
+        m = len(first)
+        if all(type(t) is tuple and len(t) == m and all(type(x) is float for x in t) for t in seq):
+            return b"P%dx%d[" % (n, m) + struct.pack(f"<{n * m}d", *(x for t in seq for x in t))
+    return None
 
 
 def _digest(*parts: bytes | str) -> str:
@@ -153,6 +226,7 @@ class BuildCache:
         self.tex_key = _digest("tex", str(task_path))
         self.figures_reused = 0     # figures copied from the cache in this build (the note's figures)
         self.figures_saved = 0      # figures saved and stored in this build
+        self._read_digests: dict[tuple, str | None] = {}   # a sheet's read → its digest, this build
 
     # -- whole builds ------------------------------------------------------------------------
     def restore_build(self, tmp: Path) -> bool:
@@ -209,12 +283,107 @@ class BuildCache:
             return
         _prune(dst.parent, KEEP["previews"])
 
+    # -- whole sheets ---------------------------------------------------------------------------
+    def _sheet_base(self, identity: str) -> Path:
+        return self.root / "sheets" / _digest("sheet", self.code, identity)
+
+    def _digest_of(self, project: object, read: tuple, mask: bool) -> str | None:
+        from .read_trace import read_digest
+
+        memo = (read, mask)
+        if memo not in self._read_digests:
+            try:
+                self._read_digests[memo] = read_digest(project, read, mask_masses=mask)
+            except Exception:  # noqa: BLE001 - a stage that fails now, or data without a canonical form: no hit
+                self._read_digests[memo] = None
+        return self._read_digests[memo]
+
+    def _variant(self, project: object, reads: list[tuple]) -> str | None:
+        """The name of the variant of a sheet whose ``reads`` have the values they have on
+        ``project`` (None when one of them cannot be digested)."""
+        from .read_trace import masks_masses
+
+        mask = masks_masses(reads)
+        digests = [self._digest_of(project, r, mask) for r in reads]
+        if any(d is None for d in digests):
+            return None
+        import json
+        return _digest("variant", json.dumps(reads), *[d for d in digests if d is not None])
+
+    def restore_sheet(self, identity: str, project: object, files: dict[str, Path]) -> bool:
+        """Copy the files of the sheet ``identity`` (the sheet module, its number and count, the
+        language) drawn from a project whose every read value (:mod:`reportgen.read_trace`) equals
+        ``project``'s; ``files``: the kept file's name → where it goes. False when there is none."""
+        import json
+
+        base = self._sheet_base(identity)
+        try:
+            variants = [p for p in base.iterdir() if (p / ".complete").is_file()]
+        except OSError:
+            return False
+        tried: set[str] = set()
+        for entry in sorted(variants, key=lambda p: p.stat().st_mtime, reverse=True):
+            try:
+                reads = [tuple(r) for r in json.loads((entry / "reads.json").read_text(encoding="utf-8"))]
+            except (OSError, ValueError):
+                continue
+            name = self._variant(project, reads)
+            if name is None or name in tried:
+                continue
+            tried.add(name)
+            found = base / name
+            if not (found / ".complete").is_file():
+                continue
+            try:
+                for kept, target in files.items():
+                    _copy_atomic(found / kept, target)
+            except OSError:
+                return False
+            _touch(found)
+            _touch(base)
+            return True
+        return False
+
+    def store_sheet(self, identity: str, project: object, reads: list[tuple], files: dict[str, Path]) -> None:
+        """Keep the sheet's ``files`` (name → the file made) under its reads' values on ``project``."""
+        import json
+
+        name = self._variant(project, reads)
+        if name is None:
+            return
+        base = self._sheet_base(identity)
+        entry = base / name
+        if (entry / ".complete").is_file():
+            return
+        try:
+            base.mkdir(parents=True, exist_ok=True)
+            part = Path(tempfile.mkdtemp(dir=base, prefix=".part-"))
+            for kept, made in files.items():
+                shutil.copyfile(made, part / kept)
+            (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
+            (part / ".complete").write_bytes(b"")
+            if entry.exists():
+                shutil.rmtree(entry, ignore_errors=True)
+            part.rename(entry)
+        except OSError:
+            shutil.rmtree(locals().get("part", base / ".none"), ignore_errors=True)
+            return
+        _prune(base, 4)                       # a few variants of each sheet (an edit undone is a hit)
+        _prune(base.parent, KEEP["sheets"])
+
     # -- the note's figures --------------------------------------------------------------------
     def _figure_path(self, key: str) -> Path:
         return self.root / "figures" / (_digest("figure", self.code, key) + ".pdf")
 
     def restore_figure(self, key: str, target: Path) -> bool:
         """Copy the PDF of the figure with content key ``key`` to ``target``; False when none."""
+        if not self.copy_figure(key, target):
+            return False
+        self.figures_reused += 1
+        return True
+
+    def copy_figure(self, key: str, target: Path) -> bool:
+        """:meth:`restore_figure` without counting it (a first LaTeX pass's early copy)."""
         src = self._figure_path(key)
         part = target.with_name(f".{target.name}.part")
         try:
@@ -225,7 +394,6 @@ class BuildCache:
             return False
         _touch(src.with_suffix(".json"))
         _touch(src)
-        self.figures_reused += 1
         return True
 
     def figure_sizes(self, key: str) -> dict[str, float] | None:

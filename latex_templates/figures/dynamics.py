@@ -11,6 +11,7 @@ from matplotlib.patches import Circle, Polygon, Rectangle
 from ..parts import tr
 from . import comma, comma_axes, new_figure
 from .labels import names
+from .keyed import keyed_plot
 
 GRAPH = "tab:blue"        # the graphical construction
 EXACT = "black"
@@ -22,6 +23,7 @@ def _closed(res, values: np.ndarray, end: float) -> tuple[np.ndarray, np.ndarray
     return x, np.append(np.asarray(values, dtype=float), end)
 
 
+@keyed_plot()
 def omega_figure(res, omegas: dict[str, np.ndarray]):
     """ω(φ) of the steady motion with each method's flywheel, the band ω_m(1 ± δ/2)."""
     fig = new_figure(16.0, 8.0)
@@ -46,6 +48,7 @@ def omega_figure(res, omegas: dict[str, np.ndarray]):
     return fig
 
 
+@keyed_plot()
 def flywheel_figure(fw, hub):
     """Sketch of the flywheel: the front view with the bore and its keyway, and the axial section
     through the keyway (the hub's parts of :mod:`reportgen.dynamics.hub`, as sheet 3 draws them),

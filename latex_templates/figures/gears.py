@@ -9,6 +9,7 @@ import numpy as np
 
 from ..parts import tr
 from . import comma, comma_axes, new_figure
+from .keyed import keyed_plot
 
 #: Russian names of the contour lines (legend), in drawing order.
 CONTOUR_NAMES = {
@@ -31,6 +32,7 @@ _STYLES = {
 }
 
 
+@keyed_plot()
 def blocking_contour_figure(pair):
     """The computed blocking contour of the pair with the chosen point (x1, x2)."""
     choice = pair.shift_choice
@@ -84,6 +86,7 @@ def meshing_reduction(ms) -> float:
     return min(1.0, NOTE_MESH_W / ((x1 - x0) * k), NOTE_MESH_MAX_H / ((y1 - y0) * k))
 
 
+@keyed_plot()
 def meshing_figure(pair, ms):
     """The meshing picture round the pole: a window of sheet 4's scene
     (:class:`reportgen.scenes.meshing.MeshingScene`, the same teeth, circles, lines and points in
@@ -189,6 +192,7 @@ def _draw_marks(ax, marks, unit: float = 1.0) -> None:
                 fontsize=3.2 * pt_per_mm, rotation=ang, rotation_mode="anchor", ha="center", va="center")
 
 
+@keyed_plot()
 def sliding_figure(pair):
     """λ1 and λ2 along N1N2 with the working section ab and the pole marked."""
     sl = pair.sliding
@@ -218,6 +222,7 @@ def sliding_figure(pair):
 
 
 # ------------------------------------------------------------------------------- planetary
+@keyed_plot()
 def planetary_figure(stage):
     """The reducer's kinematic scheme (as on sheet 4), Kutzbach's velocity triangle beside it at the
     same heights with projection lines, and the angular-velocity plan below the triangle."""

@@ -10,8 +10,11 @@ from matplotlib.patches import Circle, Polygon
 
 from .labels import place_text
 from .mechanism import world_points
+from .keyed import keyed_plot
+from reportgen.read_trace import MASS_FIELDS
 
 
+@keyed_plot(MASS_FIELDS)
 def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
     from . import new_figure
     pts = world_points(linkage, q)

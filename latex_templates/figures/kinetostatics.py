@@ -14,6 +14,7 @@ from ..parts import active, tr
 from reportgen.scenes.forces import force_tex
 
 from . import comma_axes, new_figure
+from .keyed import keyed_plot
 
 #: Colours: loads, reactions found in this step, reactions known from an earlier step.
 LOAD = "black"
@@ -48,6 +49,7 @@ def free_body_figure(scene):
     return scene_figure(scene, max_w_mm=FBD_MAX_W_MM, max_h_mm=FBD_MAX_H_MM, roles=("point", "vector", "link"))
 
 
+@keyed_plot()
 def cycle_figure(phi_deg: np.ndarray, groups: np.ndarray, zhuk_phi: np.ndarray, zhuk: np.ndarray,
                  mark_deg: float, mark_value: float, w_cm: float = 15.0):
     """M_ур(φ1): the group method as a curve, Zhukovsky's lever at the analysed positions as

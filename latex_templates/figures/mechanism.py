@@ -15,6 +15,8 @@ from reportgen.kinematics.constraints import rot
 from .labels import place_text
 from reportgen.linkage import Linkage
 from reportgen.tolerances import ABS_ROUNDOFF, ABS_ZERO, TINY
+from .keyed import keyed_plot
+from reportgen.read_trace import MASS_FIELDS
 
 
 def world_points(linkage: Linkage, q: np.ndarray) -> dict[str, np.ndarray]:
@@ -146,6 +148,7 @@ def _hatch_line(ax, a, b, normal, depth, color, alpha, offset: float = 0.0) -> N
         ax.plot([p[0], q[0]], [p[1], q[1]], color=color, lw=0.5, alpha=alpha, zorder=1)
 
 
+@keyed_plot(MASS_FIELDS)
 def scheme_figure(linkage: Linkage, q: np.ndarray, w_cm: float = 15.0):
     """A figure of the scheme at one position, axes in metres hidden."""
     from . import new_figure

@@ -140,10 +140,16 @@ class KeptFigure:
 
 
 def figure_sizes(fig: Any) -> dict[str, float]:
-    """What the note reads of a scene figure, kept beside its PDF in the build cache."""
+    """What the note reads of a kept figure (:class:`KeptFigure`), kept beside its PDF in the build
+    cache: its size in inches, whether it is drawn at a true scale (``exact``; a plot is saved at
+    its tight box), and a scene figure's width and reduction."""
     w, h = fig.get_size_inches()
-    return {"width_cm": float(fig.width_cm), "reduction": float(fig.reportgen_reduction),
-            "width_in": float(w), "height_in": float(h)}
+    sizes = {"exact": float(bool(getattr(fig, "reportgen_exact", False))), "width_in": float(w), "height_in": float(h)}
+    if getattr(fig, "width_cm", None) is not None:
+        sizes["width_cm"] = float(fig.width_cm)
+    if getattr(fig, "reportgen_reduction", None) is not None:
+        sizes["reduction"] = float(fig.reportgen_reduction)
+    return sizes
 
 
 def content_keys_read() -> bool:
@@ -159,7 +165,9 @@ def kept_figure(key: str, make: Callable[[], Any]) -> Any:
     cache keeping the figure with content ``key``; else None (the caller makes the figure)."""
     cache = _QUEUE.cache if _QUEUE is not None else None
     sizes = cache.figure_sizes(key) if cache is not None else None
-    return KeptFigure(key, sizes, make) if sizes is not None else None
+    if sizes is None:
+        return None
+    return KeptFigure(key, sizes, make, reportgen_exact=bool(sizes.get("exact", 1.0)))
 
 
 def _release(fig: Any) -> None:
@@ -188,7 +196,12 @@ class FigureQueue:
         tight boxes are kept, so saving does not compute them again."""
         from ..passes import placeholder_pdf
 
-        for fig, target in self.items:
+        for i, (fig, target) in enumerate(self.items):
+            if isinstance(fig, KeptFigure):     # the kept PDF itself, when it is still there
+                if self.cache is not None and self.cache.copy_figure(fig.reportgen_key, target):
+                    continue
+                fig = fig.make()
+                self.items[i] = (fig, target)
             box = None
             if not getattr(fig, "reportgen_exact", False):
                 box = self.boxes[id(fig)] = tight_box(fig)

@@ -390,12 +390,15 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
                  colours: bool = True, roles: tuple[str, ...] = ("point", "vector", "number")):
     """The scene as a matplotlib figure at a true reduction (see the module's docstring); inside a
     build whose cache keeps this figure, a stand-in with its sizes (:func:`.saving.kept_figure`)."""
+    from ..parts import active_strings
+    strings = active()
     key = figure_key(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles) \
         if content_keys_read() else None
 
-    def make():
-        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles,
-                                  key=key)
+    def make():         # perhaps later (a kept PDF gone): in the language of now
+        with active_strings(strings):
+            return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours, roles=roles,
+                                      key=key)
 
     kept = kept_figure(key, make) if key is not None else None
     return kept if kept is not None else make()

@@ -104,9 +104,20 @@ def _build_into(tmp: Path, project: Project, progress: "Timeline", store, *, qui
     pipeline.run(project, tmp, progress, pdf=pdf, sheets=sheets, latexmk=latexmk, cache=store)
     if store is not None:
         store.store_build(tmp)
-        if not quiet and (store.figures_reused or store.figures_saved):
-            print(f"  figures: {store.figures_reused} from the cache, {store.figures_saved} saved and kept",
-                  flush=True)
+        if not quiet:
+            print("  " + reuse_line(store, progress), flush=True)
+
+
+def reuse_line(store, progress: "Timeline") -> str:
+    """What a build with the cache took from it: «figures: N from the cache, M saved and kept;
+    sheets: K of S from the cache; xelatex passes: P»."""
+    from .pipeline import FROM_CACHE
+
+    sheets = [s for s in progress.spans if s.name.startswith("sheet ")]
+    reused = sum(s.name.endswith(FROM_CACHE) for s in sheets)
+    passes = f"; xelatex passes: {progress.latex_passes}" if progress.latex_passes else ""
+    return (f"figures: {store.figures_reused} from the cache, {store.figures_saved} saved and kept; "
+            f"sheets: {reused} of {len(sheets)} from the cache{passes}")
 
 
 def run(args: argparse.Namespace) -> int:

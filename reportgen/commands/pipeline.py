@@ -3,14 +3,15 @@
     main process   task → solve → note's sections, report.tex → figures (share 1) ─ results.json ─ join ─ join
     figures                                       (forked) figures (share 2) ─┘                    │      │
     sheets         (forked after solve, nice 3)  sheet 1 … sheet n: DXF + PNG preview ─────────────┘      │
-    LaTeX          (started when report.tex and the figures are written)  latexmk + xelatex ──────────────┘
+    LaTeX          (first pass beside the figures, on their placeholders)  xelatex passes + xdvipdfmx ─────┘
 
 The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
 the sheets are drawn in a forked child process while the main process composes the note, and
-latexmk runs in the background while the main process writes results.json and waits. Every stage
+LaTeX's passes run in the background while the main process writes results.json and waits. Every stage
 records a :class:`Span` (start and end on the monotonic clock shared by the processes), so
 ``reportgen bench`` can print what ran in parallel and what waited. Nothing here decides what is
-written: the outputs are the same bytes whether the stages overlap or not.
+written: the outputs are the same bytes whether the stages overlap or not, and whether a sheet,
+a figure or LaTeX's auxiliary files come from the build cache (:mod:`reportgen.cache`) or not.
 """
 from __future__ import annotations
 
@@ -56,6 +57,7 @@ class Timeline:
     spans: list[Span] = field(default_factory=list)
     origin: float = field(default_factory=time.perf_counter)
     current: str | None = None   # the main-lane stage running (named when it fails)
+    latex_passes: int = 0        # xelatex passes the note took
 
     @contextmanager
     def stage(self, name: str, lane: str = MAIN) -> Iterator[None]:
@@ -136,7 +138,7 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
         if pending is not None:
             t0 = time.perf_counter()
             try:
-                pending.wait()
+                timeline.latex_passes = pending.wait().passes
             except BuildError as exc:
                 raise BuildError("LaTeX", exc.problem, exc.kept) from None
             end = time.perf_counter()
@@ -182,17 +184,24 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     """Compose the sections and write report.tex (once), then save the figures it refers to
     (split over two processes where there is a second processor).
 
-    ``early`` (a cold LaTeX build: no auxiliary files from an earlier one): xelatex's first pass
-    starts before the figures are saved, on placeholders of their sizes, and goes on once they
-    are (:mod:`latex_templates.passes`); returned with report.tex, else None."""
+    ``early`` (the passes driven directly, not by a latexmk the user named): xelatex's first pass
+    starts before the figures are saved, on placeholders of their sizes (a figure kept by the
+    build cache: its PDF), and goes on once they are (:mod:`latex_templates.passes`); with the
+    auxiliary files of the task's last build restored from the cache and every figure of its
+    placeholder's page box, that first pass is often the only one. Returned with report.tex,
+    else None."""
     from latex_templates.figures.saving import queued
+    from latex_templates.passes import media_box
 
     with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline)
     pending = None
-    if early and len(figures) and _cold_latex(tex, cache):
+    boxes: dict[Path, bytes | None] = {}
+    if early and len(figures):
+        _restore_latex(tex, cache)
         with timeline.stage("note: figure sizes"):
             figures.write_placeholders()
+        boxes = {target: media_box(target) for _, target in figures.items}
         pending = _start_passes(tex)
     try:
         with timeline.stage("note: figures"):
@@ -202,17 +211,17 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
             pending.cancel()
         raise
     if pending is not None:
-        pending.figures_ready()
+        pending.figures_ready(same_boxes=all(box is not None and media_box(target) == box
+                                             for target, box in boxes.items()))
     return tex, pending
 
 
-def _cold_latex(tex: Path, cache: Any) -> bool:
-    """No auxiliary files of an earlier build of this note (after restoring the cache's)."""
+def _restore_latex(tex: Path, cache: Any) -> None:
+    """LaTeX's auxiliary files of the task's last build, when the cache keeps them."""
     from latex_templates.build import BUILD_DIR
 
     if cache is not None:
         cache.restore_tex(tex.parent / BUILD_DIR)
-    return not (tex.parent / BUILD_DIR / (tex.stem + ".aux")).exists()
 
 
 def _start_passes(tex: Path) -> Any:
@@ -262,37 +271,65 @@ def _start_latex(tex: Path, latexmk: str, cache: Any) -> Any:
         raise BuildError("LaTeX", exc.problem, exc.kept) from None
 
 
-def draw_sheet(project: Any, mod: Any, number: int, count: int) -> Any:
+def draw_sheet(project: Any, mod: Any, number: int, count: int, trace: Any = None) -> Any:
     """Sheet ``number`` of ``count`` drawn by the sheet module ``mod``, in the task's language, with
-    a view of the project that lets it read only the stages it declares in ``NEEDS``."""
+    a view of the project that lets it read only the stages it declares in ``NEEDS`` (and, with a
+    ``trace`` (:class:`reportgen.read_trace.Trace`), writes down what it reads)."""
     from drawings.words import language, use_catalogue
     from latex_templates.parts import active_strings
     from latex_templates.render import Strings
 
+    from ..read_trace import TracedNeeds
+
     use_catalogue(Strings)
+    owner = f"sheet {mod.__name__}"
+    view = Needs(project, mod.NEEDS, owner) if trace is None else TracedNeeds(project, mod.NEEDS, owner, trace)
     with language(project.task.document.language), \
             active_strings(Strings(project.task.document.language or "ru")):   # the sheet's words in the task's language
-        return mod.draw(Needs(project, mod.NEEDS, f"sheet {mod.__name__}"), number, count)
+        return mod.draw(view, number, count)
+
+
+#: Said of a sheet whose DXF and preview came from the build cache (its span's name ends so).
+FROM_CACHE = " (from the cache)"
+
+
+def sheet_identity(project: Any, mod: Any, stem: str, number: int, count: int) -> str:
+    """What names a sheet in the build cache besides what it reads of the project: its module,
+    file name, number and count, and the language it is drawn in (the code is added by the cache)."""
+    return "|".join((mod.__name__, stem, str(number), str(count), project.task.document.language or "ru"))
 
 
 def draw_sheets(project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any = None, *,
                 lane: str = SHEETS) -> Iterator[Span]:
-    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache)."""
+    """Draw each sheet: the DXF, and its PNG preview from the document in memory (or the cache).
+    With the cache, a sheet whose every read of the project (:mod:`reportgen.read_trace`) has the
+    value it had when the cache kept it is copied, not drawn; its span's name ends in
+    :data:`FROM_CACHE`."""
     from drawings.preview import render_png
+
+    from ..read_trace import Trace
 
     folder = tmp / "sheets"
     folder.mkdir(exist_ok=True)
     for i, (stem, mod) in enumerate(todo, start=1):
         name = f"sheet {i}: {stem}"
         t0 = time.perf_counter()
-        sheet = draw_sheet(project, mod, i, len(todo))
         dxf = folder / f"{stem}.dxf"
         png = folder / f"{stem}.png"
+        files = {"sheet.dxf": dxf, "sheet.png": png}
+        identity = sheet_identity(project, mod, stem, i, len(todo))
+        if cache is not None and cache.restore_sheet(identity, project, files):
+            yield Span(name + FROM_CACHE, lane, t0, time.perf_counter())
+            continue
+        trace = Trace() if cache is not None else None
+        sheet = draw_sheet(project, mod, i, len(todo), trace)
         sheet.save(dxf)
         if cache is None or not cache.restore_preview(dxf, png):
             render_png(sheet.doc, png, dpi=60)
             if cache is not None:
                 cache.store_preview(dxf, png)
+        if cache is not None and trace is not None and not trace.opaque:
+            cache.store_sheet(identity, project, trace.reads, files)
         yield Span(name, lane, t0, time.perf_counter())
 
 

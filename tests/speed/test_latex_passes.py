@@ -5,6 +5,7 @@ told to, a failed pass keeps the .tex and the log and says where, and the early 
 same PDF as latexmk."""
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 import sys
@@ -120,3 +121,42 @@ def test_the_early_first_pass_writes_the_pdf_latexmk_writes(tmp_path, monkeypatc
     assert (tmp_path / "early" / "report.pdf").read_bytes() == (tmp_path / "late" / "report.pdf").read_bytes()
     assert (tmp_path / "early" / "latex-build" / "report.fdb_latexmk").exists() is False
     assert (tmp_path / "late" / "latex-build" / "report.fdb_latexmk").is_file()
+
+
+@needs_tex
+def test_a_first_pass_that_leaves_the_aux_files_as_it_found_them_is_the_last_when_the_boxes_are_the_same(tmp_path):
+    """SAME_BOXES: no pass after the first when it found the auxiliary files of an earlier build
+    (stable) — and the passes go on when it did not (the contents line needs a second pass)."""
+    (tmp_path / "n.tex").write_text(MINIMAL, encoding="utf-8")
+    (tmp_path / "b").mkdir()
+
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")   # no dates in the PDF
+
+    def drive(go: bytes) -> list[str]:
+        proc = subprocess.run([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path,
+                              input=go, capture_output=True, text=False, env=env)
+        assert proc.returncode == 0
+        return [line for line in proc.stdout.decode().splitlines() if line == passes.PASS_LINE]
+
+    assert len(drive(passes.SAME_BOXES)) == 2      # no aux files yet: the first pass wrote them
+    first = (tmp_path / "b" / "n.pdf").read_bytes()
+    assert len(drive(passes.SAME_BOXES)) == 1      # the aux files of that build: stable after one pass
+    assert (tmp_path / "b" / "n.pdf").read_bytes() == first
+    assert len(drive(passes.FIGURES_REAL)) == 2    # the figures' boxes not known to be the same: a pass on them
+
+
+def test_a_placeholder_writes_the_page_box_a_saved_figure_has(tmp_path):
+    """What SAME_BOXES rests on: the placeholder of a figure and the figure saved have the same
+    ``/MediaBox`` bytes (matplotlib's number format), and a file with another box differs."""
+    queue = FigureQueue()
+    figs = [_figure(0), _figure(1, exact=True), _figure(2)]
+    for i, fig in enumerate(figs):
+        queue.add(fig, tmp_path / f"f{i}.pdf")
+    queue.write_placeholders()
+    boxes = {p.name: passes.media_box(p) for p in tmp_path.glob("f*.pdf")}
+    queue.save()
+    for name, box in boxes.items():
+        assert box is not None and passes.media_box(tmp_path / name) == box, name
+    assert passes.media_box(tmp_path / "f0.pdf") != passes.media_box(tmp_path / "f1.pdf")   # tight, and not
+    (tmp_path / "odd.pdf").write_bytes(passes.placeholder_pdf(10.0, 20.0).replace(b"/Resources", b"/Rotate 90 /Resources"))
+    assert passes.media_box(tmp_path / "odd.pdf") is None        # a box xelatex might read otherwise

@@ -68,8 +68,15 @@ def builds(tmp_path_factory):
     out["warm_stdout"] = r.stdout
     # one number changed: δ 0.05 → 0.04; cached (LaTeX's aux files and the unchanged previews reused) …
     task.write_text(task.read_text(encoding="utf-8").replace("delta = 0.05", "delta = 0.04"), encoding="utf-8")
-    build(task, base / "changed-cached", seed="4", cwd=work, cache=cache)
+    r = build(task, base / "changed-cached", seed="4", cwd=work, cache=cache)
     out["changed-cached"] = files(base / "changed-cached")
+    out["changed_stdout"] = r.stdout
+    # … and again with the whole output's entry gone: everything else from the cache, LaTeX from the
+    # aux files of this very document (a fixed point: one pass, whatever δ did to the pages)
+    shutil.rmtree(cache / "builds")
+    r = build(task, base / "changed-again", seed="2", cwd=work, cache=cache)
+    out["changed-again"] = files(base / "changed-again")
+    out["again_stdout"] = r.stdout
     # … and uncached
     build(task, base / "changed-plain", seed="5", cwd=ROOT, cache="off")
     out["changed-plain"] = files(base / "changed-plain")
@@ -84,6 +91,16 @@ def builds(tmp_path_factory):
     out["mass_stdout"] = r.stdout
     build(mass, base / "mass-plain", seed="7", cwd=ROOT, cache="off")
     out["mass-plain"] = files(base / "mass-plain")
+    # the note's language changed (Ukrainian) in a copy: cached (every key names the language), then uncached
+    lang = work / "lang" / "task.toml"
+    lang.parent.mkdir()
+    assert text.count('language = "ru"') == 1
+    lang.write_text(text.replace('language = "ru"', 'language = "uk"'), encoding="utf-8")
+    r = build(lang, base / "lang-cached", seed="8", cwd=work, cache=cache)
+    out["lang-cached"] = files(base / "lang-cached")
+    out["lang_stdout"] = r.stdout
+    build(lang, base / "lang-plain", seed="9", cwd=ROOT, cache="off")
+    out["lang-plain"] = files(base / "lang-plain")
     out["cache"] = cache
     return out
 
@@ -103,12 +120,29 @@ def test_a_changed_number_rebuilt_with_the_cache_equals_an_uncached_build(builds
     assert_same(builds["changed-plain"], builds["changed-cached"])
     # the kinematics sheet does not depend on δ: its preview came from the cache, the same bytes
     assert builds["changed-cached"]["sheets/sheet1-kinematics.png"] == builds["plain"]["sheets/sheet1-kinematics.png"]
+    # δ reaches the dynamics only: sheets 1, 2, 4 come from the cache, sheet 3 is drawn again
+    assert sheets_line(builds["changed_stdout"]) == (3, 4)
+    assert "sheet 3: sheet3-dynamics (from the cache)" not in builds["changed_stdout"]
+    # LaTeX starts from the aux files of the build before (the same task file): two passes where δ
+    # moved the pages, one where it did not; rebuilt from its own aux files and kept figures, one
+    assert re.search(r"xelatex passes: [12]\b", builds["changed_stdout"]), builds["changed_stdout"]
+    assert_same(builds["changed-plain"], builds["changed-again"])
+    assert sheets_line(builds["again_stdout"]) == (4, 4)
+    assert re.search(r"figures: 25 from the cache, 0 saved and kept", builds["again_stdout"]), builds["again_stdout"]
+    assert re.search(r"xelatex passes: 1\b", builds["again_stdout"]), builds["again_stdout"]
 
 
 def figures_line(stdout: str) -> tuple[int, int]:
     """(reused, saved) from the build's line «figures: N from the cache, M saved and kept»."""
     m = re.search(r"figures: (\d+) from the cache, (\d+) saved and kept", stdout)
     assert m, f"no figures line in the build's output:\n{stdout}"
+    return int(m.group(1)), int(m.group(2))
+
+
+def sheets_line(stdout: str) -> tuple[int, int]:
+    """(from the cache, sheets) from the build's line «…; sheets: K of S from the cache»."""
+    m = re.search(r"sheets: (\d+) of (\d+) from the cache", stdout)
+    assert m, f"no sheets line in the build's output:\n{stdout}"
     return int(m.group(1)), int(m.group(2))
 
 
@@ -127,7 +161,32 @@ def test_a_changed_mass_reuses_the_figures_whose_scene_did_not_change(builds):
     assert builds["mass-plain"]["figures/kinetostatics-kst-lever.pdf"] != builds["plain"]["figures/kinetostatics-kst-lever.pdf"]
     assert saved >= 1
     assert reused + saved == keyed
+    # every figure of the note has a key now, the plots too (keyed by their data)
+    assert keyed == sum(n.startswith("figures/") for n in builds["plain"])
+    # the plots that draw no mass — the structural schemes, the gear pair's, the planetary scheme —
+    # are copied, not made: each is in the cache by then and the same bytes as before
+    plots = ["linkage-structure-scheme", "linkage-structure-group1", "linkage-structure-group2",
+             "assignment-assignment-scheme", "gears-gear-pair-meshing", "gears-gear-pair-sliding",
+             "gears-planetary-scheme"]
+    assert all(builds["mass-plain"][f"figures/{n}.pdf"] == builds["plain"][f"figures/{n}.pdf"] for n in plots)
+    assert reused >= len(kinematics) + len(plots)
+    # the kinematics and gear sheets do not depend on a mass: copied from the cache, not drawn; the
+    # kinetostatics and dynamics sheets are drawn again (and differ)
+    assert sheets_line(builds["mass_stdout"]) == (2, 4)
+    for stem in ("sheet1-kinematics", "sheet4-gears"):
+        assert f"{stem} (from the cache)" in builds["mass_stdout"]
+    for stem in ("sheet2-kinetostatics", "sheet3-dynamics"):
+        assert f"{stem} (from the cache)" not in builds["mass_stdout"]
+        assert builds["mass-plain"][f"sheets/{stem}.dxf"] != builds["plain"][f"sheets/{stem}.dxf"]
+
+
+def test_a_changed_language_reuses_nothing_that_has_words(builds):
+    assert_same(builds["lang-plain"], builds["lang-cached"])
+    assert sheets_line(builds["lang_stdout"]) == (0, 4)
+    reused, _ = figures_line(builds["lang_stdout"])
+    same = [n for n in builds["lang-plain"] if n.startswith("figures/") and builds["lang-plain"][n] == builds["plain"].get(n)]
+    assert reused <= len(same)          # a figure from the cache is one whose bytes the language does not change
 
 
 def test_the_cache_holds_only_its_own_folders(builds):
-    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "figures", "jinja", "previews", "tex"]
+    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "figures", "jinja", "previews", "sheets", "tex"]

@@ -34,9 +34,11 @@ def _fmt_s(xs: list[float]) -> str:
     return f"{m:.2f} ({lo:.2f}–{hi:.2f})"
 
 
-def _run(args: list[str], env: dict[str, str], cwd: Path, cpu: list[float] | None = None) -> float:
+def _run(args: list[str], env: dict[str, str], cwd: Path, cpu: list[float] | None = None,
+         stdout: list[str] | None = None) -> float:
     """Wall time of ``reportgen ARGS`` as a process; its CPU time (user + system, with its children:
-    the sheets' and figures' processes, latexmk and xelatex) appended to ``cpu`` when given."""
+    the sheets' and figures' processes, latexmk and xelatex) appended to ``cpu`` when given, its
+    standard output to ``stdout``."""
     import resource
 
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -49,6 +51,8 @@ def _run(args: list[str], env: dict[str, str], cwd: Path, cpu: list[float] | Non
         raise ComputationError("reportgen " + " ".join(args[:1]), (r.stderr or r.stdout).strip().splitlines()[-1][:300])
     if cpu is not None:
         cpu.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
+    if stdout is not None:
+        stdout.append(r.stdout)
     return dt
 
 
@@ -103,8 +107,11 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
         text = task_path.read_text(encoding="utf-8")
         task.write_text(text, encoding="utf-8")
         env = dict(os.environ, REPORTGEN_CACHE=str(base / "cache"))
-        cold, warm, inc = [], [], []
-        cpu: dict[str, list[float]] = {"cold": [], "warm": [], "inc": []}
+        cold, warm = [], []
+        edits = _one_number_changed(text, runs)
+        inc: dict[str, list[float]] = {name: [] for name in edits}
+        cpu: dict[str, list[float]] = {"cold": [], "warm": [], **{name: [] for name in edits}}
+        said: dict[str, list[str]] = {name: [] for name in edits}
         try:
             for i in range(runs):
                 cold.append(_run(["build", str(task), "-o", str(base / f"cold{i}"), "--quiet", "--no-cache"], env, base,
@@ -112,23 +119,29 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
             _run(["build", str(task), "-o", str(base / "fill"), "--quiet"], env, base)
             for i in range(runs):
                 warm.append(_run(["build", str(task), "-o", str(base / f"warm{i}"), "--quiet"], env, base, cpu["warm"]))
-            changed = _one_number_changed(text, runs)
-            if changed is not None:
-                for i in range(runs):
-                    task.write_text(changed[i], encoding="utf-8")
-                    inc.append(_run(["build", str(task), "-o", str(base / f"inc{i}"), "--quiet"], env, base,
-                                    cpu["inc"]))
+            for name, texts in edits.items():
+                for i, changed in enumerate(texts):
+                    task.write_text(changed, encoding="utf-8")
+                    inc[name].append(_run(["build", str(task), "-o", str(base / f"inc-{len(said[name])}-{i}")],
+                                          env, base, cpu[name], said[name]))
         except Exception as exc:  # noqa: BLE001 - report, do not hide the other tables
             t.notes.append(f"a build failed: {exc}")
-        for label, key, xs in (("cold (no cache)", "cold", cold), ("warm (unchanged task, from the cache)", "warm", warm),
-                               ("incremental (one number changed)", "inc", inc)):
+        rows = [("cold (no cache)", "cold", cold), ("warm (unchanged task, from the cache)", "warm", warm)]
+        rows += [(f"incremental ({name} changed)", name, inc[name]) for name in edits]
+        for label, key, xs in rows:
             if xs:
                 t.add(label, _fmt_s(xs), f"{statistics.median(cpu[key]):.2f}" if cpu[key] else "—", str(len(xs)))
+        for name, outs in said.items():
+            reuse = [line.strip() for out in outs[-1:] for line in out.splitlines() if line.strip().startswith("figures:")]
+            if reuse:
+                t.notes.append(f"{name} changed, the last run: {reuse[0]}")
     t.notes.append("each run a fresh process (imports included); the machine is shared, so the spread is shown; "
                    "CPU: user + system time of the process and its children (the sheets' and figures' processes, "
                    "latexmk, xelatex) — on 2 processors the wall time cannot be less than half of it")
-    t.notes.append("incremental: each run changes the task's δ to a new value; the kinematics, kinetostatics and "
-                   "gear previews come from the cache, LaTeX starts from the last build's aux files")
+    t.notes.append("incremental: each run changes one number of the task file (δ; the last link's mass) to a value "
+                   "not built before, in the same file, after the builds above; the figures and sheets whose inputs "
+                   "did not change come from the cache (keyed by content: docs/build.md), LaTeX starts from the last "
+                   "build's aux files")
     t.notes.append("cold: `--no-cache`, nothing read from or written to the cache (compiled templates, previews, "
                    "LaTeX's aux files); warm and incremental: the cache as a student's second build has it")
     t.notes.append(_load_note())
@@ -145,14 +158,20 @@ def _load_note() -> str:
             "above the processor count the wall times are mostly waiting; compare the CPU times")
 
 
-def _one_number_changed(text: str, runs: int) -> list[str] | None:
-    """The task with δ changed to a new value for each run (a value met before would be a cache hit)."""
+def _one_number_changed(text: str, runs: int) -> dict[str, list[str]]:
+    """The task with one number changed to a new value for each run (a value met before would be
+    a cache hit): δ (the first ``delta = …``), the last link's mass (the last ``mass = …``: the press's
+    slider, link 5); an edit the task has no line for is left out."""
     import re
-    m = re.search(r"(?m)^delta\s*=\s*([0-9.]+)", text)
-    if m is None:
-        return None
-    v = float(m.group(1))
-    return [text[:m.start(1)] + repr(round(v * (0.80 + 0.03 * i), 6)) + text[m.end(1):] for i in range(runs)]
+    out: dict[str, list[str]] = {}
+    for name, pattern, last in (("δ", r"(?m)^delta\s*=\s*([0-9.]+)", False), ("mass", r"(?m)^mass\s*=\s*([0-9.]+)", True)):
+        found = list(re.finditer(pattern, text))
+        if not found:
+            continue
+        m = found[-1] if last else found[0]
+        v = float(m.group(1))
+        out[name] = [text[:m.start(1)] + repr(round(v * (0.80 + 0.03 * i), 6)) + text[m.end(1):] for i in range(runs)]
+    return out
 
 
 # -- the solver -----------------------------------------------------------------------------------------
