@@ -76,6 +76,9 @@ SLOW_TESTS = (
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_geometry_same_in_note_and_sheet",
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_caption_and_ab_from_the_scene",
     "tests/scenes/test_meshing_note_sheet_same.py::test_meshing_note_designations_legible_and_clear",
+    # sheet 2's arrangement tried with the lever one round step larger, for every example; the A3 control sheet
+    "tests/scenes/test_lever_scale.py::test_the_lever_fills_the_room_sheet_2_gives_it",
+    "tests/scenes/test_lever_scale.py::test_the_a3_control_sheet_draws_the_notes_lever",
     # scaled examples (hypothesis): solved through the CLI and in process (~30 s), sheet 3 of each
     # (~9 s), every sheet drawn, built without the PDF
     "tests/robustness/test_scaled_solve.py::test_scaled_example_is_solved_or_refused",

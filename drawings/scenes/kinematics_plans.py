@@ -8,7 +8,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import Point, Polygon, box
+from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import nearest_points
 
 from drawings import style
@@ -105,14 +105,12 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         rl.place_point_label(view, p, label, letter_height, 45.0, others, inside=inside)
     # names of the components along their arrows
     if names:
-        for lb in scene.labels:
-            if lb.role != "vector" or lb.along is None:
-                continue
-            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            if math.dist(a, b) < 1.0:
-                continue
-            rich = rl.from_tex(lb.text)
-            place_vector_name(view, a, b, rich, 3.5, inside)
+        named = [(lb, view.transform(lb.along[0]), view.transform(lb.along[1])) for lb in scene.labels
+                 if lb.role == "vector" and lb.along is not None]
+        named = [(lb, a, b) for lb, a, b in named if math.dist(a, b) >= 1.0]
+        rivals = tuple(LineString([a, b]) for _, a, b in named)     # each name nearer its own vector
+        for lb, a, b in named:
+            place_vector_name(view, a, b, rl.from_tex(lb.text), 3.5, inside, rivals)
     return drawn
 
 

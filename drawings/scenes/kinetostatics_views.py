@@ -129,11 +129,11 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
                     near = min(blocks, key=lambda e: min(math.dist(q, lb.at) for q in e.points), default=None)
                     named = None if near is None else line_of(near.id)
                 place_label(view, [np.asarray(lb.at)], lb.text, LABEL_MM, names=named)
-        for lb in scene.labels:
-            if lb.role != "vector" or lb.along is None:
-                continue
-            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            place_vector_name(view, a, b, rl.Rich(plain(lb.anchor.split(":", 1)[1])), LABEL_MM, inside)
+        named = [(lb, view.transform(lb.along[0]), view.transform(lb.along[1])) for lb in scene.labels
+                 if lb.role == "vector" and lb.along is not None]
+        rivals = tuple(LineString([a, b]) for _, a, b in named)      # each name nearer its own arrow
+        for lb, a, b in named:
+            place_vector_name(view, a, b, rl.Rich(plain(lb.anchor.split(":", 1)[1])), LABEL_MM, inside, rivals)
         _title_and_scales(view, title, tr("sheets.kv03", v1=format_significant(scene.scale("μl").value, 4)),
                           tr("fbd.arrows"))
         return view

@@ -11,10 +11,10 @@ from ..words import tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
                             "plan_positions", "plans_by_position", "scenes", "kinetostatics")   # sheet 1's drawing
-#: On A3 the plans and the lever get round scales of their own (printed on the sheet) within these mm;
-#: on A1 they keep the note's scales.
+#: On A3 the plans get round scales of their own (printed on the sheet) within these mm; on A1 they
+#: keep the note's scales. The lever's μv is the replica's on both (its box for the control sheet,
+#: ``reportgen.scenes.boxes.SceneBoxes.lever_for``), so the note prints the sheet's.
 A3_PLAN_MM = 75.0
-A3_LEVER_MM = 80.0
 #: The scheme's view is at least as wide as its title (5 mm letters): «Механизм в заданном положении,
 #: φ1 = …°» on A1, «Механизм, φ1 = …°» on A3.
 SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 65.0}
@@ -38,7 +38,7 @@ def is_a3(project: Project) -> bool:
 
 def place_lever(sheet: Sheet, project: Project) -> None:
     from .kinetostatics import lever_panel_of
-    lever_panel_of(project, A3_LEVER_MM if is_a3(project) else None).place(sheet, "top-right")
+    lever_panel_of(project).place(sheet, "top-right")
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:

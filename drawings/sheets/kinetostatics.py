@@ -122,45 +122,65 @@ def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
     return None
 
 
-def lever_panel_of(project: Project, max_mm: float | None = None):
-    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's);
-    ``max_mm``: the turned plan at a round μv of its own within that many mm (an A3 control sheet)."""
+def lever_panel_of(project: Project):
+    """Zhukovsky's lever of the analysed position as a panel (this sheet's and the control work's), at
+    the replica's μv: the scale chosen for the sheet that draws it (``SceneBoxes.lever_for``), which
+    the note prints and at which the arms were read."""
     from drawings.scenes import kinetostatics_views as kv
     from reportgen.scenes.lever import lever_scene
-    ks = project.kinetostatics
-    mu_v = None
-    if max_mm is not None:
-        kin = ks.reactions.kin
-        far = max(float(np.hypot(*np.asarray(m.vel)[0])) for m in kin.points.values())
-        mu_v = max(ks.graphical.lever.scale, round_scale(far, max_mm))
-    return kv.lever_panel("lever", lever_scene(ks, project.linkage, mu_v=mu_v))
+    return kv.lever_panel("lever", lever_scene(project.kinetostatics, project.linkage))
 
 
-def draw(project: Project, number: int, count: int) -> Sheet:
+def _new_sheet(project: Project, number: int, count: int):
+    """The empty sheet with its scale and the line naming the analysed position: (sheet, that view)."""
     from drawings import style
-    from drawings.scenes import kinetostatics_views as kv
-
     ks = project.kinetostatics
-    st = project.structure
-    g = ks.graphical
     sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
-    by_key = {gr.key: gr for gr in st.groups}
     where = tr("sheets.sk203", v1=ks.position) if ks.position is not None else ""
     note = tr("sheets.sk204", where=where, v2=format_number(ks.phi_deg, 2, strip=False))
-    sheet.set_scale(ratio_label(1.0 / (1000.0 * g.length_scale)))       # the groups' schemes at μl
+    sheet.set_scale(ratio_label(1.0 / (1000.0 * ks.graphical.length_scale)))       # the groups' schemes at μl
     pv = sheet.add_view("position", style.text_width(note, 5.0) + 4.0, 9.0, preferred="top-left")
     pv.text_mm((pv.rect.x0 + 2.0, pv.rect.y0 + 2.0), note, 5.0)
+    return sheet, pv
 
-    def bodies_at(mu_l: float) -> list:
-        fbs = project.scenes.free_bodies if mu_l == g.length_scale else project.scenes.free_bodies_at(mu_l)
-        return [kv.free_body_panel("crank" if fb.key == "crank" else f"group {fb.key}",
-                                   tr("sheets.sk207") if fb.key == "crank" else tr("sheets.sk208", v1=by_key[fb.key].label),
-                                   fb.scene) for fb in fbs]
 
+def _polygon_panels(project: Project) -> list:
+    from drawings.scenes import kinetostatics_views as kv
+    g = project.kinetostatics.graphical
+    by_key = {gr.key: gr for gr in project.structure.groups}
     firsts = first_detail_indices([gg.polygon for gg in g.groups] + [g.crank.polygon])
     polygons = [kv.polygon_panel(f"polygon {gg.key}", tr("sheets.sk205", v1=by_key[gg.key].label), gg.polygon, first)
                 for gg, first in zip(g.groups, firsts)]
     polygons.append(kv.polygon_panel("polygon crank", tr("sheets.sk206"), g.crank.polygon, firsts[-1]))
+    return polygons
+
+
+def _body_panels(project: Project, mu_l: float) -> list:
+    """The groups and the crank cut out at ``mu_l`` (the replica's, or a fallback)."""
+    from drawings.scenes import kinetostatics_views as kv
+    by_key = {gr.key: gr for gr in project.structure.groups}
+    fbs = project.scenes.free_bodies if mu_l == project.kinetostatics.graphical.length_scale \
+        else project.scenes.free_bodies_at(mu_l)
+    return [kv.free_body_panel("crank" if fb.key == "crank" else f"group {fb.key}",
+                               tr("sheets.sk207") if fb.key == "crank" else tr("sheets.sk208", v1=by_key[fb.key].label),
+                               fb.scene) for fb in fbs]
+
+
+def lever_fits(project: Project, lever) -> bool:
+    """Does the lever's panel ``lever`` find room on this sheet beside the groups (at the replica's μl)
+    and the polygons? (The lever's μv is chosen in the core; tests/scenes/test_lever_scale.py asks this
+    of the lever one round step larger: it must not fit, so that the lever is as large as the sheet
+    holds.)"""
+    sheet, pv = _new_sheet(project, 2, 4)
+    bodies = _body_panels(project, project.kinetostatics.graphical.length_scale)
+    return arrange(sheet, bodies, _polygon_panels(project), lever, [pv.rect]) is not None
+
+
+def draw(project: Project, number: int, count: int) -> Sheet:
+    ks = project.kinetostatics
+    g = ks.graphical
+    sheet, pv = _new_sheet(project, number, count)
+    polygons = _polygon_panels(project)
     lever = lever_panel_of(project)
     kin = ks.reactions.kin
 
@@ -170,7 +190,7 @@ def draw(project: Project, number: int, count: int) -> Sheet:
     scales = [g.length_scale] + [mu for mu in (round_scale(extent, mm) for mm in FALLBACK_SCHEME_MM)
                                  if mu > g.length_scale]
     for mu_l in scales:
-        bodies = bodies_at(mu_l)
+        bodies = _body_panels(project, mu_l)
         layout = arrange(sheet, bodies, polygons, lever, [pv.rect])
         if layout is not None:
             break

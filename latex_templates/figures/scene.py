@@ -69,8 +69,9 @@ FIXED_ROLES = ("detail", "detail-title", "detail-scale")
 
 
 #: Scenes whose vectors' names are kept nearer to their own vector than to any other named vector
-#: (the force polygons and the lever, issue 12; tests/labels checks the same figures).
-OWN_VECTOR_SCENES = ("polygon", "lever")
+#: (issue 12: the force polygons, the lever, the groups' free-body diagrams, the velocity and
+#: acceleration plans; tests/labels checks the same figures).
+OWN_VECTOR_SCENES = ("polygon", "lever", "free-body", "velocity-plan", "acceleration-plan")
 
 
 def fixed_text(lb: Label, scene: Scene | None = None) -> str:
@@ -316,7 +317,7 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
         others = _others_of(lb.at, others)
     passes = [(cands, lb.leader)]
     if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
-        passes.append((_leader_candidates(lb, w, h, gap, (8.0, 11.0, 15.0, 20.0)), True))
+        passes.append((_leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True))
     for group, leader in passes:
         best = None
         for rank, c in enumerate(group):
@@ -404,9 +405,11 @@ def scene_figure(scene: Scene, *, max_w_mm: float = TEXT_W_MM, max_h_mm: float =
 
 
 def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colours: bool,
-                       roles: tuple[str, ...], key: str | None = None):
-    r = reduction_for(scene, max_w_mm, max_h_mm)
-    for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
+                       roles: tuple[str, ...], key: str | None = None, shrink: float = 1.0):
+    r = reduction_for(scene, max_w_mm, max_h_mm) / shrink
+
+    def frame(r: float):
+        """The labels placed at reduction ``r`` and the figure's extent (scene mm) and size (page mm)."""
         labels = place_labels(scene, r, roles)
         x0, y0, x1, y1 = scene.bounds()
         for _, _, pl in labels:
@@ -414,11 +417,16 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
             x1, y1 = max(x1, pl.box[2]), max(y1, pl.box[3])
         pad = 1.5 / r
         x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
-        w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
+        return labels, (x0, y0, x1, y1), pad, (x1 - x0) * r, (y1 - y0) * r
+
+    for _ in range(4):                   # the labels' boxes widen the figure: shrink until it fits
+        labels, (x0, y0, x1, y1), pad, w_mm, h_mm = frame(r)
         over = max(w_mm / max_w_mm, h_mm / max_h_mm)
         if over <= 1.0 + RTOL_EQUAL:
             break
         r /= over * 1.001
+    else:                                # the last reduction's own frame (widened below if need be)
+        labels, (x0, y0, x1, y1), pad, w_mm, h_mm = frame(r)
     fig = new_figure(w_mm / 10.0, h_mm / 10.0)
     ax = fig.add_axes([0.0, 0.0, 1.0, 1.0])
     ax.set_xlim(x0, x1)
@@ -494,6 +502,12 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
         fig.set_size_inches(w_mm / 25.4, h_mm / 25.4)
         ax.set_xlim(x0, x1)
         ax.set_ylim(y0, y1)
+    over = max(w_mm / max_w_mm, h_mm / max_h_mm)
+    if over > 1.0 + RTOL_EQUAL and shrink < 2.0:     # larger than its room (the text block): reduce more
+        import matplotlib.pyplot as plt
+        plt.close(fig)
+        return _make_scene_figure(scene, max_w_mm=max_w_mm, max_h_mm=max_h_mm, colours=colours,
+                                  roles=roles, key=key, shrink=shrink * over * 1.001)
     fig.reportgen_exact = True
     fig.reportgen_labels = tuple(pl for _, _, pl in labels)
     fig.reportgen_reduction = r

@@ -256,8 +256,8 @@ def content(project) -> PartContent:
            "first_group": groups_ctx[0]["label"] if groups_ctx else "",
            "trans": [{"label": by_key[k].label, "mu": v} for k, v in ks.transmission_deg.items()],
            "width": {name: _width(fig) for name, fig in figures.items()},
-           "fig_note": {name: scene_caption(project, fig, 2) for name, fig in figures.items()
-                        if name.startswith(("kst_group_", "kst_crank"))}}
+           "fig_note": {name: scene_caption(project, fig, 1 if control and name == "kst_lever" else 2)
+                        for name, fig in figures.items() if name.startswith(("kst_group_", "kst_crank", "kst_lever"))}}
     concl = _control_conclusions(project, power) if control else _conclusions(project, ks, comparison)
     return PartContent("sections/kinetostatics.tex.j2", ctx, figures, concl)
 

@@ -132,6 +132,7 @@ def kinetostatics_at(project, force_at_deg: float | None = None, **graphical_opt
     reactions = solve_reactions(project.linkage, project.structure, kin, loads)
     lever = zhukovsky_lever(project.linkage, kin, loads)
     graphical_options.setdefault("boxes", project.boxes)
+    graphical_options.setdefault("lever_box", project.boxes.lever_for(project.task))
     graph = graphical_replica(project.linkage, project.structure, reactions, lever, 0, **graphical_options)
     trans = {k: float(v[0]) for k, v in kin.transmission_deg.items()}
     warnings = tuple(

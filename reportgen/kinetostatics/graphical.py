@@ -10,8 +10,9 @@ value from the exact one.
   opposite vectors is drawn long enough for its short sides to be read; 350 × 180 mm when the
   mechanism has two or more groups); the scheme μL (m/mm), the
   mechanism's extent (diagonal) within 450 mm, the scale of sheet 2's group views; the velocity plan
-  of the lever μv ((m/s)/mm): the largest image within 200 mm, or the whole plan within 250 × 300 mm
-  where that is larger. These are the scales of sheet 2, so the note and the sheet read the same mm.
+  of the lever μv ((m/s)/mm): the whole turned plan with the feet of the arms within the box of the
+  sheet that draws it (:func:`lever_scale`, the plans' series). These are the scales of sheet 2 (of
+  the control work's sheet for the lever), so the note and the sheet read the same mm.
 - Measurements: a length read off a plan is rounded to ``reading_mm`` (0.1 mm), an arm to
   ``arm_reading_mm`` (0.01 mm), as a student measures them.
 - Inertia: Fи and Mи of a link replaced by one force Fи′ = Fи shifted by h = Mи/Fи (seed 000, 2.2).
@@ -37,7 +38,7 @@ import numpy as np
 from ..linkage import Linkage
 from ..scenes.boxes import DEFAULT as DEFAULT_BOXES
 from ..scenes.boxes import SceneBoxes
-from ..scenes.scales import FORCE_SERIES
+from ..scenes.scales import FORCE_SERIES, PLAN_SERIES
 from ..scenes.scales import round_scale as _round_scale
 from ..structure import Group, Structure
 from .reactions import Reactions, _cross, _Known, _ro, pair_name, perp, solve_group
@@ -327,9 +328,11 @@ def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, ar
 
 def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactions, lever: Lever, i: int = 0, *,
                       reading_mm: float = READING_MM, arm_reading_mm: float = ARM_READING_MM,
-                      length_scale: float | None = None, boxes: SceneBoxes = DEFAULT_BOXES) -> GraphicalReplica:
+                      length_scale: float | None = None, boxes: SceneBoxes = DEFAULT_BOXES,
+                      lever_box: tuple[float, float] | None = None) -> GraphicalReplica:
     """The whole graphical chain at position ``i`` of ``reactions`` (see the module's docstring);
-    ``boxes`` the room of the drawings (the stage passes ``project.boxes``)."""
+    ``boxes`` the room of the drawings (the stage passes ``project.boxes``), ``lever_box`` the
+    lever's (default ``boxes.lever``, sheet 2's; the stage passes the box of the sheet that draws it)."""
     q = np.asarray(reactions.kin.q)[i:i + 1]
     pts = np.array([m.pos[i] for m in reactions.kin.points.values()])
     extent = float(np.hypot(*(pts.max(0) - pts.min(0)))) if len(pts) else 1.0
@@ -373,7 +376,7 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
         else:
             groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm, box))
     crank = _crank(reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
-    lev = _lever(lever, reactions, i, arm_reading_mm, boxes)
+    lev = _lever(lever, reactions, i, arm_reading_mm, boxes.lever if lever_box is None else lever_box)
     disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
     return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
                             crank, lev, disc)
@@ -557,13 +560,26 @@ def _arm_foot(image: np.ndarray, vector: np.ndarray) -> np.ndarray:
     return image - float(image @ u) * u
 
 
+def lever_scale(lever: Lever, reactions: Reactions, i: int, box: tuple[float, float]) -> float:
+    """μv of Zhukovsky's lever ((m/s)/mm): the smallest round scale of the plans' series (1, 2, 2.5,
+    4, 5 — the lever is the velocity plan turned) that draws the turned plan — the pole, the images
+    of every point and the feet of the forces' arms — within ``box`` (width, height, mm). One scale
+    for the sheet that draws the lever, the note (reduced where it must be) and the arms read here."""
+    plan = np.array([np.zeros(2), lever.crank_pin_image[i]] + [f.image[i] for f in lever.forces] +
+                    [turn_cw(np.asarray(m.vel[i])) for m in reactions.kin.points.values()] +
+                    [_arm_foot(f.image[i], f.vector[i]) for f in lever.forces])
+    ext = np.ptp(plan, axis=0)
+    mus = [_round_scale(float(x), m, PLAN_SERIES) for x, m in zip(ext, box) if x > 0]
+    return max(mus) if mus else 1.0
+
+
 def _lever(lever: Lever, reactions: Reactions, i: int, arm_step: float,
-           boxes: SceneBoxes = DEFAULT_BOXES) -> LeverGraphic:
-    imgs = [float(np.hypot(*f.image[i])) for f in lever.forces] + [float(np.hypot(*lever.crank_pin_image[i]))]
-    plan = [np.zeros(2), lever.crank_pin_image[i]] + [f.image[i] for f in lever.forces] + \
-        [turn_cw(np.asarray(m.vel[i])) for m in reactions.kin.points.values()] + \
-        [_arm_foot(f.image[i], f.vector[i]) for f in lever.forces]
-    mu_v = min(round_scale(max(imgs), boxes.polygon_mm), box_scale(np.array(plan), boxes.lever))
+           box: tuple[float, float] = DEFAULT_BOXES.lever) -> LeverGraphic:
+    return lever_graphic(lever, reactions, i, arm_step, lever_scale(lever, reactions, i, box))
+
+
+def lever_graphic(lever: Lever, reactions: Reactions, i: int, arm_step: float, mu_v: float) -> LeverGraphic:
+    """The lever drawn at ``mu_v``: each arm measured on it (to ``arm_step`` mm), pa, F_ур = ∓ΣF·h/pa."""
     terms, total = [], 0.0
     for f in lever.forces:
         mag = float(np.hypot(*f.vector[i]))

@@ -44,7 +44,7 @@ class SceneBoxes:
     #: than this from the pole, mm (a coarser round μ if it would; the analysed position's plans keep
     #: the scales of :func:`reportgen.plans.build_plans`), so that both stroke's plans find room.
     other_plan_mm: float = 120.0
-    #: Sheet 2: the longest vector of a force polygon or of the lever's plan, mm; the extent
+    #: Sheet 2: the longest vector of a force polygon, mm; the extent
     #: (diagonal) of the mechanism on the scheme of section 2, mm.
     polygon_mm: float = 200.0
     scheme_diagonal_mm: float = 450.0
@@ -52,10 +52,27 @@ class SceneBoxes:
     #: (width, height); a narrower one when two or more groups (three polygons) share the sheet.
     polygon: tuple[float, float] = (400.0, 180.0)
     polygon_many: tuple[float, float] = (350.0, 180.0)
-    #: Sheet 2: the lever's plan (width, height).
+    #: Sheet 2: Zhukovsky's lever — the turned velocity plan with the feet of the arms (width,
+    #: height): its μv is the smallest round one (plans' series) that draws it within this box, the
+    #: largest lever sheet 2's arrangement holds beside the groups and the polygons on every example
+    #: (tests/scenes/test_lever_scale.py: one round step larger does not fit).
     lever: tuple[float, float] = (250.0, 400.0)
+    #: The control work's one sheet (sheet 1's drawing with the lever in place of the diagrams):
+    #: the lever's box on A1 and on A3 (``[control_work] sheet``).
+    lever_control: tuple[float, float] = (300.0, 250.0)
+    lever_control_a3: tuple[float, float] = (110.0, 80.0)
     #: Sheet 3: the diagrams.
     diagrams: GraphLayout = field(default_factory=GraphLayout)
+
+
+    def lever_for(self, task) -> tuple[float, float]:
+        """The box of Zhukovsky's lever on the sheet that draws it for ``task``: sheet 2, or the control
+        work's one sheet (A1 or A3). The note draws the same lever at the same μv (reduced)."""
+        doc = getattr(task, "document", None)
+        if doc is None or getattr(doc, "kind", "") != "control-work":
+            return self.lever
+        cw = getattr(task, "control_work", None)
+        return self.lever_control_a3 if cw is not None and cw.sheet == "A3" else self.lever_control
 
 
 DEFAULT = SceneBoxes()

@@ -3,7 +3,7 @@ replica's μv (mm), every load at the image of its point at one round force scal
 than ``MIN_ARROW_MM`` drawn at that length), the balancing force F_ур at the image of the crank pin
 (found from the lever), each force named beside its own arrow, and the arm of each force with a
 non-zero arm (from the pole square to the force's line) named h1, h2, … in the order of the terms
-(or by ``arm_names``).
+(or by ``arm_names``); forces on one line of action share one arm, named «h1 = h9».
 
 Only a force's line of action and sense count on the lever (its moment about the pole), so an arrow
 may pull its point (tail at the point) or push it (head at the point), as statics draws either.
@@ -83,6 +83,21 @@ def _own_part(foot: np.ndarray, feet: list) -> np.ndarray:
     return u * max(ts + [0.0])
 
 
+def _shared_arms(arms: list) -> list:
+    """The arms (name, h, foot) with one foot (forces on one line of action: the press's F_пс and F_и5
+    at d, G3 and G4 whose images lie on one vertical) drawn once and named once, «h_{1} = h_{9}»
+    — as a student writes two equal arms on one line — instead of two names on one segment."""
+    out: list = []
+    for name, h, foot in arms:
+        same = next((k for k, (_, _, f) in enumerate(out) if float(np.hypot(*(f - foot))) < MM_EPS), None)
+        if same is None:
+            out.append((name, h, foot))
+        else:
+            n0, h0, f0 = out[same]
+            out[same] = (n0, f"{h0} = {h}", f0)
+    return out
+
+
 def _seg_dist(x: np.ndarray, s0: np.ndarray, s1: np.ndarray) -> float:
     """Distance from the point ``x`` to the segment s0–s1 (mm)."""
     d = s1 - s0
@@ -91,14 +106,14 @@ def _seg_dist(x: np.ndarray, s0: np.ndarray, s1: np.ndarray) -> float:
     return float(np.hypot(*(x - s0 - t * d)))
 
 
-def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: float | None = None) -> Scene:
-    """The lever of :class:`reportgen.kinetostatics.Kinetostatics` ``ks`` (its analysed position);
-    ``mu_v``: the turned plan at another round μv than the note's (an A3 control sheet)."""
+def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None) -> Scene:
+    """The lever of :class:`reportgen.kinetostatics.Kinetostatics` ``ks`` (its analysed position) at
+    the replica's μv — the one scale of the sheet that draws it and of the note — with the arms as
+    the replica measured them there."""
     from ..kinetostatics.zhukovsky import turn_cw
     L, lev, r = ks.graphical.lever, ks.lever, ks.reactions
     kin = r.kin
-    mu_v = L.scale if mu_v is None else mu_v
-    k_arm = L.scale / mu_v            # the measured arms (mm at the note's μv) at this μv
+    mu_v = L.scale
     points: dict[str, tuple[float, float]] = {}
     for name, mo in kin.points.items():
         img = turn_cw(np.asarray(mo.vel))[0] / mu_v
@@ -111,7 +126,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
             ents.append(Segment(f"ray:{n}", (0.0, 0.0), points[n], "thin"))
         for a, b in zip(names, names[1:]):
             ents.append(Segment(f"link{k}:{a}{b}", points[a], points[b], "contour"))
-    loads = [(t.name, np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], t.arm_mm_measured * k_arm, "load")
+    loads = [(t.name, np.asarray(f.image)[0] / mu_v, np.asarray(f.vector)[0], t.arm_mm_measured, "load")
              for t, f in zip(L.terms, lev.forces) if t.magnitude > 0.0]
     pin = np.asarray(lev.crank_pin_image)[0] / mu_v
     fb = np.asarray(r.balancing_force)[0]
@@ -152,7 +167,7 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None, mu_v: floa
             n_arm += 1
             if float(np.hypot(*foot)) > 3.0:
                 arms.append((name, (arm_names or {}).get(name, f"h_{{{n_arm}}}"), foot))
-    for name, h, foot in arms:
+    for name, h, foot in _shared_arms(arms):
         ents.append(Segment(f"arm:{name}", (0.0, 0.0), _pt(foot), "construction"))
         start = _own_part(foot, [f for _, _, f in arms])
         labels.append(Label(h, f"arm:{name}", _pt((start + foot) / 2), "vector", (_pt(start), _pt(foot))))

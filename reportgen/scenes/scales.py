@@ -4,10 +4,11 @@ A scale factor μ (SI units per mm of paper) is *round*: a mantissa of a series 
 smallest such μ that draws ``value`` within ``max_mm`` (so the drawing is between about half and
 all of ``max_mm``). The series differs by construction, as the course's manuals take them:
 
-- :data:`PLAN_SERIES` (1, 2, 2.5, 4, 5): velocity and acceleration plans, the s–v–a diagrams, the
-  diagrams of section 3 (seed 000, § 1.3; ГОСТ 2.302 ratios 1:2, 1:2,5, 1:4, 1:5);
-- :data:`FORCE_SERIES` (1, 2, 2.5, 5): force polygons, the lever, the scheme of section 2 (seed 001,
-  §§ 5–6).
+- :data:`PLAN_SERIES` (1, 2, 2.5, 4, 5): velocity and acceleration plans, Zhukovsky's lever (the
+  velocity plan turned), the s–v–a diagrams, the diagrams of section 3 (seed 000, § 1.3; ГОСТ 2.302
+  ratios 1:2, 1:2,5, 1:4, 1:5);
+- :data:`FORCE_SERIES` (1, 2, 2.5, 5): force polygons, the lever's forces, the scheme of section 2
+  (seed 001, §§ 5–6).
 
 A drawing of the mechanism itself is at a ГОСТ 2.302 scale (:data:`GOST_SCALES`):
 :func:`gost_scale` picks the largest that fits a box.

@@ -108,9 +108,10 @@ class Found:
             (f" ({self.mm:.1f} mm)" if self.mm else "")
 
 
-#: Views whose vectors' names are checked against the other named vectors (force polygons and their
-#: details, Zhukovsky's lever: issue 12); the groups' views and the plans are to follow.
-VECTOR_VIEWS = ("polygon ", "lever")
+#: Views whose vectors' names are checked against the other named vectors (issue 12: force polygons
+#: and their details, Zhukovsky's lever, the groups' and the crank's free-body views of sheet 2, the
+#: velocity and acceleration plans of sheet 1 and of the control work's sheet).
+VECTOR_VIEWS = ("polygon ", "lever", "group ", "crank", "plan_v", "plan_a")
 
 
 def check_sheet(doc, records, near_mm: float, vector_views: tuple[str, ...] = VECTOR_VIEWS) -> list[Found]:

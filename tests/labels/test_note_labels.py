@@ -17,8 +17,8 @@ from .readback import check_figure
 
 _FIGURES: dict[str, dict] = {}
 #: Figures whose vectors' names are checked against the other named vectors (issue 12: the force
-#: polygons and Zhukovsky's lever); the plans are to follow.
-VECTOR_FIGURES = ("kst_poly", "kst_lever")
+#: polygons, Zhukovsky's lever, the groups' and the crank's free-body diagrams, the plans).
+VECTOR_FIGURES = ("kst_poly", "kst_lever", "kst_group_", "kst_crank", "kin_vplan", "kin_aplan")
 
 
 def _figures(name: str) -> dict:
