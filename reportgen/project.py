@@ -208,9 +208,16 @@ class Project:
 
     @cached_property
     def plans(self):
-        """The velocity and acceleration plans of the analysed position (reportgen.plans.Plan)."""
-        from .plans import build_plans
-        return build_plans(self.linkage, self.structure, self.kinematics, self.analysed)
+        """The velocity and acceleration plans of the analysed position (reportgen.plans.Plan), at the
+        scales of the sheet that draws them (``boxes.plan_mm_for``: the control work on A3)."""
+        from .plans import build_plans, round_scale
+        i, far_mm = self.analysed, self.boxes.plan_mm_for(self.task)
+        if far_mm is None:
+            return build_plans(self.linkage, self.structure, self.kinematics, i)
+        kin = self.kinematics     # the control work on A3: every point within far_mm of the pole
+        far = [max(math.hypot(*np.asarray(getattr(m, q)[i])) for m in kin.points.values()) for q in ("vel", "acc")]
+        return build_plans(self.linkage, self.structure, kin, i,
+                           mu_v=round_scale(far[0], far_mm), mu_a=round_scale(far[1], far_mm))
 
     @cached_property
     def scenes(self):

@@ -11,10 +11,9 @@ from ..words import tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
                             "plan_positions", "plans_by_position", "scenes", "kinetostatics")   # sheet 1's drawing
-#: On A3 the plans get round scales of their own (printed on the sheet) within these mm; on A1 they
-#: keep the note's scales. The lever's μv is the replica's on both (its box for the control sheet,
-#: ``reportgen.scenes.boxes.SceneBoxes.lever_for``), so the note prints the sheet's.
-A3_PLAN_MM = 75.0
+#: Every scale of this sheet is the note's, chosen in the core from the box this sheet gives each
+#: construction (``reportgen.scenes.boxes.SceneBoxes``: ``scheme_for``, ``plan_mm_for``,
+#: ``lever_for`` — A1 or A3), so the note prints the sheet's.
 #: The scheme's view is at least as wide as its title (5 mm letters): «Механизм в заданном положении,
 #: φ1 = …°» on A1, «Механизм, φ1 = …°» on A3.
 SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 65.0}

@@ -115,14 +115,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         kd.add_diagrams_view(sheet, d, scene, len(project.phi), start, st.working_deg, "top-right")
     # the plans of every plan position (the note's scales; the analysed one first), the table of scales
     keys = image_keys(project)
-    if control and cs.is_a3(project):   # A3: the plans at round scales of their own (printed on it)
-        kin = project.kinematics
-        far_v = max(float(np.hypot(*np.asarray(m.vel[i]))) for m in kin.points.values())
-        far_a = max(float(np.hypot(*np.asarray(m.acc[i]))) for m in kin.points.values())
-        pairs = {i: build_plans(project.linkage, project.structure, kin, i,
-                                mu_v=round_scale(far_v, cs.A3_PLAN_MM), mu_a=round_scale(far_a, cs.A3_PLAN_MM))}
-    else:
-        pairs = dict(project.plans_by_position)
+    pairs = dict(project.plans_by_position)   # the note's (the control work on A3: the core's A3 scales)
     small_cache: dict[float, list[Plan]] = {}
 
     def small_of(crank_mm: float) -> list[Plan] | None:

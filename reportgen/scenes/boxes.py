@@ -61,6 +61,17 @@ class SceneBoxes:
     #: the lever's box on A1 and on A3 (``[control_work] sheet``).
     lever_control: tuple[float, float] = (300.0, 250.0)
     lever_control_a3: tuple[float, float] = (110.0, 80.0)
+    #: The control work's sheet: the drawing of the mechanism at φ (``scheme`` is sheet 1's, whose
+    #: field holds no lever) on A1 and on A3. The plan of positions takes the largest ГОСТ scale
+    #: that draws it within the box, and sheet and note print that one (issue 12; on main the sheet
+    #: fell back to a smaller scale where its views did not fit: t22-v1 1:15 on A1, the example
+    #: 1:40 on A3, while the note printed 1:10).
+    scheme_control: tuple[float, float] = (200.0, 200.0)
+    scheme_control_a3: tuple[float, float] = (60.0, 60.0)
+    #: The control work on A3: no point of the velocity or acceleration plan farther than this from
+    #: the pole, mm (the smallest round μ of the plans' series that does it); on A1 the plans keep
+    #: the scales of :func:`reportgen.plans.build_plans`, the course project's.
+    plan_control_a3_mm: float = 75.0
     #: Sheet 3: the diagrams.
     diagrams: GraphLayout = field(default_factory=GraphLayout)
 
@@ -73,6 +84,28 @@ class SceneBoxes:
             return self.lever
         cw = getattr(task, "control_work", None)
         return self.lever_control_a3 if cw is not None and cw.sheet == "A3" else self.lever_control
+
+    def scheme_for(self, task) -> tuple[float, float]:
+        """The box of the drawing of the mechanism (the plan of positions) on the sheet that draws it
+        for ``task``: sheet 1, or the control work's one sheet (A1 or A3)."""
+        sheet = control_sheet(task)
+        if sheet is None:
+            return self.scheme
+        return self.scheme_control_a3 if sheet == "A3" else self.scheme_control
+
+    def plan_mm_for(self, task) -> float | None:
+        """The farthest a point of the analysed position's plans may stand from the pole on the sheet
+        that draws them, mm; None: the course project's rule (:func:`reportgen.plans.build_plans`)."""
+        return self.plan_control_a3_mm if control_sheet(task) == "A3" else None
+
+
+def control_sheet(task) -> str | None:
+    """The format of the control work's one sheet ("A1" or "A3"), None for a course project."""
+    doc = getattr(task, "document", None)
+    if doc is None or getattr(doc, "kind", "") != "control-work":
+        return None
+    cw = getattr(task, "control_work", None)
+    return "A3" if cw is not None and cw.sheet == "A3" else "A1"
 
 
 DEFAULT = SceneBoxes()

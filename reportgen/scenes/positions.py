@@ -67,12 +67,13 @@ def bounds(data: SchemeData, linkage=None) -> tuple[float, float, float, float]:
     return (float(allp[:, 0].min()), float(allp[:, 1].min()), float(allp[:, 0].max()), float(allp[:, 1].max()))
 
 
-def positions_scales(b: tuple[float, float, float, float], boxes: SceneBoxes, pairs: int = 2
-                     ) -> list[tuple[float, str]]:
+def positions_scales(b: tuple[float, float, float, float], boxes: SceneBoxes, pairs: int = 2,
+                     scheme: tuple[float, float] | None = None) -> list[tuple[float, str]]:
     """ГОСТ 2.302 scales (paper mm per metre, «1:2,5») for the plan of positions, the one that fits
-    ``boxes.scheme`` first (less ``boxes.scheme_less_per_pair`` of height for each of the ``pairs``
-    plan positions beyond two)."""
-    w, h = boxes.scheme
+    ``scheme`` (default ``boxes.scheme``; the control work's sheet gives its own,
+    :meth:`SceneBoxes.scheme_for`) first (less ``boxes.scheme_less_per_pair`` of height for each of
+    the ``pairs`` plan positions beyond two)."""
+    w, h = boxes.scheme if scheme is None else scheme
     h -= boxes.scheme_less_per_pair * max(pairs - 2, 0)
     k, _ = gost_scale(b[2] - b[0], b[3] - b[1], w, h)
     return gost_scales_from(k)

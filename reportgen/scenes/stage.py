@@ -26,8 +26,9 @@ class Scenes:
     @cached_property
     def positions_scales(self) -> list[tuple[float, str]]:
         """The ГОСТ scales of the plan of positions, the chosen one first."""
-        return positions_scales(bounds(self.scheme_data, self.project.linkage), self.project.boxes,
-                                len(self.project.plan_positions))
+        boxes = self.project.boxes
+        return positions_scales(bounds(self.scheme_data, self.project.linkage), boxes,
+                                len(self.project.plan_positions), boxes.scheme_for(self.project.task))
 
     def positions_at(self, k: float, ratio: str) -> Scene:
         """The plan of positions at another scale (a sheet whose views do not fit)."""
