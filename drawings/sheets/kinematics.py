@@ -132,10 +132,13 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     # is reserved for its most rows first and filled once the small plans are known
     candidates = [scale_rows(1.0 / k, scale_text, pairs, d, small_of(c)) for c in SMALL_PLAN_MM]
     candidates.append(scale_rows(1.0 / k, scale_text, pairs, d, None))
-    table = reserve_scales_table(sheet, candidates)
+    # the control work on A3: every view prints its scale under it; the field has no room for the table
+    table = None if control and cs.is_a3(project) else reserve_scales_table(sheet, candidates)
     arrangement = arrange(sheet, [kp.view_size(pl, title)[:2] for _, pl, title in plan_views], small_of,
                           [(plan_views[2 * m][0], plan_views[2 * m + 1][0]) for m in range(len(plan_views) // 2)])
-    fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, arrangement.small), _table_widths(candidates))
+    if table is not None:
+        fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, arrangement.small),
+                          _table_widths(candidates))
     for name, plan, title in plan_views:
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
     if arrangement.small is not None:
