@@ -41,7 +41,7 @@ import shutil
 import tempfile
 from functools import lru_cache
 from pathlib import Path
-from typing import Mapping
+from typing import Callable, Mapping
 
 #: Newest entries kept of each kind.
 KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60}
@@ -355,18 +355,13 @@ class BuildCache:
         entry = base / name
         if (entry / ".complete").is_file():
             return
-        try:
-            base.mkdir(parents=True, exist_ok=True)
-            part = Path(tempfile.mkdtemp(dir=base, prefix=".part-"))
+
+        def fill(part: Path) -> None:
             for kept, made in files.items():
                 shutil.copyfile(made, part / kept)
             (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
-            (part / ".complete").write_bytes(b"")
-            if entry.exists():
-                shutil.rmtree(entry, ignore_errors=True)
-            part.rename(entry)
-        except OSError:
-            shutil.rmtree(locals().get("part", base / ".none"), ignore_errors=True)
+
+        if not _publish(entry, fill):
             return
         _prune(base, 4)                       # a few variants of each sheet (an edit undone is a hit)
         _prune(base.parent, KEEP["sheets"])
@@ -432,16 +427,7 @@ class BuildCache:
         entry = base / key
         if entry.exists() and not replace:
             return
-        try:
-            base.mkdir(parents=True, exist_ok=True)
-            part = Path(tempfile.mkdtemp(dir=base, prefix=".part-"))
-            _copy_tree(src, part)
-            (part / ".complete").write_bytes(b"")
-            if entry.exists():
-                shutil.rmtree(entry, ignore_errors=True)
-            part.rename(entry)
-        except OSError:
-            shutil.rmtree(locals().get("part", base / ".none"), ignore_errors=True)
+        if not _publish(entry, lambda part: _copy_tree(src, part)):
             return
         _prune(base, KEEP[kind])
 
@@ -462,6 +448,26 @@ def open_cache(task_path: str | os.PathLike[str], *, pdf: bool, sheets: bool,
         return None
     epoch = os.environ.get("SOURCE_DATE_EPOCH", "")
     return BuildCache(root, data, path, f"pdf={pdf};sheets={sheets};latexmk={latexmk};epoch={epoch}")
+
+
+def _publish(entry: Path, fill: Callable[[Path], None]) -> bool:
+    """Write the cache entry ``entry`` (a folder) whole or not at all: ``fill`` a temporary folder
+    beside it, mark it ``.complete`` and rename it into place (a reader never sees half an entry).
+    False when the disk refused; nothing is left behind then."""
+    part: Path | None = None
+    try:
+        entry.parent.mkdir(parents=True, exist_ok=True)
+        part = Path(tempfile.mkdtemp(dir=entry.parent, prefix=".part-"))
+        fill(part)
+        (part / ".complete").write_bytes(b"")
+        if entry.exists():
+            shutil.rmtree(entry, ignore_errors=True)
+        part.rename(entry)
+    except OSError:
+        if part is not None:
+            shutil.rmtree(part, ignore_errors=True)
+        return False
+    return True
 
 
 def _copy_tree(src: Path, dst: Path) -> None:
