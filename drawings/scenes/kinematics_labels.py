@@ -169,10 +169,11 @@ def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: 
 
 def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], label: Label,
                  height: float, inside: Polygon | None = None, optional: bool = False,
-                 names: Names = None) -> Polygon | None:
+                 names: Names = None, strict: bool = False) -> Polygon | None:
     """Like :func:`place_rich` over several passes of (candidates, lines it may cross): the first
     candidate of the first pass that overlaps no text, stays ``inside`` and crosses at most that
-    many lines wins; otherwise the candidate with the fewest conflicts over all passes."""
+    many lines wins; otherwise the candidate with the fewest conflicts over all passes (``strict``:
+    none, the label is not drawn — the caller tries a leader next)."""
     boxes = [b for _, b in canvas.annotations.boxes]
     tree = shapely.STRtree(boxes) if boxes else None
 
@@ -195,9 +196,66 @@ def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], la
             rank += 1
             if best is None or score < best[0]:
                 best = (score, c)
-    if best is None or (optional and best[0][:2] != (0, 0)):
+    if best is None or strict or (optional and best[0][:2] != (0, 0)):
         return None
     return draw_rich(canvas, best[1], label, height, names)
+
+
+def leader_foot(poly: Polygon, p: Vec) -> Vec:
+    """Where a leader from the point ``p`` meets the label's box ``poly``: the nearest point of its
+    outline."""
+    from shapely.geometry import Point
+    q = poly.exterior.interpolate(poly.exterior.project(Point(p)))
+    return (q.x, q.y)
+
+
+def spread_around(p: Vec, reach: float, step: float = 2.0) -> list[Vec]:
+    """Candidate centres on a square grid of ``step`` mm round ``p`` out to ``reach`` mm, nearest
+    first: where the rings of :func:`around` find no free spot in a crowded cluster, the nearest
+    free one farther off (for a label on a leader)."""
+    n = int(reach / step)
+    pts = [(p[0] + i * step, p[1] + j * step) for i in range(-n, n + 1) for j in range(-n, n + 1)
+           if 0 < math.hypot(i, j) * step <= reach]
+    return sorted(pts, key=lambda q: (round(math.dist(q, p), 6), q))
+
+
+def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: Label, height: float,
+                    inside: Polygon | None = None, names: BaseGeometry | None = None,
+                    to: BaseGeometry | None = None) -> Polygon | None:
+    """``label`` away from the point ``p`` (sheet mm) on a thin leader to it (or to the nearest point
+    of ``to``, its vector): the first candidate centre whose box overlaps no text, crosses no drawn
+    line and stays ``inside``, and whose leader crosses no text; the leader is drawn and kept as a
+    line that later labels keep clear of. What the label names is the leader with ``names`` (its
+    vector). None where no candidate is free."""
+    from shapely.geometry import LineString
+    from shapely.ops import nearest_points
+    boxes = [b for _, b in canvas.annotations.boxes]
+    tree = shapely.STRtree(boxes) if boxes else None
+    for c in candidates:
+        poly = rich_box(label, c, height)
+        if inside is not None and not inside.contains(poly):
+            continue
+        if tree is not None and any(poly.intersection(boxes[j]).area > AREA_EPS_MM2 for j in tree.query(poly)):
+            continue
+        if canvas.annotations.crossings(poly):
+            continue
+        if to is None:
+            end = p
+            foot = leader_foot(poly, p)
+        else:
+            q0, q1 = nearest_points(poly.exterior, to)
+            foot, end = (q0.x, q0.y), (q1.x, q1.y)
+        if math.dist(foot, end) < MM_ROUNDOFF:
+            continue
+        leader = LineString([foot, end])
+        if tree is not None and any(leader.intersects(boxes[j]) for j in tree.query(leader)):
+            continue
+        named = leader if names is None else leader.union(names)
+        drawn = draw_rich(canvas, c, label, height, named)
+        canvas.layout.add_line(foot, end, dxfattribs={"layer": "thin"})
+        canvas.annotations.add_obstacle(leader)
+        return drawn
+    return None
 
 
 def around(p: Vec, rich: Label, height: float, prefer_deg: float = 45.0,
@@ -302,19 +360,24 @@ def own_point(candidates: Sequence[Vec], label: Label, height: float, p: Vec,
 
 def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefer_deg: float,
                       others: Sequence[Vec], inside: Polygon | None = None,
-                      optional: bool = False) -> Polygon | None:
+                      optional: bool = False, cross: int = 1) -> Polygon | None:
     """A point's letter: beside ``p`` (within LABEL_NEAR_MM, nearer to it than to the ``others``)
-    where it overlaps no text and crosses no line, then crossing one line; where no such spot is
-    free, farther out on a thin leader from the point (the leader is part of what it names);
-    else beside it, overlapping the fewest."""
+    where it overlaps no text and crosses no line, then crossing up to ``cross`` lines (0: a letter
+    is never crossed by a line, issue 12); where no such spot is free, farther out on a thin leader
+    from the point (the leader is part of what it names); else beside it, overlapping the fewest."""
     from shapely.geometry import LineString, Point
     from reportgen.tolerances import LABEL_NEAR_MM
     near = own_point(around(p, label, height, prefer_deg, gaps=(0.6, 1.5, 3.0, 4.5, 6.0)),
                      label, height, p, others, LABEL_NEAR_MM - 1.0)
-    poly = place_passes(canvas, [(near, 0), (near, 1)], label, height, inside, optional=True,
-                        names=Point(p)) if near else None
+    poly = place_passes(canvas, [(near, k) for k in range(cross + 1)], label, height, inside, optional=True,
+                        names=Point(p), strict=cross == 0) if near else None
     if poly is not None:
         return poly
+    if cross == 0:
+        poly = place_on_leader(canvas, p, around(p, label, height, prefer_deg, gaps=(6.0, 8.0, 11.0, 14.0, 18.0)),
+                               label, height, inside)
+        if poly is not None:
+            return poly
     leader: list = []
 
     def named(poly: Polygon):

@@ -111,11 +111,13 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
                      for e in scene.entities if e.id.startswith(prefix) and isinstance(e, (SceneSegment, ScenePolyline))]
             return MultiLineString(parts) if parts else None
 
+        letters = [view.transform(lb.at) for lb in scene.labels if lb.role == "point" and lb.anchor.startswith("point:")]
         for lb in scene.labels:
             if lb.role == "point":
                 kind, ident = lb.anchor.split(":", 1)
                 if kind == "point":
-                    view.label(lb.at, ident, 5.0, prefer_deg=135.0)
+                    rl.place_point_label(view, view.transform(lb.at), rl.Rich(ident), 5.0, 135.0, letters,
+                                         inside=inside, cross=0)
                 else:                # a couple's name over its arc
                     arc = next((e.points for e in scene.entities if e.id == f"{lb.anchor}:arc"
                                 and isinstance(e, ScenePolyline)), ())
@@ -132,8 +134,8 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
         named = [(lb, view.transform(lb.along[0]), view.transform(lb.along[1])) for lb in scene.labels
                  if lb.role == "vector" and lb.along is not None]
         rivals = tuple(LineString([a, b]) for _, a, b in named)      # each name nearer its own arrow
-        for lb, a, b in named:
-            place_vector_name(view, a, b, rl.Rich(plain(lb.anchor.split(":", 1)[1])), LABEL_MM, inside, rivals)
+        place_vector_names(view, [(a, b, rl.Rich(plain(lb.anchor.split(":", 1)[1])), False) for lb, a, b in named],
+                           LABEL_MM, inside, rivals)
         _title_and_scales(view, title, tr("sheets.kv03", v1=format_significant(scene.scale("μl").value, 4)),
                           tr("fbd.arrows"))
         return view
@@ -178,15 +180,9 @@ def polygon_panel(name: str, title: str, polygon, first: int = 0) -> Panel:
                              "center")
         rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
                        for lb in scene.labels if lb.along is not None)
-        for lb in scene.labels:
-            if lb.along is None:
-                continue
-            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            rich = rl.Rich(plain(lb.anchor.rsplit(":", 1)[1]))
-            if lb.leader:
-                leader_name(view, a, b, rich, POLY_LABEL_MM, inside)
-            else:
-                place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside, rivals)
+        place_vector_names(view, [(view.transform(lb.along[0]), view.transform(lb.along[1]),
+                                   rl.Rich(plain(lb.anchor.rsplit(":", 1)[1])), lb.leader)
+                                  for lb in scene.labels if lb.along is not None], POLY_LABEL_MM, inside, rivals)
         return view
     return Panel(name, w, h, paint)
 
@@ -202,20 +198,31 @@ def _within(rect: Rect, centre, width: float) -> tuple[float, float]:
 
 def leader_name(view: View, a, b, rich, height: float, inside) -> None:
     """The name of a short vector a→b (sheet mm) on a thin leader to its middle, across it first
-    (the leader is part of what ties the name to its vector)."""
+    (the leader is part of what ties the name to its vector), where its box and its leader cross
+    nothing (:func:`drawings.scenes.kinematics_labels.place_on_leader`); else the nearest spot that
+    overlaps no text."""
     mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
     normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
     line = LineString([a, b])
+    if rl.place_on_leader(view, mid, rl.around(mid, rich, height, normal, gaps=LEADER_GAPS_MM)
+                          + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line) is not None:
+        return
     foot: list = []
 
     def named(box):
-        near = box.exterior.interpolate(box.exterior.project(Point(mid)))
-        foot.append((near.x, near.y))
-        return line.union(LineString([(near.x, near.y), mid]))
+        foot.append(rl.leader_foot(box, mid))
+        return line.union(LineString([foot[-1], mid]))
 
     if rl.place_passes(view, [(rl.around(mid, rich, height, normal, gaps=(5.0, 6.0, 8.0)), 0)],
                        rich, height, inside=inside, names=named) is not None:
         view.layout.add_line(foot[-1], mid, dxfattribs={"layer": "thin"})
+
+
+#: Distances (mm) from a vector's middle at which its name is tried on a leader, nearest first.
+LEADER_GAPS_MM = (5.0, 6.5, 8.0, 10.0, 12.0, 15.0, 18.0, 22.0)
+#: Where none of those is free (a crowded cluster of the lever), the nearest free spot within this
+#: many mm of the vector's middle.
+LEADER_REACH_MM = 45.0
 
 
 def detail_text(lb) -> str:
@@ -249,11 +256,12 @@ OWN_MARGIN_MM = 0.8
 
 
 def near_passes(a, b, rich, height: float, rivals: tuple = ()) -> list[tuple[list, int]]:
-    """Passes for the name of the vector a→b (sheet mm) that keep it its own: beside it crossing no
-    line, then crossing one, round its middle no farther than LABEL_NEAR_MM, then beside it crossing
-    more lines — a name is never carried off to where it would read as another vector's: nearer to
-    its own vector than to any of the other named vectors ``rivals`` (LineStrings, sheet mm) that do
-    not lie along it."""
+    """Passes for the name of the vector a→b (sheet mm) that keep it its own: beside it, then
+    round its middle no farther than LABEL_NEAR_MM, crossing no line (issue 12: a name crossed by
+    another vector reads as neither's), then (the last resort, after a leader) crossing one, two,
+    any — a name is never carried off to where it would read as
+    another vector's: nearer to its own vector than to any of the other named vectors ``rivals``
+    (LineStrings, sheet mm) that do not lie along it."""
     from drawings import style
     from reportgen.tolerances import LABEL_NEAR_MM
     near = rl.along(a, b, rich, height)
@@ -279,23 +287,34 @@ def near_passes(a, b, rich, height: float, rivals: tuple = ()) -> list[tuple[lis
     return [(near, 0), (near, 1), (far, 0), (far, 1), (near, 2), (near, 99)]
 
 
-def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tuple = ()) -> None:
+def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tuple = (),
+                      uncrossed: bool = False) -> None:
     """The name of the vector a→b (sheet mm) beside it (:func:`near_passes`, nearer to it than to
-    any of the ``rivals``) where it overlaps no text; where every spot beside it is taken, farther
-    out on a thin leader to the vector's middle (the leader is part of what ties it to its vector);
-    else beside it, overlapping the fewest."""
+    any of the ``rivals``) where it overlaps no text and crosses no line; where every spot beside it
+    is taken, farther out on a thin leader to the vector's middle (the leader is part of what ties
+    it to its vector); else beside it, overlapping the fewest. ``uncrossed`` (sheet 2's views): a
+    name beside its vector crossed by a line is taken only after a leader whose box and leader cross
+    nothing (issue 12: «Fур» on the lever crossed by the coupler's image)."""
     line = LineString([a, b])
-    if rl.place_passes(view, near_passes(a, b, rich, height, rivals), rich, height, inside=inside, optional=True,
-                       names=line) is not None:
+    passes = near_passes(a, b, rich, height, rivals)
+    if uncrossed:
+        if rl.place_passes(view, [p for p in passes if p[1] == 0], rich, height, inside=inside, optional=True,
+                           names=line, strict=True) is not None:
+            return
+        mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
+        if rl.place_on_leader(view, mid, rl.around(mid, rich, height, normal, gaps=LEADER_GAPS_MM)
+                              + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line) is not None:
+            return
+    if rl.place_passes(view, passes, rich, height, inside=inside, optional=True, names=line) is not None:
         return
     mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
     normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
     leader: list = []
 
     def named(box):
-        near = box.exterior.interpolate(box.exterior.project(Point(mid)))
-        leader.append((near.x, near.y))
-        return line.union(LineString([(near.x, near.y), mid]))
+        leader.append(rl.leader_foot(box, mid))
+        return line.union(LineString([leader[0], mid]))
 
     if rl.place_passes(view, [(rl.around(mid, rich, height, normal, gaps=(9.0, 12.0, 16.0, 20.0)), 0),
                               (rl.around(mid, rich, height, normal, gaps=(9.0, 12.0, 16.0, 20.0)), 1)],
@@ -303,6 +322,24 @@ def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tup
         view.layout.add_line(leader[0], mid, dxfattribs={"layer": "thin"})
         return
     rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, names=line)
+
+
+def place_vector_names(view: View, items: list, height: float, inside, rivals: tuple = ()) -> None:
+    """The names of sheet 2's vectors ``items`` ((tail, head, rich, on a leader), sheet mm) in two
+    rounds: first each beside its own vector where it overlaps no text and crosses no line, then
+    the rest (and the short ones, :func:`leader_name`) on leaders — a name on a leader does not take
+    the spot another name needs beside its own vector (issue 12: the lever's crowded clusters)."""
+    later = []
+    for a, b, rich, short in items:
+        if short or rl.place_passes(view, [p for p in near_passes(a, b, rich, height, rivals) if p[1] == 0], rich,
+                                    height, inside=inside, optional=True, names=LineString([a, b]),
+                                    strict=True) is None:
+            later.append((a, b, rich, short))
+    for a, b, rich, short in later:
+        if short:
+            leader_name(view, a, b, rich, height, inside)
+        else:
+            place_vector_name(view, a, b, rich, height, inside, rivals, uncrossed=True)
 
 
 def place_label(view: View, anchors: list[np.ndarray], text: str, height: float, names=None) -> None:
@@ -345,6 +382,8 @@ def lever_panel(name: str, scene: Scene) -> Panel:
         for e in scene.entities:
             if isinstance(e, SceneSegment):
                 view.line(e.a, e.b, "vectors" if e.kind != "construction" else "construction")
+                if e.kind == "construction":      # the arms: thin, but a name crossed by one is crossed
+                    view.annotations.add_obstacle(LineString([view.transform(e.a), view.transform(e.b)]))
         for e in scene.entities:
             if isinstance(e, SceneArrow):
                 view.arrow(e.a, e.b, None, head_mm=3.5)
@@ -352,12 +391,15 @@ def lever_panel(name: str, scene: Scene) -> Panel:
                           tr("sheets.kv07", v1=format_significant(scene.scale('μF').value, 4)))
         view.text_mm((view.rect.center[0], view.rect.y1 - TITLE_MM - 4.5), lever_subtitle(), 3.5, "bottom-center")
         inside = view.rect.polygon()
+        points = [view.transform(lb.at) for lb in scene.labels if lb.role == "point"]
         for lb in scene.labels:
             if lb.role == "point":
-                view.label(lb.at, lb.anchor.split(":", 1)[1], 5.0, prefer_deg=-135.0 if lb.anchor == "point:p" else 45.0)
+                rl.place_point_label(view, view.transform(lb.at), rl.Rich(lb.anchor.split(":", 1)[1]), 5.0,
+                                     -135.0 if lb.anchor == "point:p" else 45.0, points, inside=inside, cross=0)
         rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
                        for lb in scene.labels if lb.role == "vector" and lb.along is not None
                        and lb.anchor.startswith("force:"))
+        items = []
         for lb in scene.labels:
             if lb.role != "vector" or lb.along is None:
                 continue
@@ -365,8 +407,8 @@ def lever_panel(name: str, scene: Scene) -> Panel:
             if kind == "arm":
                 continue            # the arms are numbered by the note's equations (h1, h2, … of section 2)
             rich = rl.Rich(plain(ident)) if kind == "force" else rl.from_tex(lb.text)
-            a, b = view.transform(lb.along[0]), view.transform(lb.along[1])
-            place_vector_name(view, a, b, rich, POLY_LABEL_MM, inside, rivals)
+            items.append((view.transform(lb.along[0]), view.transform(lb.along[1]), rich, False))
+        place_vector_names(view, items, POLY_LABEL_MM, inside, rivals)
         return view
     return Panel(name, w, h, paint)
 

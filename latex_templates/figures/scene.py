@@ -277,12 +277,24 @@ def _own(box, p, others: list, margin: float) -> bool:
     return all(_dist_box(q, box) >= d + margin for q in others)
 
 
+def _leader_end(lb: Label, box) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The leader of a label in ``box``: from the box's point nearest to its anchor (the point, or
+    the middle of its vector) to that anchor."""
+    bx = min(max(lb.at[0], box[0]), box[2])
+    by = min(max(lb.at[1], box[1]), box[3])
+    return (bx, by), (lb.at[0], lb.at[1])
+
+
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
-           lines: "_Segments | list | None" = None, others: list | None = None, rivals: list | None = None):
+           lines: "_Segments | list | None" = None, others: list | None = None, rivals: list | None = None,
+           uncrossed: bool = False, leaders: list | None = None):
     """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
     scene's middle first, nearest first, and nearer to it than to any of the ``others``), or
     beside the middle of a vector on either side; where every such box hits one, farther out on a
-    leader. Returns (centre, box, on a leader)."""
+    leader. ``uncrossed`` (the scenes of :data:`OWN_VECTOR_SCENES`, issue 12): a box crossed by a
+    line (or by a leader already drawn, ``leaders``) is taken only when no box beside the anchor
+    and none on a leader (whose leader crosses no placed box) is free. Returns (centre, box, on a
+    leader)."""
     w, h = size
     point = lb.role != "vector" or lb.along is None
     cands: list[tuple[float, float]] = []
@@ -313,11 +325,23 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 cands.append((px + ux * (t + gap * off), py + uy * (t + gap * off)))
     if not point and rivals:
         rivals = _rivals_of(lb.along, rivals)
+        if uncrossed and leaders:        # a leader drawn already reads as the line a name beside it names
+            rivals = rivals + list(leaders)
     if point and others:
         others = _others_of(lb.at, others)
     passes = [(cands, lb.leader)]
     if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
         passes.append((_leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True))
+    if uncrossed:                # and farther still, on a leader, the nearest free spot of a grid
+        reach = 12.0 * gap / 0.8
+        step = gap * 2.5
+        n = int(reach / step)
+        px, py = float(lb.at[0]), float(lb.at[1])
+        grid = sorted(((px + i * step, py + j * step) for i in range(-n, n + 1) for j in range(-n, n + 1)
+                       if 0 < math.hypot(i, j) * step <= reach),
+                      key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q))
+        passes.append((grid, True))
+    first = None
     for group, leader in passes:
         best = None
         for rank, c in enumerate(group):
@@ -330,12 +354,22 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 continue
             hits = lines.crossings(box) if isinstance(lines, _Segments) else \
                 sum(1 for s in (lines or ()) if _near(s, box) and _crosses(box, s))
+            if uncrossed:
+                hits += sum(1 for s in (leaders or ()) if _near(s, box) and _crosses(box, s))
+                if hits == 0 and leader:
+                    seg = _leader_end(lb, box)
+                    if any(_crosses(o, seg) for o in boxes):
+                        continue
             if hits == 0:
                 return c, box, leader
             if best is None or (hits, rank) < best[0]:
                 best = ((hits, rank), c, box)
-        if best is not None:       # beside its entity, crossing the fewest lines, before a leader
+        if best is not None and not uncrossed:   # beside its entity, crossing the fewest lines, before a leader
             return best[1], best[2], leader
+        if first is None and best is not None:
+            first = (best[1], best[2], leader)
+    if first is not None:        # nothing free anywhere: beside its entity, crossing the fewest
+        return first
     c = cands[0]
     return c, (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2), lb.leader
 
@@ -376,12 +410,19 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
             b = (c[0] - w / 2, c[1] - hh / 2, c[0] + w / 2, c[1] + hh / 2)
         boxes.append(b)
         out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, 0.0, False)))
-    for i, lb in enumerate(scene.labels):
+    uncrossed = scene.name.startswith(OWN_VECTOR_SCENES)
+    leaders: list = []
+    order = list(enumerate(scene.labels))
+    if uncrossed:            # the points' letters first: a vector's name keeps clear of their leaders
+        order.sort(key=lambda il: il[1].role == "vector")
+    for i, lb in order:
         if lb.role not in roles or lb.role in FIXED_ROLES:
             continue
         size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
-        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others, rivals)
+        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others, rivals, uncrossed, leaders)
         boxes.append(b)
+        if leader:
+            leaders.append(_leader_end(lb, b))
         out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, anchor_distance(lb, b), leader)))
     return out
 
@@ -485,8 +526,7 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
     for lb, c, pl in labels:
         texts[id(lb)].set_position((c[0], c[1]))
         if pl.leader:           # the leader is part of what ties the label to its entity
-            bx = min(max(lb.at[0], pl.box[0]), pl.box[2])
-            by = min(max(lb.at[1], pl.box[1]), pl.box[3])
+            (bx, by), _ = _leader_end(lb, pl.box)
             ax.plot([bx, lb.at[0]], [by, lb.at[1]], color="0.3", lw=0.4)
             names(texts[id(lb)], (bx, by), lb.at, *(lb.along or ()))
     # the measured boxes may reach past the first estimate's frame: widen the figure (same reduction)

@@ -273,3 +273,125 @@ def check_figure(fig, near_mm: float, vectors: bool = False) -> list[Found]:
             if other is not None:
                 found.append(Found("vector's name nearer to another named vector", t.text, other, d))
     return found
+
+
+# -- lines crossing labels (issue 12: «Fур», «FMи4(D)» crossed by other vectors on the lever) -----
+
+#: A line counts as a label's own (its vector, the vector's arrowhead, its leader) when it lies
+#: within this many mm of what the label names: an arrowhead is a third of its length wide.
+OWN_LINE_MM = 1.5
+
+
+def _dxf_lines(doc) -> list:
+    """Every drawn line of the sheet's modelspace as a shapely geometry (sheet mm): lines,
+    polylines, circles, arcs and the arrowheads (SOLID, filled)."""
+    from shapely.geometry import Polygon as _Polygon
+    out = []
+    msp = doc.modelspace()
+    for e in msp:
+        kind = e.dxftype()
+        if kind == "LINE":
+            a, b = e.dxf.start, e.dxf.end
+            if math.dist((a[0], a[1]), (b[0], b[1])) > 0.0:
+                out.append(LineString([(a[0], a[1]), (b[0], b[1])]))
+        elif kind == "LWPOLYLINE":
+            pts = [(p[0], p[1]) for p in e.get_points("xy")]
+            if e.closed and len(pts) > 2:
+                pts.append(pts[0])
+            if len(pts) >= 2:
+                out.append(LineString(pts))
+        elif kind == "CIRCLE":
+            c = e.dxf.center
+            out.append(Point(c[0], c[1]).buffer(float(e.dxf.radius), 32).exterior)
+        elif kind == "ARC":
+            c, r = e.dxf.center, float(e.dxf.radius)
+            a0, a1 = float(e.dxf.start_angle), float(e.dxf.end_angle)
+            sweep = (a1 - a0) % 360.0 or 360.0
+            n = max(int(sweep / 5.0), 2)
+            out.append(LineString([(c[0] + r * math.cos(math.radians(a0 + sweep * i / n)),
+                                    c[1] + r * math.sin(math.radians(a0 + sweep * i / n))) for i in range(n + 1)]))
+        elif kind == "SOLID":
+            pts = [(float(e.dxf.get(f"vtx{i}")[0]), float(e.dxf.get(f"vtx{i}")[1])) for i in range(3)]
+            poly = _Polygon(pts)
+            if poly.area > 0.0:
+                out.append(poly)
+    return out
+
+
+def _own(line, anchor, own_mm: float = OWN_LINE_MM) -> bool:
+    """Does ``line`` belong to what the label names (``anchor``: its vector, and its leader)?"""
+    return anchor is not None and not isinstance(anchor, Point) and line.within(anchor.buffer(own_mm))
+
+
+def crossed_labels(texts, lines, touch: float = TOUCH_MM, strict: bool = True) -> list[Found]:
+    """Labels whose letters are crossed by a drawn line that is not their own: ``texts`` (name,
+    letters' box, what it names), ``lines`` the drawn lines (sheet or figure mm)."""
+    import shapely
+    found: list[Found] = []
+    if not lines:
+        return found
+    tree = shapely.STRtree(lines)
+    for name, shape, anchor in texts:
+        inner = shape.buffer(-touch, join_style=2)
+        if inner.is_empty:
+            continue
+        hits = [lines[int(j)] for j in tree.query(inner, predicate="intersects")]
+        if strict:
+            foreign = hits
+        else:
+            foreign = [g for g in hits if not _own(g, anchor)]
+        if foreign:
+            found.append(Found("label crossed by a line", name, mm=len(foreign)))
+    return found
+
+
+def check_sheet_crossings(doc, records, views: tuple[str, ...] = VECTOR_VIEWS) -> list[Found]:
+    """Every label recorded in the views named ``views…`` read back from the DXF ``doc``: no drawn
+    line other than its own (its vector with its arrowhead, its leader) crosses its letters."""
+    import shapely
+    by_handle = {t.handle: t for t in sheet_texts(doc)}
+    texts = []
+    for r in records:
+        if not str(r.view).startswith(views):
+            continue
+        boxes = [by_handle[h].box for h in r.handles if h in by_handle]
+        if boxes:
+            texts.append((f"{r.view}: {r.text}", shapely.union_all(boxes), r.anchor))
+    return crossed_labels(texts, _dxf_lines(doc))
+
+
+def _figure_lines(fig) -> list:
+    """Every drawn line of a figure's axes (lines, patch outlines; filled patches as areas), in mm
+    of the figure."""
+    from shapely.geometry import Polygon as _Polygon
+    k = 25.4 / fig.dpi
+    out = []
+    for ax in fig.axes:
+        for ln in ax.lines:
+            if not ln.get_visible():
+                continue
+            xy = ax.transData.transform(list(zip(ln.get_xdata(), ln.get_ydata()))) * k if len(ln.get_xdata()) else []
+            if len(xy) >= 2:
+                out.append(LineString([tuple(p) for p in xy]))
+        for p in ax.patches:
+            if not p.get_visible():
+                continue
+            path = p.get_path().transformed(p.get_transform())
+            for poly in path.to_polygons(closed_only=False):
+                pts = [tuple(q * k) for q in poly]
+                if len(pts) < 2:
+                    continue
+                if p.get_fill() and len(pts) >= 3 and p.get_facecolor()[3] > 0 \
+                        and tuple(p.get_facecolor()[:3]) != (1.0, 1.0, 1.0):
+                    g = _Polygon(pts)
+                    out.append(g if g.is_valid else g.buffer(0))
+                else:
+                    out.append(LineString(pts))
+    return [g for g in out if not g.is_empty]
+
+
+def check_figure_crossings(fig) -> list[Found]:
+    """No drawn line of a note figure other than a label's own (its vector, its arrowhead, its
+    leader) crosses the label's text (window extent)."""
+    texts = [(t.text, t.box, t.names) for t in figure_texts(fig) if t.drawn and t.names is not None]
+    return crossed_labels(texts, _figure_lines(fig))
