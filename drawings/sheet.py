@@ -167,11 +167,37 @@ def fit_text(text: str, width: float, height: float, *, max_height: float,
 TITLE_MIN_MM = 3.5
 
 
+class _Recording:
+    """A layout that writes into ``layout`` and keeps the handle of every entity added through it
+    (``add_*``) in ``handles``: what a view drew, for the check that no two views' drawings overlap
+    (tests/drawings/test_views_apart.py)."""
+
+    def __init__(self, layout: Any, handles: list[str]) -> None:
+        self._layout = layout
+        self._handles = handles
+
+    def __getattr__(self, name: str) -> Any:
+        attr = getattr(self._layout, name)
+        if not name.startswith("add_") or not callable(attr):
+            return attr
+
+        def add(*args: Any, **kwargs: Any) -> Any:
+            made = attr(*args, **kwargs)
+            entity = getattr(made, "dimension", made)         # a dimension's override holds it
+            handle = getattr(getattr(entity, "dxf", None), "handle", None)
+            if handle is not None:
+                self._handles.append(str(handle))
+            return made
+        return add
+
+
 class View(Canvas):
-    """A placed view: a :class:`Canvas` whose ``rect`` (sheet mm) is reserved on the sheet."""
+    """A placed view: a :class:`Canvas` whose ``rect`` (sheet mm) is reserved on the sheet;
+    ``handles`` the DXF handles of everything it drew."""
 
     def __init__(self, sheet: "Sheet", name: str, rect: Rect, transform: Transform) -> None:
-        super().__init__(sheet.msp, transform, sheet.annotations, name)
+        self.handles: list[str] = []
+        super().__init__(_Recording(sheet.msp, self.handles), transform, sheet.annotations, name)
         self.sheet = sheet
         self.rect = rect
 

@@ -239,11 +239,12 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
             continue
         if canvas.annotations.crossings(poly):
             continue
+        letters = box(*text_extent(label, c, height).bounds)     # the leader touches the letters
         if to is None:
             end = p
-            foot = leader_foot(poly, p)
+            foot = leader_foot(letters, p)
         else:
-            q0, q1 = nearest_points(poly.exterior, to)
+            q0, q1 = nearest_points(letters.exterior, to)
             foot, end = (q0.x, q0.y), (q1.x, q1.y)
         if math.dist(foot, end) < MM_ROUNDOFF:
             continue
@@ -374,8 +375,8 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
     if poly is not None:
         return poly
     if cross == 0:
-        poly = place_on_leader(canvas, p, around(p, label, height, prefer_deg, gaps=(6.0, 8.0, 11.0, 14.0, 18.0)),
-                               label, height, inside)
+        poly = place_on_leader(canvas, p, around(p, label, height, prefer_deg, gaps=(6.0, 8.0, 11.0, 14.0, 18.0))
+                               + spread_around(p, 30.0), label, height, inside)
         if poly is not None:
             return poly
     leader: list = []

@@ -25,7 +25,7 @@ from reportgen.scenes.plans import UNITS, plan_scene
 from reportgen.scenes.scene import Arrow, Scene
 
 from drawings.scenes import render
-from drawings.scenes.kinetostatics_views import place_vector_name
+from drawings.scenes.kinetostatics_views import place_vector_names
 
 #: Room for letters and names around a plan's points, and the caption / title strips, mm.
 PAD_LABELS, STRIP = 16.0, 12.0
@@ -102,15 +102,14 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         keys = lb.anchor.split(":", 1)[1].split(",")
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
         p = view.transform(lb.at)
-        rl.place_point_label(view, p, label, letter_height, 45.0, others, inside=inside)
+        rl.place_point_label(view, p, label, letter_height, 45.0, others, inside=inside, cross=0)
     # names of the components along their arrows
     if names:
         named = [(lb, view.transform(lb.along[0]), view.transform(lb.along[1])) for lb in scene.labels
                  if lb.role == "vector" and lb.along is not None]
         named = [(lb, a, b) for lb, a, b in named if math.dist(a, b) >= 1.0]
         rivals = tuple(LineString([a, b]) for _, a, b in named)     # each name nearer its own vector
-        for lb, a, b in named:
-            place_vector_name(view, a, b, rl.from_tex(lb.text), 3.5, inside, rivals)
+        place_vector_names(view, [(a, b, rl.from_tex(lb.text), False) for lb, a, b in named], 3.5, inside, rivals)
     return drawn
 
 

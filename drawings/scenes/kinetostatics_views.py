@@ -148,6 +148,13 @@ def polygon_panel(name: str, title: str, polygon, first: int = 0) -> Panel:
     name on a leader); its details indexed from ``first``."""
     scene = polygon_scene(polygon, first=first)
     x0, y0, x1, y1 = scene.bounds()
+    for lb in scene.labels:        # a detail's heading and scale, wider than the detail, within the view
+        if lb.role in ("detail-title", "detail-scale"):
+            text, height = (detail_text(lb), 5.0) if lb.role == "detail-title" else \
+                (tr("sheets.kv05", v1=format_significant(scene.scale(f"μF:{lb.text}").value, 4)), 3.5)
+            half = style.text_width(text, height) / 2 + 1.0
+            x0, x1 = min(x0, lb.at[0] - half), max(x1, lb.at[0] + half)
+            y1 = max(y1, lb.at[1] + height / 2 + 1.0)
     lo, hi = np.array([x0, y0]), np.array([x1, y1])
     w = max(hi[0] - lo[0] + 2 * POLY_PAD_MM, 90.0)
     h = hi[1] - lo[1] + 2 * POLY_PAD_MM + TITLE_MM + 8.0

@@ -43,6 +43,21 @@ DETAIL_GAP_MM = 10.0
 DETAIL_TITLE_MM = 14.0
 #: The leader to the detail's letter: its slanted part and its shelf, mm.
 DETAIL_LEADER_MM = (7.0, 6.0)
+#: Letter heights of a detail's heading «А (2:1)» and of its scale «μF = 5 Н/мм» under it (sheet
+#: mm, ГОСТ 2.304 sizes: the sheet letters them so; the note's 9 pt are smaller).
+DETAIL_HEADING_H, DETAIL_SCALE_H = 5.0, 3.5
+
+
+def detail_half_width(ratio_text: str, scale: float) -> float:
+    """Half the width (mm) a detail's heading and scale line take, estimated from their number of
+    characters (:func:`reportgen.scenes.meshing_marks.text_size`, the sheet's lettering with a
+    margin): a detail reserves this much beside its centre when it is narrower than its heading —
+    on main the crank–rocker's details «А (2:1)» and «Б (2:1)», 16 mm wide, were set 10 mm apart
+    under headings 30 mm wide, which overlapped (issue 12)."""
+    from .meshing_marks import text_size
+    heading = text_size(f"А ({ratio_text})", DETAIL_HEADING_H)[0]
+    line = text_size(f"μF = {scale:.6g} Н/мм", DETAIL_SCALE_H)[0]
+    return max(heading, line) / 2.0
 
 
 def force_tex(name: str) -> str:
@@ -168,41 +183,44 @@ def polygon_details(polygon, box: tuple[float, float] = DEFAULT_BOXES.polygon,
         r = max(float(np.max(np.hypot(*(ends - c).T))), LEGIBLE_MM / 2) + DETAIL_MARGIN_MM
         shortest = min(float(np.hypot(*(sides[j][2] - sides[j][1]))) for j in g)
         k = detail_ratio(polygon.scale, shortest, 2 * r)
-        at = _detail_place(c, r * k, lo, hi, taken, box)
+        scale = float(f"{polygon.scale / k:.12g}")
         R = r * k
-        taken.append((at[0] - R, at[1] - R, at[0] + R, at[1] + R + DETAIL_TITLE_MM))
-        lo = np.minimum(lo, [at[0] - R, at[1] - R])
-        hi = np.maximum(hi, [at[0] + R, at[1] + R + DETAIL_TITLE_MM])
-        out.append(PolygonDetail(first + n, k, float(f"{polygon.scale / k:.12g}"), tuple(sides[j][0] for j in g),
-                                 _pt(c), r, _pt(at)))
+        half = max(R, detail_half_width(gost_scales.label((k, 1.0)), scale))
+        at = _detail_place(c, R, lo, hi, taken, box, half)
+        taken.append((at[0] - half, at[1] - R, at[0] + half, at[1] + R + DETAIL_TITLE_MM))
+        lo = np.minimum(lo, [at[0] - half, at[1] - R])
+        hi = np.maximum(hi, [at[0] + half, at[1] + R + DETAIL_TITLE_MM])
+        out.append(PolygonDetail(first + n, k, scale, tuple(sides[j][0] for j in g), _pt(c), r, _pt(at)))
     return tuple(out)
 
 
-def _detail_place(c, R: float, lo, hi, taken, box: tuple[float, float]) -> np.ndarray:
+def _detail_place(c, R: float, lo, hi, taken, box: tuple[float, float], half: float | None = None) -> np.ndarray:
     """The centre of a detail of radius ``R`` for the circle at ``c``: below, above, left or right of
     the drawing's box ``lo``–``hi`` (the detail's heading above it), level with ``c`` where the box
-    allows, clear of the details ``taken``; the place that enlarges the box least, then the nearest."""
+    allows, clear of the details ``taken``; the place that enlarges the box least, then the nearest.
+    ``half``: the half-width it takes (its heading may be wider than the circle; default ``R``)."""
     g, t = DETAIL_GAP_MM, DETAIL_TITLE_MM
-    x = float(min(max(c[0], lo[0] + R), max(hi[0] - R, lo[0] + R)))
+    W = R if half is None else half
+    x = float(min(max(c[0], lo[0] + W), max(hi[0] - W, lo[0] + W)))
     y = float(min(max(c[1], lo[1] + R), max(hi[1] - R - t, lo[1] + R)))
     cands = [np.array([x, lo[1] - g - t - R]), np.array([x, hi[1] + g + R]),
-             np.array([lo[0] - g - R, y]), np.array([hi[0] + g + R, y])]
+             np.array([lo[0] - g - W, y]), np.array([hi[0] + g + W, y])]
     wide = hi[0] - lo[0] >= hi[1] - lo[1]
     bw, bh = (max(box), min(box)) if wide else (min(box), max(box))
     best = None
     for rank, p in enumerate(cands):
         for _ in range(20):               # slide along the box's side past the details already placed
-            room = (p[0] - R, p[1] - R, p[0] + R, p[1] + R + t)
+            room = (p[0] - W, p[1] - R, p[0] + W, p[1] + R + t)
             hit = [o for o in taken if not (room[2] + g <= o[0] or o[2] + g <= room[0] or room[3] + g <= o[1]
                                             or o[3] + g <= room[1])]
             if not hit:
                 break
             if rank < 2:
-                p = np.array([max(o[2] for o in hit) + g + R, p[1]])
+                p = np.array([max(o[2] for o in hit) + g + W, p[1]])
             else:
                 p = np.array([p[0], min(o[1] for o in hit) - g - R - t])
-        nlo = np.minimum(lo, [p[0] - R, p[1] - R])
-        nhi = np.maximum(hi, [p[0] + R, p[1] + R + t])
+        nlo = np.minimum(lo, [p[0] - W, p[1] - R])
+        nhi = np.maximum(hi, [p[0] + W, p[1] + R + t])
         size = nhi - nlo
         key = (round(max(size[0] / bw, size[1] / bh), 6), round(float(np.prod(size)), 6), float(np.hypot(*(p - c))))
         if best is None or key < best[0]:

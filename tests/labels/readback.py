@@ -282,39 +282,51 @@ def check_figure(fig, near_mm: float, vectors: bool = False) -> list[Found]:
 OWN_LINE_MM = 1.5
 
 
+def entity_geometry(e):
+    """The drawn shape of one DXF entity (sheet mm): a line, polyline, circle or arc as a line, an
+    arrowhead (SOLID) as its triangle, a TEXT as its letters' box (:func:`text_box`); None for
+    anything else."""
+    from shapely.geometry import Polygon as _Polygon
+    kind = e.dxftype()
+    if kind == "LINE":
+        a, b = e.dxf.start, e.dxf.end
+        if math.dist((a[0], a[1]), (b[0], b[1])) > 0.0:
+            return LineString([(a[0], a[1]), (b[0], b[1])])
+    elif kind == "LWPOLYLINE":
+        pts = [(p[0], p[1]) for p in e.get_points("xy")]
+        if e.closed and len(pts) > 2:
+            pts.append(pts[0])
+        if len(pts) >= 2:
+            return LineString(pts)
+    elif kind == "CIRCLE":
+        c = e.dxf.center
+        return Point(c[0], c[1]).buffer(float(e.dxf.radius), 32).exterior
+    elif kind == "ARC":
+        c, r = e.dxf.center, float(e.dxf.radius)
+        a0, a1 = float(e.dxf.start_angle), float(e.dxf.end_angle)
+        sweep = (a1 - a0) % 360.0 or 360.0
+        n = max(int(sweep / 5.0), 2)
+        return LineString([(c[0] + r * math.cos(math.radians(a0 + sweep * i / n)),
+                            c[1] + r * math.sin(math.radians(a0 + sweep * i / n))) for i in range(n + 1)])
+    elif kind == "SOLID":
+        pts = [(float(e.dxf.get(f"vtx{i}")[0]), float(e.dxf.get(f"vtx{i}")[1])) for i in range(3)]
+        poly = _Polygon(pts)
+        if poly.area > 0.0:
+            return poly
+    elif kind == "TEXT" and e.plain_text().strip():
+        return text_box(e)
+    return None
+
+
 def _dxf_lines(doc) -> list:
     """Every drawn line of the sheet's modelspace as a shapely geometry (sheet mm): lines,
     polylines, circles, arcs and the arrowheads (SOLID, filled)."""
-    from shapely.geometry import Polygon as _Polygon
     out = []
-    msp = doc.modelspace()
-    for e in msp:
-        kind = e.dxftype()
-        if kind == "LINE":
-            a, b = e.dxf.start, e.dxf.end
-            if math.dist((a[0], a[1]), (b[0], b[1])) > 0.0:
-                out.append(LineString([(a[0], a[1]), (b[0], b[1])]))
-        elif kind == "LWPOLYLINE":
-            pts = [(p[0], p[1]) for p in e.get_points("xy")]
-            if e.closed and len(pts) > 2:
-                pts.append(pts[0])
-            if len(pts) >= 2:
-                out.append(LineString(pts))
-        elif kind == "CIRCLE":
-            c = e.dxf.center
-            out.append(Point(c[0], c[1]).buffer(float(e.dxf.radius), 32).exterior)
-        elif kind == "ARC":
-            c, r = e.dxf.center, float(e.dxf.radius)
-            a0, a1 = float(e.dxf.start_angle), float(e.dxf.end_angle)
-            sweep = (a1 - a0) % 360.0 or 360.0
-            n = max(int(sweep / 5.0), 2)
-            out.append(LineString([(c[0] + r * math.cos(math.radians(a0 + sweep * i / n)),
-                                    c[1] + r * math.sin(math.radians(a0 + sweep * i / n))) for i in range(n + 1)]))
-        elif kind == "SOLID":
-            pts = [(float(e.dxf.get(f"vtx{i}")[0]), float(e.dxf.get(f"vtx{i}")[1])) for i in range(3)]
-            poly = _Polygon(pts)
-            if poly.area > 0.0:
-                out.append(poly)
+    for e in doc.modelspace():
+        if e.dxftype() != "TEXT":
+            g = entity_geometry(e)
+            if g is not None:
+                out.append(g)
     return out
 
 
