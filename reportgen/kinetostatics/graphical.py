@@ -13,8 +13,10 @@ value from the exact one.
   of the lever μv ((m/s)/mm): the whole turned plan with the feet of the arms within the box of the
   sheet that draws it (:func:`lever_scale`, the plans' series). These are the scales of sheet 2 (of
   the control work's sheet for the lever), so the note and the sheet read the same mm.
-- Measurements: a length read off a plan is rounded to ``reading_mm`` (0.1 mm), an arm to
-  ``arm_reading_mm`` (0.01 mm), as a student measures them.
+- Measurements: a length read off a plan is rounded to ``reading_mm`` (0.1 mm), an arm on the scheme
+  to ``arm_reading_mm`` (0.01 mm), as a student measures them; the lever's arms and pa, read off the
+  lever drawn on sheet 2 at μv, to ``reading_mm`` — what a drawing is read to (issue 12: the note
+  printed «h₉ = 37,46 мм» off a drawing read to 0,1 mm).
 - Inertia: Fи and Mи of a link replaced by one force Fи′ = Fи shifted by h = Mи/Fи (seed 000, 2.2).
 - A dyad (RRR, RRP): each reaction at an outer revolute pair is split into R^τ (square to the line
   from the pair to the inner joint Q) from the moment equation of its link about Q, with arms
@@ -376,7 +378,7 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
         else:
             groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm, box))
     crank = _crank(reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
-    lev = _lever(lever, reactions, i, arm_reading_mm, boxes.lever if lever_box is None else lever_box)
+    lev = _lever(lever, reactions, i, reading_mm, boxes.lever if lever_box is None else lever_box)
     disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
     return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
                             crank, lev, disc)

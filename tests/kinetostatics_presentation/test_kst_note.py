@@ -75,3 +75,29 @@ def test_kst_warning_near_dead_centre(tmp_path, monkeypatch):
     tex = note.render(tmp_path / "warned").read_text(encoding="utf-8")
     assert "мёртвому положению" in tex
     assert format_decimal(mu, decimals=2) in tex
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_the_levers_arms_are_printed_as_a_drawing_is_read(example):
+    """The lever is drawn on sheet 2 and read to 0,1 mm (``reading_mm``), so its moment equation
+    prints each arm and pa to one decimal (on main «h₉ = 37,46 мм»: 0,01 mm off a drawing), and F_ур
+    follows from the printed numbers (the records re-evaluate, the balance sums to zero)."""
+    from reportgen.balance import check_balance
+    from latex_templates.parts.kinetostatics import _Counter, _lever
+
+    project = project_of(example)
+    ks = kinetostatics_of(project)
+    L, step = ks.graphical.lever, ks.graphical.reading_mm
+    assert step == pytest.approx(0.1)
+    for v in [abs(t.arm_mm_measured) for t in L.terms] + [L.pa_mm_measured]:
+        assert abs(v / step - round(v / step)) < 1e-9, v
+    from latex_templates.parts import active_strings
+    from latex_templates.render import Strings
+    with active_strings(Strings("ru")):
+        sol = _lever(project, ks, _Counter(), {})["balance"]
+    printed = {k: t for rec in (*sol.parts, sol.result) for k, t in rec.displayed_inputs().items()
+               if k == "l" or (k.startswith("h") and k[1:].isdigit())}
+    assert len(printed) > 1
+    for k, text in printed.items():          # «37{,}5», «198»: one decimal at most
+        assert "{,}" not in text or len(text.split("{,}")[1]) <= 1, (k, text)
+    assert check_balance(sol).ok

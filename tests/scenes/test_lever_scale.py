@@ -117,7 +117,7 @@ def _lever_panel_at(project, mu_v: float):
     from reportgen.scenes.lever import lever_scene
     ks = project.kinetostatics
     g = ks.graphical
-    lev = lever_graphic(ks.lever, ks.reactions, 0, g.arm_reading_mm, mu_v)
+    lev = lever_graphic(ks.lever, ks.reactions, 0, g.reading_mm, mu_v)
     return kv.lever_panel("lever", lever_scene(dataclasses.replace(ks, graphical=dataclasses.replace(g, lever=lev)),
                                                project.linkage))
 
