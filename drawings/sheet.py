@@ -197,7 +197,8 @@ class View(Canvas):
 
     def __init__(self, sheet: "Sheet", name: str, rect: Rect, transform: Transform) -> None:
         self.handles: list[str] = []
-        super().__init__(_Recording(sheet.msp, self.handles), transform, sheet.annotations, name)
+        layout: Any = _Recording(sheet.msp, self.handles)      # the modelspace, keeping what it drew
+        super().__init__(layout, transform, sheet.annotations, name)
         self.sheet = sheet
         self.rect = rect
 

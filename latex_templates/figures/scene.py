@@ -35,6 +35,7 @@ TEXT_W_MM, TEXT_H_MM = 160.0, 215.0
 LABEL_PT = 9.0
 LABEL_MM = LABEL_PT * 25.4 / 72.0
 PAD_MM = 6.0          # page mm round the drawing
+HEAD_MM = 3.0         # an arrowhead's length on the page, mm (a sixth of it wide each side)
 
 PENS = {"contour": (1.1, "-"), "thin": (0.45, "-"), "hidden": (0.9, (0, (4, 2))), "phantom": (0.5, (0, (6, 2, 1, 2, 1, 2))),
         "axis": (0.45, (0, (8, 2, 1, 2))), "vectors": (1.0, "-"), "construction": (0.3, ":")}
@@ -198,6 +199,27 @@ def _lines(scene: Scene) -> list:
             pts = [(e.c[0] + e.r * math.cos(2 * math.pi * k / n), e.c[1] + e.r * math.sin(2 * math.pi * k / n))
                    for k in range(n + 1)]
             out += list(zip(pts[:-1], pts[1:]))
+    return out
+
+
+def _heads(scene: Scene, r: float) -> list:
+    """The outlines of the arrowheads the figure draws at reduction ``r`` (:data:`HEAD_MM` long on
+    the page, a third as wide): a name beside a short vector must keep clear of its head too."""
+    out = []
+    for e in scene.entities:
+        if not isinstance(e, Arrow):
+            continue
+        a, b = np.asarray(e.a, float), np.asarray(e.b, float)
+        d = float(np.hypot(*(b - a)))
+        if d < MM_ROUNDOFF:
+            continue
+        head = min(HEAD_MM / r, d)
+        u = (b - a) / d
+        nrm = np.array([-u[1], u[0]])
+        base = b - u * head
+        left, right = tuple(base + nrm * head / 6), tuple(base - nrm * head / 6)
+        tip = (float(b[0]), float(b[1]))
+        out += [(tip, left), (left, right), (right, tip)]
     return out
 
 
@@ -393,7 +415,7 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
     centre = pts.mean(axis=0)
     out = []
     boxes: list = []
-    lines = _Segments(_lines(scene))
+    lines = _Segments(_lines(scene) + _heads(scene, r))
     others = [lb.at for lb in scene.labels if lb.role in roles and (lb.role != "vector" or lb.along is None)]
     rivals = [lb.along for lb in scene.labels if lb.role == "vector" and lb.along is not None] \
         if scene.name.startswith(OWN_VECTOR_SCENES) else []
@@ -498,7 +520,7 @@ def _make_scene_figure(scene: Scene, *, max_w_mm: float, max_h_mm: float, colour
             if d < MM_ROUNDOFF:
                 continue
             colour = COLOURS.get(e.style, "black") if colours else "black"
-            head = min(3.0 / r, d)               # a 3 mm head on the page
+            head = min(HEAD_MM / r, d)           # a 3 mm head on the page
             u = (b - a) / d
             nrm = np.array([-u[1], u[0]])
             base = b - u * head

@@ -32,7 +32,6 @@ OPEN: dict[tuple[str, str], str] = {
     ("crank-slider", "sheet1-kinematics"): "as press («π, o»)",
     ("class3", "sheet2-kinetostatics"): "the lever's cluster at b (four couples' forces, c, d): no free spot "
                                         "within the view for «b» and «FMи3(B)»",
-    ("control-work", "note"): "the reduced lever's «f»",
 }
 
 _PROJECTS: dict[str, Project] = {}
