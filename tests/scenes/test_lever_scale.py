@@ -88,11 +88,12 @@ def test_the_arms_on_the_sheet_are_the_notes(built):
     assert np.allclose(on_sheet, in_figure, atol=1e-6), (on_sheet, in_figure)
     printed = _printed_arms(content)
     assert printed
+    half = project.kinetostatics.graphical.reading_mm / 2      # the lever is read as a drawing: 0,1 mm
     for h, mm in printed.items():
         if mm > UNDRAWN_ARM_MM + 0.01:
-            assert any(abs(x - mm) <= 0.005 + 1e-9 for x in on_sheet), (h, mm, on_sheet)
-    for x in on_sheet:     # each drawn arm is a printed one, as the note read it (0,01 mm)
-        assert any(abs(x - mm) <= 0.005 + 1e-9 for mm in printed.values()), (x, printed)
+            assert any(abs(x - mm) <= half + 1e-9 for x in on_sheet), (h, mm, on_sheet)
+    for x in on_sheet:     # each drawn arm is a printed one, as the note read it (0,1 mm)
+        assert any(abs(x - mm) <= half + 1e-9 for mm in printed.values()), (x, printed)
 
 
 def test_the_note_says_the_lever_is_reduced_where_it_is(built):
@@ -175,7 +176,8 @@ def test_the_a3_control_sheet_draws_the_notes_lever(tmp_path):
     assert content.context["lever"]["mu_v"].value == pytest.approx(_sheet_mu_v(doc, rect), rel=1e-12)
     on_sheet = sorted(_sheet_arms(doc, rect))
     printed = _printed_arms(content)
-    assert on_sheet and all(any(abs(x - mm) <= 0.005 + 1e-9 for mm in printed.values()) for x in on_sheet), \
+    half = project.kinetostatics.graphical.reading_mm / 2      # read as a drawing, to 0,1 mm
+    assert on_sheet and all(any(abs(x - mm) <= half + 1e-9 for mm in printed.values()) for x in on_sheet), \
         (on_sheet, printed)
 
 
