@@ -85,8 +85,9 @@ def from_letter(key: str, helpers: bool = False) -> Rich:
 
 
 Label = Rich | tuple[Rich, ...]
-#: What a label names: a geometry (sheet mm), a function of the label's box giving it, or None.
-Names: TypeAlias = "BaseGeometry | Callable[[Polygon], BaseGeometry] | None"
+#: What a label names: a geometry (sheet mm), a function of the label's letters (their boxes,
+#: :func:`text_extent`) giving it, or None.
+Names: TypeAlias = "BaseGeometry | Callable[[BaseGeometry], BaseGeometry] | None"
 SEPARATOR = ", "
 
 
@@ -151,7 +152,8 @@ def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
             handles.append(canvas.last_text_handle)
         x += _one_width(rich, height)
     poly = rich_box(label, center, height)
-    named = names(poly) if callable(names) else names     # a function: it depends on where it went (a leader)
+    # a function of where its letters went (a leader touches a letter, not the gap between two)
+    named = names(text_extent(label, center, height)) if callable(names) else names
     if named is not None:
         canvas.annotations.add_label(LabelRecord(label_name(label), tuple(handles), named, canvas.name))
     canvas.annotations.add_box(f"{canvas.name}: «{label_name(label)}»", poly)
@@ -201,11 +203,12 @@ def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], la
     return draw_rich(canvas, best[1], label, height, names)
 
 
-def leader_foot(poly: Polygon, p: Vec) -> Vec:
-    """Where a leader from the point ``p`` meets the label's box ``poly``: the nearest point of its
-    outline."""
+def leader_foot(letters: BaseGeometry, p: Vec) -> Vec:
+    """Where a leader from the point ``p`` meets the label's ``letters`` (:func:`text_extent`, or a
+    box): their nearest point."""
     from shapely.geometry import Point
-    q = poly.exterior.interpolate(poly.exterior.project(Point(p)))
+    from shapely.ops import nearest_points
+    q = nearest_points(letters, Point(p))[0]
     return (q.x, q.y)
 
 
@@ -227,7 +230,7 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
     line and stays ``inside``, and whose leader crosses no text; the leader is drawn and kept as a
     line that later labels keep clear of. What the label names is the leader with ``names`` (its
     vector). None where no candidate is free."""
-    from shapely.geometry import LineString
+    from shapely.geometry import LineString, Point
     from shapely.ops import nearest_points
     boxes = [b for _, b in canvas.annotations.boxes]
     tree = shapely.STRtree(boxes) if boxes else None
@@ -239,13 +242,9 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
             continue
         if canvas.annotations.crossings(poly):
             continue
-        letters = box(*text_extent(label, c, height).bounds)     # the leader touches the letters
-        if to is None:
-            end = p
-            foot = leader_foot(letters, p)
-        else:
-            q0, q1 = nearest_points(letters.exterior, to)
-            foot, end = (q0.x, q0.y), (q1.x, q1.y)
+        letters = text_extent(label, c, height)          # the leader touches a letter, not a gap
+        q0, q1 = nearest_points(letters, Point(p) if to is None else to)
+        foot, end = (q0.x, q0.y), (p if to is None else (q1.x, q1.y))
         if math.dist(foot, end) < MM_ROUNDOFF:
             continue
         leader = LineString([foot, end])
@@ -381,10 +380,9 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
             return poly
     leader: list = []
 
-    def named(poly: Polygon):
-        q = poly.exterior.interpolate(poly.exterior.project(Point(p)))
-        leader.append((q.x, q.y))
-        return LineString([(q.x, q.y), p])
+    def named(letters: BaseGeometry):
+        leader.append(leader_foot(letters, p))
+        return LineString([leader[-1], p])
 
     far = around(p, label, height, prefer_deg, gaps=(8.0, 11.0, 14.0, 18.0))
     poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named)
