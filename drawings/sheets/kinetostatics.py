@@ -118,8 +118,31 @@ def arrange(sheet: Sheet, bodies: list, polygons: list, lever, placed: list):
         rects = _try_pack(region, [Request(pn.name, pn.width, pn.height, c) for pn, c in order], placed)
         if rects is not None:
             rects = _spread(sheet, rects, placed)
+            k = next(i for i, (pn, _) in enumerate(order) if pn is lever)
+            rects[k] = _widened(sheet, rects, k, placed)
             return [(pn, r) for (pn, _), r in zip(order, rects)]
     return None
+
+
+#: The lever's view takes up to this much (mm) of the free room round it on each side: its crowded
+#: clusters put names on leaders out there (class3's b, c, d at the edge of its drawing).
+LEVER_ROOM_MM = 20.0
+
+
+def _widened(sheet: Sheet, rects: list, k: int, placed: list, gap: float = 10.0):
+    """``rects[k]`` grown into the free room round it, up to :data:`LEVER_ROOM_MM` each side, ``gap``
+    from the other views and inside the free field (the drawing stays centred in it)."""
+    from drawings.layout import Rect
+    m = sheet.margin
+    bounds = sheet.frame.expanded(-m)
+    walls = [sheet.title_rect.expanded(m), sheet.extra_rect.expanded(m)] + [r.expanded(gap) for r in placed] \
+        + [o.expanded(gap) for j, o in enumerate(rects) if j != k]
+    r = rects[k]
+    left, right = (min(x, LEVER_ROOM_MM) for x in _room(bounds, walls, r, 0))
+    r = Rect(r.x0 - left, r.y0, r.x1 + right, r.y1)
+    below, above = (min(x, LEVER_ROOM_MM) for x in _room(bounds, walls, r, 1))
+    grown = min(below, above)             # as much below as above: the title keeps its place over it
+    return Rect(r.x0, r.y0 - grown, r.x1, r.y1 + grown)
 
 
 def lever_panel_of(project: Project):

@@ -30,8 +30,6 @@ OPEN: dict[tuple[str, str], str] = {
     ("shaper", "sheet1-kinematics"): "as press",
     ("shaper-uk", "sheet1-kinematics"): "as press",
     ("crank-slider", "sheet1-kinematics"): "as press («π, o»)",
-    ("class3", "sheet2-kinetostatics"): "the lever's cluster at b (four couples' forces, c, d): no free spot "
-                                        "within the view for «b» and «FMи3(B)»",
 }
 
 _PROJECTS: dict[str, Project] = {}
