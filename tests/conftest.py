@@ -34,6 +34,7 @@ SLOW_TESTS = (
     "tests/gears/test_shifts_checks.py::test_auto_satisfies_every_check",
     "tests/kinetostatics_presentation/test_kst_note.py::test_kst_section_renders_and_records_reevaluate",
     "tests/kinetostatics_presentation/test_kst_note.py::test_kst_warning_near_dead_centre",
+    "tests/kinetostatics_presentation/test_kst_note.py::test_the_levers_arms_are_printed_as_a_drawing_is_read",
     "tests/kinetostatics_presentation/test_balance_signs.py::test_every_printed_balance_holds_with_its_printed_result",
     "tests/scenes/test_note_sheet_same.py::test_plan_segments_equal_in_note_and_sheet",
     "tests/scenes/test_numbering.py::test_same_angle_same_number",
