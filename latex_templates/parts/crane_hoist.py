@@ -9,6 +9,8 @@ from . import PartContent
 from .crane_common import Blocks, failed_names, fmt, strings_of, summary
 
 NEEDS = ("crane",)
+#: The regimes of the 1969 rules (reportgen.crane.rules.REGIME) → their catalogue keys (crane.regimes).
+REGIME_KEYS = {"Л": "light", "С": "medium", "Т": "heavy", "ВТ": "very_heavy"}
 
 
 def available(project) -> bool:
@@ -25,7 +27,7 @@ def blocks(project) -> Blocks:
     hc = calc.hoist
     b.sub("rope")
     if r.rules == "1969":
-        b.text("rules_1969", group=r.group, regime=r.regime, k=r.rope_factor, e=r.block_ratio, kt=r.brake_factor)
+        b.text("rules_1969", group=r.group, regime=s.get(f"crane.regimes.{REGIME_KEYS[r.regime]}"), k=r.rope_factor, e=r.block_ratio, kt=r.brake_factor)
     else:
         b.text("rules_pb", group=r.group, iso=r.iso_class, k=r.rope_factor, e=r.block_ratio, h1=r.drum_ratio,
                kt=r.brake_factor)
