@@ -78,12 +78,17 @@ def _without_user(text: str, example: str) -> str:
     flat = _flat(text)
     strings = sorted(set(_user_strings(example)), key=len, reverse=True)
     for s in strings:                           # whole strings first (a designation with a number)
-        flat = flat.replace(s, " ")
+        if len(s) > 2:                          # not a point's name («A»), which is also a letter of text
+            flat = flat.replace(s, " ")
     for s in strings:
         for word in s.split():                  # names broken over lines: drop their words
             if len(word) > 1 or re.search("[\u0400-\u04FF]", word):
                 for form in {word, word.replace("-", "")}:     # «Ц2-1000» hyphenated at the line's end
                     flat = re.sub(rf"(?<!\w){re.escape(form)}(?!\w)", " ", flat)
+    # pieces of a user's word the title block or a line end cut without a hyphen («рычажно|го»)
+    typed = " ".join(strings)
+    flat = re.sub(r"[\w'’-]*[\u0400-\u04FF][\w'’-]*",
+                  lambda m: " " if len(m.group(0)) > 2 and m.group(0) in typed else m.group(0), flat)
     return flat
 
 
