@@ -31,7 +31,7 @@ def assignment_section(project) -> Section:
         ("k_{\\text{т}}", "k_t", "gauge", t.gauge_m, "м"),
         ("u_{\\text{п}}", "u_p", "ratio", h.polyspast.ratio, ""),
     ]
-    data = [(Markup("$" + symbol_in(s, *_split(qkey), sym) + "$"), getattr(words, key), value,
+    rows = [(Markup("$" + symbol_in(s, *_split(qkey), sym) + "$"), getattr(words, key), value,
              Markup(s.math_word(unit)) if unit else unit)
             for sym, qkey, key, value, unit in data]
     items = [("rope", h.rope.designation), ("hoist_motor", h.motor.designation),
@@ -45,7 +45,7 @@ def assignment_section(project) -> Section:
     classes = (fmt(s.get("crane.assignment_text.classes"), use=cr.use_class, load=cr.load_class or "—")
                if cr.use_class else Markup(""))
     intro = fmt(s.get("crane.assignment_text.intro"), group=cr.group, classes=classes, g=cr.g)
-    ctx = {"crane": cr, "data": data, "items": items, "intro": intro,
+    ctx = {"crane": cr, "data": rows, "items": items, "intro": intro,
            "rules": project.crane.rules}
     return Section(key="assignment", title=s.get("headings.assignment"), template="crane_assignment.tex.j2",
                    context=ctx)
