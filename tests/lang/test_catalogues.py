@@ -256,3 +256,37 @@ def test_the_display_check_sees_a_lower_case_continuation():
     assert _sentence_after_display("en", "\\VAR{eq(r.x)}\n\\BLOCK{endif}\nwhich on the scheme is\n")
     assert not _sentence_after_display("ru", "\\VAR{m.calc(e.h)}\nНа~схеме это плечо\n")
     assert not _sentence_after_display("uk", "\\VAR{m.calc(e.h)}\nде $x$~--- ...\n")
+
+
+@pytest.mark.parametrize("rules", ["1969", "PB-10-382-00"])
+def test_every_crane_quantity_has_a_symbol_in_uk_and_en(rules):
+    """Under both sets of rules, every quantity the crane solver prints has its Ukrainian and English
+    symbol (crane_symbols); in English no Cyrillic is left, in Ukrainian no ы/э/ъ/ё; two different
+    quantities of one mechanism never share a symbol unless the Russian one is shared too."""
+    import re as _re
+
+    from latex_templates.parts.crane_common import symbol_in
+    from reportgen.project import Project
+    from reportgen.taskfile import parse_task
+    text = (ROOT / "examples" / "crane-hoist" / "task.toml").read_text(encoding="utf-8")
+    text = _re.sub(r'(?m)^rules = "[^"]*"', f'rules = "{rules}"', text)
+    crane = Project(parse_task(tomllib.loads(text))).crane
+    assert crane.rules.rules == rules
+    for lang in ("uk", "en"):
+        s = Strings(lang)
+        for mech in ("hoist", "trolley"):
+            calc = getattr(crane, mech)
+            quantities = {**{k: v.latex for k, v in calc.vars.items()},
+                          **{k: r.symbol for k, r in calc.records.items()}}
+            shown: dict[str, tuple[str, str]] = {}
+            for key, ru in quantities.items():
+                sym = symbol_in(s, mech, key, ru)
+                localized = s.localize_latex("$" + sym + "$")
+                if lang == "en":
+                    assert not _re.search("[\u0400-\u04FF]", localized), (mech, key, localized)
+                else:
+                    assert not _re.search("[ыэъёЫЭЪЁ]", localized), (mech, key, localized)
+                if sym in shown and shown[sym][1] != ru:
+                    pytest.fail(f"{lang} {mech}: {key} and {shown[sym][0]} are both {sym}")
+                shown[sym] = (key, ru)
+    assert symbol_in(Strings("ru"), "hoist", "D_bl", "D_{\\text{бл}}") == "D_{\\text{бл}}"   # Russian as solved
