@@ -6,6 +6,7 @@ from __future__ import annotations
 from markupsafe import Markup
 
 from . import PartContent
+from ..render import escape_latex
 from .crane_common import Blocks, failed_names, fmt, strings_of, summary
 
 NEEDS = ("crane",)
@@ -163,7 +164,10 @@ def couplings(b: Blocks, items) -> None:
     b.text("coupling_intro")
     b.rec("T_c")
     for i, c in enumerate(items, start=1):
-        b.text("coupling_item", designation=c.designation, t=c.rated_torque, j=c.inertia)
+        kind = str(b.s.get("crane.text.coupling_kind"))
+        # «Муфта зубчатая …» typed by the student is not preceded by a second «Муфта»
+        lead = Markup("") if c.designation.lower().startswith(kind.lower()) else Markup(escape_latex(kind) + " ")
+        b.text("coupling_item", kind=lead, designation=c.designation, t=c.rated_torque, j=c.inertia)
         b.check(f"coupling{i}")
 
 
