@@ -20,6 +20,7 @@ import numpy as np
 from drawings.layout import LAYOUT_LIMIT, Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from reportgen.dynamics.graphical import KL_DECIMALS
 from reportgen.errors import BuildError
 from reportgen.scenes import dynamics as ds
 from reportgen.scenes.scene import Polyline, Scene, Segment
@@ -263,7 +264,7 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Sce
     v.circle_mm((0.0, L_mm), 0.8, "contour")
     v.text((-2.0, K_mm + 1.0), "K", 5.0, "bottom-right")
     v.text((-2.0, L_mm - 1.0), "L", 5.0, "top-right")
-    kl = v.dimension((0.0, L_mm), (0.0, K_mm), offset_mm=LEFT_MM + 2.0, decimals=1)
+    kl = v.dimension((0.0, L_mm), (0.0, K_mm), offset_mm=LEFT_MM + 2.0, decimals=KL_DECIMALS)
     return v, kl
 
 
