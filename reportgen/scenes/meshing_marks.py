@@ -204,7 +204,10 @@ class _Placer:
         self.room = room
         self.placed: list[Polygon] = []
 
-    def free(self, poly: Polygon, leader: LineString | None = None) -> bool:
+    def free(self, poly: Polygon, leader: LineString | None = None, whole: LineString | None = None) -> bool:
+        """``poly`` (a text's box) and ``leader`` clear of the teeth, the room's edge and what is
+        placed; ``whole``: the leader with the part near its own point that may cross the teeth
+        (``leader`` is the rest), which must still cross no other text or leader."""
         if not self.room.contains(poly):
             return False
         if self.teeth.intersects(poly):
@@ -212,8 +215,9 @@ class _Placer:
         if leader is not None and leader.length > 0 and self.teeth.intersects(leader):
             return False
         gap = TEXT_GAP / self.k
+        line = whole if whole is not None else leader
         return not any(poly.intersects(p.buffer(gap)) for p in self.placed) and not (
-            leader is not None and any(leader.intersects(p) for p in self.placed))
+            line is not None and any(line.intersects(p) for p in self.placed))
 
     def crossings(self, poly) -> int:
         if self.tree is None:
@@ -258,7 +262,7 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
         dirs = [prefer_deg + s_ * i * 22.5 for i in range(9) for s_ in ((1, -1) if i else (1,))][:16]
         return _on_leader(placer, name, text, tex, [p], dirs, height,
                           lengths=(8.0, 12.0, 17.0, 23.0, 30.0, 40.0),
-                          own=SPoint(p).buffer(own_radius) if own_radius else None)
+                          own=SPoint(p).buffer(own_radius) if own_radius else None, strict=True)
     placer.take(best[1])
     return Mark(name, text, tex, (float(p[0]), float(p[1])), (), _bounds(best[1]),
                 height)
@@ -266,11 +270,13 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
 
 def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Point],
                directions: list[float], height: float, word: bool = False,
-               lengths: tuple[float, ...] = (7.0, 11.0, 16.0, 22.0, 30.0), own=None) -> Mark:
+               lengths: tuple[float, ...] = (7.0, 11.0, 16.0, 22.0, 30.0), own=None, strict: bool = False) -> Mark:
     """A designation on a leader: from one of ``anchors`` (in order of preference) a slanted line of
     one of ``lengths`` (sheet mm) in one of ``directions`` (degrees), then a shelf under the text.
     The first free candidate with the fewest crossed lines wins (ties: the earlier). ``own``: the
-    region (a tooth, the teeth round the pole) the leader may cross to reach its anchor."""
+    region (a tooth, the teeth round the pole) the leader may cross to reach its anchor; ``strict``:
+    there too it crosses no other text or leader (a point's letter: two letters' leaders crossing
+    near their points swap them for a reader)."""
     k = placer.k
     w, h = (v / k for v in text_size(text, height))
     best = None
@@ -286,11 +292,12 @@ def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Po
                 leader = LineString([anchor, elbow, end])
                 # the leader's first mm touches its own line: test the rest
                 probe = LineString([(anchor[0] + ux * 1.2 / k, anchor[1] + uy * 1.2 / k), elbow, end])
+                whole = probe if strict else None
                 if own is not None:
                     probe = probe.difference(own)
                     if probe.is_empty:
                         probe = None
-                if not placer.free(poly, probe):
+                if not placer.free(poly, probe, whole):
                     continue
                 score = placer.crossings(poly) * 3 + (placer.crossings(probe) if probe is not None else 0)
                 if best is None or score < best[0]:
