@@ -80,6 +80,8 @@ def draw_marks(view, marks) -> None:
 #: The names a, P, b of the sliding diagram keep this far from each other and from the λ axis's
 #: name (sheet mm, between their boxes padded by 0,5 mm: 2 mm between the letters).
 NAME_CLEAR_MM = 1.0
+#: The ρ axis goes this far beyond N2 (or b beyond it): its name «ρ, мм» clear of N2's tick (sheet mm).
+AXIS_BEYOND_N2_MM = 28.0
 #: Sheet mm per unit of λ, the largest that fits the view first.
 SLIDING_UNITS = (40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0)
 
@@ -104,7 +106,7 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     oy = rect.y0 + 14 + (-lam_low) * per_unit
     view = sheet.place_view("sliding", rect, Transform(1.0, (0.0, 0.0), (ox, oy)))
     yt = [(v * per_unit, format_number(v, 0)) for v in range(int(lam_low), 2)]
-    view.axes((0.0, 0.0), x_len + 12, per_unit * 1.0 + 10, y_down_mm=-lam_low * per_unit,
+    view.axes((0.0, 0.0), max(x_len, x_hi * k) + AXIS_BEYOND_N2_MM, per_unit * 1.0 + 10, y_down_mm=-lam_low * per_unit,
               x_label=tr("sheets.me04"), y_label="λ", y_ticks=yt)
     rho, l1, l2 = sl.curve(801, clip=0.002)
     for lam in (l1, l2):
