@@ -23,6 +23,7 @@ from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.dynamics.graphical import KL_DECIMALS
 from reportgen.errors import BuildError
+from reportgen.tolerances import ABS_ZERO
 from reportgen.scenes import dynamics as ds
 from reportgen.scenes.scene import Polyline, Scene, Segment
 from .render import draw_entities
@@ -291,16 +292,16 @@ def number_labels(v: View, numbered, nodes) -> None:
     ann = v.annotations
     for p, name in numbered:
         P = v.transform(p)
-        rivals = [Point(q) for q in sheet_nodes if math.dist(q, P) > 1e-9]
-        away = math.degrees(math.atan2(P[1] - mid[1], P[0] - mid[0])) if math.dist(P, mid) > 1e-9 else 45.0
+        rivals = [Point(q) for q in sheet_nodes if math.dist(q, P) > ABS_ZERO]
+        away = math.degrees(math.atan2(P[1] - mid[1], P[0] - mid[0])) if math.dist(P, mid) > ABS_ZERO else 45.0
         order = [away + sgn * i * 22.5 for i in range(9) for sgn in ((1, -1) if i else (1,))][:16]
         w = style.text_width(name, NUMBER_H)
         placed = False
         for gap in NUMBER_GAPS:
             for ang in order:
                 ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
-                t = min((w / 2 + 0.5) / abs(ux) if abs(ux) > 1e-9 else math.inf,
-                        (NUMBER_H / 2 + 0.5) / abs(uy) if abs(uy) > 1e-9 else math.inf)
+                t = min((w / 2 + 0.5) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
+                        (NUMBER_H / 2 + 0.5) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
                 c = (P[0] + ux * (t + gap), P[1] + uy * (t + gap))
                 poly = text_box(c, name, NUMBER_H, "center", descend=True)
                 own = poly.distance(Point(P))
@@ -317,8 +318,8 @@ def number_labels(v: View, numbered, nodes) -> None:
         for rank, (L, ang) in enumerate((L, a) for L in NUMBER_LEADERS for a in order):
             ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
             end = (P[0] + ux * L, P[1] + uy * L)
-            t = min((w / 2 + 0.5) / abs(ux) if abs(ux) > 1e-9 else math.inf,
-                    (NUMBER_H / 2 + 0.5) / abs(uy) if abs(uy) > 1e-9 else math.inf)
+            t = min((w / 2 + 0.5) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
+                    (NUMBER_H / 2 + 0.5) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
             c = (end[0] + ux * (t + 0.5), end[1] + uy * (t + 0.5))
             poly = text_box(c, name, NUMBER_H, "center", descend=True)
             leader = LineString([(P[0] + ux * 1.2, P[1] + uy * 1.2), end])

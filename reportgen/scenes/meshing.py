@@ -139,7 +139,10 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     legend = (fx0, fy1 - DETAIL_LEGEND[1] / kn, fx0 + DETAIL_LEGEND[0] / kn, fy1)
     # the dimension aw (the sheet's only) first, right of the line of centres: the rest keeps clear
     aw = place_aw(pair, pic, k, room, zone_k=k)
-    aw_keep = () if aw is None else (tuple(float(v) for v in Polygon(aw.box).bounds),)
+    aw_keep: tuple[tuple[float, float, float, float], ...] = ()
+    if aw is not None:
+        bx0, by0, bx1, by1 = Polygon(aw.box).bounds
+        aw_keep = ((float(bx0), float(by0), float(bx1), float(by1)),)
     point_h, mark_h = max(DETAIL_POINT_H, POINT_H * r), max(DETAIL_MARK_H, MARK_H * r)
     dim_h = max(DETAIL_DIM_H, DIM_H * r)
     detail = place_marks(pair, pic, kn, inner, point_h=point_h, mark_h=mark_h, dim_h=dim_h,
