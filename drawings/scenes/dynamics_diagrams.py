@@ -23,7 +23,7 @@ from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.dynamics.graphical import KL_DECIMALS
 from reportgen.errors import BuildError
-from reportgen.tolerances import ABS_ZERO
+from reportgen.tolerances import ABS_ZERO, MM_EPS
 from reportgen.scenes import dynamics as ds
 from reportgen.scenes.scene import Polyline, Scene, Segment
 from .render import draw_entities
@@ -292,8 +292,8 @@ def number_labels(v: View, numbered, nodes) -> None:
     ann = v.annotations
     for p, name in numbered:
         P = v.transform(p)
-        rivals = [Point(q) for q in sheet_nodes if math.dist(q, P) > ABS_ZERO]
-        away = math.degrees(math.atan2(P[1] - mid[1], P[0] - mid[0])) if math.dist(P, mid) > ABS_ZERO else 45.0
+        rivals = [Point(q) for q in sheet_nodes if math.dist(q, P) > MM_EPS]
+        away = math.degrees(math.atan2(P[1] - mid[1], P[0] - mid[0])) if math.dist(P, mid) > MM_EPS else 45.0
         order = [away + sgn * i * 22.5 for i in range(9) for sgn in ((1, -1) if i else (1,))][:16]
         w = style.text_width(name, NUMBER_H)
         placed = False
