@@ -326,6 +326,7 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
     poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named)
     if poly is not None:
         canvas.layout.add_line(leader[0], p, dxfattribs={"layer": "thin"})
+        canvas.annotations.drawn.append((canvas.name, LineString([leader[0], p])))
         return poly
     fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
     return place_passes(canvas, [(fallback, 0), (fallback, 1)], label, height, inside, optional,

@@ -9,6 +9,7 @@ import math
 import numpy as np
 from shapely.geometry import LineString, MultiLineString, Polygon
 from shapely.geometry import Point as ShapelyPoint
+from shapely.ops import nearest_points
 
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import View
@@ -121,10 +122,59 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
         tip = view.transform(pts[-1])
         prev = view.transform(pts[-3])
         view.arrowhead_mm(tip, (tip[0] - prev[0], tip[1] - prev[1]), 4.0, 1.3, "thin")
-        am = math.degrees(a0 + sweep / 2)
-        mid = view.transform(pts[len(pts) // 2])
-        rich = rl.Rich(text)
-        rl.place_rich(view, rl.around(mid, rich, 3.5, am), rich, 3.5, inside=_inside(view))
+        _place_arc_label(view, [view.transform(q) for q in pts], view.transform(tuple(o)), rl.Rich(text))
+
+
+#: Where along its arc a crank angle's value is tried (fractions of the sweep, the middle first).
+ARC_LABEL_AT = (0.5, 0.42, 0.58, 0.34, 0.66, 0.26, 0.74, 0.18, 0.82, 0.1, 0.9)
+#: Gaps between the arc and its value tried, mm (all along the arc at one gap before the next).
+ARC_LABEL_GAPS_MM = (1.0, 3.0, 6.0)
+#: Lengths of the leader tried, where no spot beside the arc is free of the links' lines (mm), and
+#: how far short of the arc a leader's crossings are counted (it ends on the arc).
+ARC_LEADER_MM, ARC_LEADER_GAP_MM = (8.0, 12.0, 16.0, 20.0, 25.0), 0.6
+
+
+def _place_arc_label(view: View, arc: list[tuple[float, float]], centre: tuple[float, float],
+                     rich: rl.Rich) -> None:
+    """The value of a crank angle (φр.х., φх.х.) beside its arc (sheet points ``arc`` round the
+    crank's axis ``centre``): beside the arc, at the middle first, then towards its ends, outside
+    the arc first, the nearest gap first, where it overlaps no text and crosses no line — the links of the positions
+    fan across a crank circle (issue 12: the shaper's «φх.х.» under its rocker); else farther out
+    on a thin leader ending on the arc that crosses no line and no text; else beside the middle
+    crossing the fewest. The label names its arc (the sheet's label check measures it)."""
+    height, inside, ann = 3.5, _inside(view), view.annotations
+    line = LineString(arc)
+    n = len(arc) - 1
+    spots = []
+    for t in ARC_LABEL_AT:
+        q = arc[round(t * n)]
+        out = math.degrees(math.atan2(q[1] - centre[1], q[0] - centre[0]))
+        spots.append((q, out))
+    beside = [c for gap in ARC_LABEL_GAPS_MM for q, out in spots for c in rl.around(q, rich, height, out, gaps=(gap,))]
+    if rl.place_passes(view, [(beside, 0)], rich, height, inside=inside, optional=True, names=line) is not None:
+        return
+    for length in ARC_LEADER_MM:
+        for q, out in spots:
+            for turn in (0.0, 20.0, -20.0, 40.0, -40.0):
+                a = math.radians(out + turn)
+                end = (q[0] + length * math.cos(a), q[1] + length * math.sin(a))
+                c = rl.around(end, rich, height, out + turn, gaps=(0.0,))[0]
+                poly = rl.rich_box(rich, c, height)
+                if not inside.contains(poly) or ann.hits_box(poly) or ann.crossings(poly):
+                    continue
+                foot = nearest_points(poly.exterior, ShapelyPoint(q))[0]
+                d = foot.distance(ShapelyPoint(q))
+                if d <= ARC_LEADER_GAP_MM:
+                    continue
+                k = ARC_LEADER_GAP_MM / d
+                near_q = (q[0] + (foot.x - q[0]) * k, q[1] + (foot.y - q[1]) * k)
+                leader = LineString([(foot.x, foot.y), near_q])
+                if ann.crossings(leader) or ann.hits_box(leader.buffer(0.2)):
+                    continue
+                rl.draw_rich(view, c, rich, height, names=LineString([(foot.x, foot.y), q]))
+                view.line(view.transform.inverse((foot.x, foot.y)), view.transform.inverse(q), "thin")
+                return
+    rl.place_passes(view, [(beside, 0), (beside, 1)], rich, height, inside=inside, names=line)
 
 
 def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
