@@ -108,7 +108,7 @@ def size(label: Label, height: float) -> tuple[float, float, float]:
     w = sum(_one_width(r, height) for r in items)
     w += style.text_width(SEPARATOR, height) * (len(items) - 1)
     depth = max(0.35 * height if any(r.sub for r in items) else 0.0,
-                descent("".join(r.base for r in items), height))
+                descent("".join(r.base for r in items) + (SEPARATOR if len(items) > 1 else ""), height))
     rise = max(0.0, 0.45 * height + small - height) if any(r.sup for r in items) else 0.0
     return w, depth, rise
 

@@ -143,6 +143,9 @@ SMALL_LETTERS = 4
 #: A leader stops this short of its point (mm), where the plan's vectors meet: it must cross none
 #: of them on its way.
 LEADER_GAP_MM = 0.8
+#: Where no leader crossing no vector reaches a free spot (a point inside a tight triangle of
+#: vectors), the leader may cross this many: a thin line over a vector reads, a letter on it not.
+LEADER_CROSSINGS = 3
 
 
 def letter_clusters(scene: Scene, view: View, letters: set[str] | None = None
@@ -183,7 +186,8 @@ def place_small_letters(view: View, scene: Scene, helper: set[str], height: floa
     (:func:`letter_clusters`, in pieces of ``SMALL_LETTERS``) labelled beside it (within
     ``SMALL_NEAR_MM``, nearer to it than to the other labelled points) where it overlaps no text,
     crosses no line and stays in the cell; else farther (up to ``SMALL_FAR_MM``) on a thin leader
-    from the point that crosses no line and no text either; else beside it with the fewest
+    from the point that crosses no line (else no more than ``LEADER_CROSSINGS``) and no text;
+    else beside it with the fewest
     conflicts (never left out). Returns how many labels found no clean place (0: every letter
     legible; tests/sheet1 checks the drawn sheet)."""
     clusters = letter_clusters(scene, view, letters)
@@ -198,6 +202,12 @@ def place_small_letters(view: View, scene: Scene, helper: set[str], height: floa
     return unclean
 
 
+def _clean(view: View, poly: Polygon, inside: Polygon) -> bool:
+    """Is a label's box ``poly`` within ``inside``, over no text and crossed by no line?"""
+    ann = view.annotations
+    return inside.contains(poly) and not ann.hits_box(poly) and not ann.crossings(poly)
+
+
 def _small_label(view: View, p: tuple[float, float], label: rl.Label, height: float, inside: Polygon,
                  others: list[tuple[float, float]]) -> bool:
     """One small plan's label at sheet point ``p`` (see :func:`place_small_letters`); False where
@@ -205,27 +215,30 @@ def _small_label(view: View, p: tuple[float, float], label: rl.Label, height: fl
     ann = view.annotations
     near = rl.own_point(rl.around(p, label, height, 45.0, gaps=(0.6, 1.2, 2.0)), label, height, p, others,
                         SMALL_NEAR_MM)
-    if near and rl.place_passes(view, [(near, 0)], label, height, inside=inside, optional=True,
-                                names=Point(p)) is not None:
-        return True
-    for c in rl.around(p, label, height, 45.0, gaps=(4.0, 6.0, 9.0, 12.0, 15.0, SMALL_FAR_MM)):
-        poly = rl.rich_box(label, c, height)
-        if not inside.contains(poly) or ann.hits_box(poly) or ann.crossings(poly):
-            continue
-        q = nearest_points(poly.exterior, Point(p))[0]
-        d = q.distance(Point(p))
-        if d <= LEADER_GAP_MM + MM_ROUNDOFF:
-            continue
-        t = LEADER_GAP_MM / d
-        foot = (p[0] + (q.x - p[0]) * t, p[1] + (q.y - p[1]) * t)
-        leader = LineString([(q.x, q.y), foot])
-        if ann.crossings(leader) or ann.hits_box(leader.buffer(0.2)):
-            continue
-        if any(Point(o).distance(leader) < 1.0 for o in others if math.dist(o, p) > MM_ROUNDOFF):
-            continue                       # a leader past another point would name it
-        rl.draw_rich(view, c, label, height, names=LineString([(q.x, q.y), p]))
-        view.line(view.transform.inverse((q.x, q.y)), view.transform.inverse(p), "thin")
-        return True
+    for c in near:
+        if _clean(view, rl.rich_box(label, c, height), inside):
+            rl.draw_rich(view, c, label, height, names=Point(p))
+            return True
+    far = rl.around(p, label, height, 45.0, gaps=(4.0, 6.0, 9.0, 12.0, 15.0, SMALL_FAR_MM))
+    for crossed in (0, LEADER_CROSSINGS):        # a leader over no vector, else over a few of them
+        for c in far:
+            poly = rl.rich_box(label, c, height)
+            if not _clean(view, poly, inside):
+                continue
+            q = nearest_points(rl.text_extent(label, c, height), Point(p))[0]     # from the letters
+            d = q.distance(Point(p))
+            if d <= LEADER_GAP_MM + MM_ROUNDOFF:
+                continue
+            t = LEADER_GAP_MM / d
+            foot = (p[0] + (q.x - p[0]) * t, p[1] + (q.y - p[1]) * t)
+            leader = LineString([(q.x, q.y), foot])
+            if ann.crossings(leader) > crossed or ann.hits_box(leader.buffer(0.2)):
+                continue
+            if any(Point(o).distance(leader) < 1.0 for o in others if math.dist(o, p) > MM_ROUNDOFF):
+                continue                       # a leader past another point would name it
+            rl.draw_rich(view, c, label, height, names=LineString([(q.x, q.y), p]))
+            view.line(view.transform.inverse((q.x, q.y)), view.transform.inverse(p), "thin")
+            return True
     fallback = near or rl.around(p, label, height, 45.0, gaps=(0.6, 1.2, 2.0))
     rl.place_passes(view, [(fallback, 0), (fallback, 1)], label, height, inside=inside, names=Point(p))
     return False

@@ -138,7 +138,7 @@ def small_plan_findings(project, sheet, doc) -> list[str]:
                     found.append(f"plan {j}: «{r.text}» {d:.1f} mm from its point, no leader")
             else:
                 start, end = r.anchor.coords[0], r.anchor.coords[-1]
-                if shape.distance(Point(start)) > 1e-3 or not any(
+                if shape.distance(Point(start)) > 0.5 or not any(
                         l.distance(Point(start)) < 1e-3 and l.distance(Point(end)) < 1e-3 for l in lines):
                     found.append(f"plan {j}: «{r.text}»'s leader not drawn")
     return found
