@@ -328,31 +328,96 @@ def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i
 
 def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: BaseGeometry | None = None) -> None:
     """The numbers of the moving links on the analysed position (the bold one with letters), in
-    small circles beside the links, where they overlap no text and cross no line (else crossing
-    as few lines as possible; never over a text)."""
+    small circles beside the links, off every position's links, where they overlap no text and
+    cross no line (else crossing as few lines as possible; never over a text); where no spot beside
+    a link is off the links (a crank among its twelve positions), on a thin leader to the link, as
+    ГОСТ 2.109 numbers items; never left out."""
     lk = project.linkage
     r, h = LINK_NUMBER_MM
     inside = _inside(view)
     ann = view.annotations
+
+    def square(c: tuple[float, float]) -> Polygon:
+        return Polygon([(c[0] - r - 0.3, c[1] - r - 0.3), (c[0] + r + 0.3, c[1] - r - 0.3),
+                        (c[0] + r + 0.3, c[1] + r + 0.3), (c[0] - r - 0.3, c[1] + r + 0.3)])
+
+    def off_links(sq: Polygon) -> bool:
+        return links is None or not links.intersects(sq)
     for k in lk.moving:
-        best: tuple[int, tuple[float, float]] | None = None
-        for c in _link_number_spots(view, project, data, k, data.analysed):
-            square = Polygon([(c[0] - r - 0.3, c[1] - r - 0.3), (c[0] + r + 0.3, c[1] - r - 0.3),
-                              (c[0] + r + 0.3, c[1] + r + 0.3), (c[0] - r - 0.3, c[1] + r + 0.3)])
-            if not inside.contains(square) or ann.hits_box(square) or (links is not None and links.intersects(square)):
+        best: tuple[tuple[int, int], tuple[float, float], tuple[float, float] | None] | None = None
+        spots = [(c, None) for c in _link_number_spots(view, project, data, k, data.analysed)]
+        spots += [(c, foot) for c, foot in _link_number_leader_spots(view, project, data, k, data.analysed)]
+        for c, foot in spots:
+            sq = square(c)
+            if not inside.contains(sq) or ann.hits_box(sq):
                 continue
-            crossings = ann.crossings(square)
-            if best is None or crossings < best[0]:
-                best = (crossings, c)
-            if crossings == 0:
+            if foot is not None:
+                leader = LineString([_circle_edge(c, foot, r), foot])
+                if not off_links(sq) or ann.hits_box(leader.buffer(0.2)):
+                    continue
+                score = (0, ann.crossings(sq) + ann.crossings(leader) - 1)    # the leader meets its link
+            else:
+                score = (0 if off_links(sq) else 2, ann.crossings(sq))
+            if best is None or score < best[0]:
+                best = (score, c, foot)
+            if score == (0, 0) or (best[0][0] == 0 and foot is not None):
                 break
         if best is None:
             continue
-        c = best[1]
+        _, c, foot = best
+        named = _link_lines(view, project, data, k)
+        if foot is not None:
+            edge = _circle_edge(c, foot, r)
+            view.line(view.transform.inverse(edge), view.transform.inverse(foot), "thin")
+            named = shapely.union_all([named, LineString([edge, foot])])
         view.circle_mm(view.transform.inverse(c), r, "thin")
-        view.text_mm(c, str(k), h, "center", register=False, names=_link_lines(view, project, data, k))
+        view.text_mm(c, str(k), h, "center", register=False, names=named)
         ann.add_box(f"{view.name}: «{k}»", Polygon([(c[0] - r, c[1] - r), (c[0] + r, c[1] - r),
                                                    (c[0] + r, c[1] + r), (c[0] - r, c[1] + r)]))
+
+
+def _circle_edge(c: tuple[float, float], towards: tuple[float, float], r: float) -> tuple[float, float]:
+    d = math.dist(c, towards) or 1.0
+    return (c[0] + (towards[0] - c[0]) * r / d, c[1] + (towards[1] - c[1]) * r / d)
+
+
+#: Distances of a link number on a leader from its link, mm (where none beside it is off the links).
+LINK_LEADER_MM = (9.0, 12.0, 16.0, 20.0)
+
+
+def _link_number_leader_spots(view: View, project: Project, data: SchemeData, k: int, i: int
+                              ) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """(centre, foot on the link) of link ``k``'s number on a leader: across its segments at
+    ``LINK_LEADER_MM``, from their middles towards the ends; round a slider's block."""
+    lk = project.linkage
+    pts = {n: view.transform(tuple(p)) for n, p in _pts(data.kin, i).items()}
+    names = lk.bodies[k].points
+    out: list[tuple[tuple[float, float], tuple[float, float]]] = []
+    if len(names) >= 2:
+        for off in LINK_LEADER_MM:
+            for t in (0.5, 0.62, 0.38, 0.72, 0.28):
+                for a, b in _link_outline(names):
+                    pa, pb = np.asarray(pts[a]), np.asarray(pts[b])
+                    d = pb - pa
+                    n = float(np.hypot(*d))
+                    if n < 1.0:
+                        continue
+                    nrm = np.array([-d[1], d[0]]) / n
+                    foot = pa + d * t
+                    for ang in (0.0, 30.0, -30.0):
+                        rot = math.radians(ang)
+                        v = np.array([nrm[0] * math.cos(rot) - nrm[1] * math.sin(rot),
+                                      nrm[0] * math.sin(rot) + nrm[1] * math.cos(rot)])
+                        for side in (1.0, -1.0):
+                            q = foot + side * v * off
+                            out.append(((float(q[0]), float(q[1])), (float(foot[0]), float(foot[1]))))
+        return out
+    p = np.asarray(pts[names[0]])
+    for off in LINK_LEADER_MM:
+        for ang in range(0, 360, 30):
+            q = p + off * np.array([math.cos(math.radians(ang)), math.sin(math.radians(ang))])
+            out.append(((float(q[0]), float(q[1])), (float(p[0]), float(p[1]))))
+    return out
 
 
 def _link_lines(view: View, project: Project, data: SchemeData, k: int):

@@ -95,9 +95,19 @@ def letters_of(text: str) -> set[str]:
     return {re.sub(r"[_^]", "", part.strip()) for part in text.split(",") if part.strip()}
 
 
+def course_letters(project) -> set[str]:
+    """The letters a teacher reads on a small velocity plan, from the mechanism itself: the pole
+    p and the images of the points that move (a, b, c, …; a3 on a slotted link) — not the fixed
+    points (they are the pole) nor the centres of mass s_k."""
+    plan = project.plans[0]
+    fixed = {g.lower() for g in project.linkage.ground}
+    centres = {f"s{k}" for k in project.kinematics.coms}
+    return {"p"} | {k for k in plan.points if k != "p" and k not in fixed | centres}
+
+
 def small_plan_findings(project, sheet, doc) -> list[str]:
-    """What a teacher would mark on the small velocity plans: a letter of the course's
-    (:func:`drawings.sheets.kinematics.small_plan_letters`) missing from a plan, a letter lower
+    """What a teacher would mark on the small velocity plans: a text crossed by a line, a letter of
+    the course's (:func:`course_letters`) missing from a plan, a letter lower
     than ГОСТ 2.304's 3,5 mm, a letter crossed by a line, a letter farther from its point than
     ``SMALL_NEAR_MM`` without a leader drawn to it, a label of a point in another plan's cell."""
     from drawings.scenes import kinematics_plans as kp
@@ -107,8 +117,14 @@ def small_plan_findings(project, sheet, doc) -> list[str]:
     heights = {str(e.dxf.handle): float(e.dxf.height) for e in doc.modelspace().query("TEXT")}
     lines = dxf_lines(doc)
     tree = shapely.STRtree(lines)
-    want = sheet1.small_plan_letters(project)
+    want = course_letters(project)
     found: list[str] = []
+    holder = sheet.views["plans_all"].rect.polygon()
+    for t in texts.values():              # any text of the small plans (records or not) on a line
+        if holder.contains(t.box.centroid):
+            core = t.box.buffer(-TOUCH_MM, join_style=2)
+            if len(tree.query(core, predicate="intersects")):
+                found.append(f"small plans: «{t.text}» crossed by a line")
     for j, plan in enumerate(sheet1.small_plans(project, 20.0)):
         view = f"plans_all/{j}"
         records = [r for r in sheet.annotations.labels if r.view == view]
@@ -116,7 +132,7 @@ def small_plan_findings(project, sheet, doc) -> list[str]:
         expected = {k for k in plan.points if k in want}
         for k in sorted(expected - shown):
             found.append(f"plan {j}: letter «{k}» not drawn")
-        region = sheet.annotations.regions.get(view)
+        region = getattr(sheet.annotations, "regions", {}).get(view)
         for r in records:
             boxes = [texts[h].box for h in r.handles if h in texts]
             if not boxes:
