@@ -345,7 +345,8 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
         return links is None or not links.intersects(sq)
     for k in lk.moving:
         best: tuple[tuple[int, int], tuple[float, float], tuple[float, float] | None] | None = None
-        spots = [(c, None) for c in _link_number_spots(view, project, data, k, data.analysed)]
+        spots: list[tuple[tuple[float, float], tuple[float, float] | None]] = [
+            (c, None) for c in _link_number_spots(view, project, data, k, data.analysed)]
         spots += [(c, foot) for c, foot in _link_number_leader_spots(view, project, data, k, data.analysed)]
         for c, foot in spots:
             sq = square(c)

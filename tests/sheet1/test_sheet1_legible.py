@@ -13,7 +13,6 @@ example has (tests/sheet1/legibility.py reads the sheet back from its DXF):
 from __future__ import annotations
 
 import pytest
-from shapely.geometry import LineString, Point
 
 from drawings.layout import Rect
 from drawings.primitives import Transform
@@ -54,15 +53,12 @@ def test_sheet1_views_keep_their_drawing_to_themselves(case, folder):
     assert len(cells) == len(sheet.annotations.regions) - len(sheet.views), cells
 
 
-def _every_sheet():
-    out = []
-    for case in ("press", "shaper", "conveyor", "crank-slider", "class3", "press-en", "shaper-uk",
-                 "control-work", "crane-hoist"):
-        out.append(case)
-    return out
+#: Every example (each of its sheets).
+EVERY_EXAMPLE = ("press", "shaper", "conveyor", "crank-slider", "class3", "press-en", "shaper-uk",
+                 "control-work", "crane-hoist")
 
 
-@pytest.mark.parametrize("case", _every_sheet())
+@pytest.mark.parametrize("case", EVERY_EXAMPLE)
 def test_no_two_views_drawings_meet_on_any_sheet(case, tmp_path):
     project = project_of(case, tmp_path)
     todo = available_sheets(project)
