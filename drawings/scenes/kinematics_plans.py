@@ -77,8 +77,8 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
               letter_height: float = 5.0, small: bool = False, scene: Scene | None = None,
               letters: set[str] | None = None) -> list[Drawn]:
     """The plan's scene (:func:`reportgen.scenes.plans.plan_scene`) in ``view`` (model = plan mm);
-    a ``small`` plan carries only the plan letters in ``letters`` (all if None). Returns the arrows
-    drawn."""
+    a ``small`` plan carries only the plan letters in ``letters`` (all if None) and the vectors
+    ending at them. Returns the arrows drawn."""
     scene = scene if scene is not None else plan_scene(plan, image_keys)
     helper = helpers(plan, image_keys)
     symbol, unit, _ = UNITS[plan.kind]
@@ -92,6 +92,9 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         view.title(title)
     head = 3.5 if small else 5.0
     arrows = [e for e in scene.entities if isinstance(e, Arrow)]
+    if small and letters is not None:         # no vector ends at a point left unlettered (s_k)
+        ends = [plan.points[k] for k in plan.points if k in letters]
+        arrows = [e for e in arrows if any(math.dist(e.b, q) < SAME_MM for q in ends)]
     render.draw_entities(view, arrows, head_mm=head)
     drawn = [Drawn(e.id, e.a, e.b) for e in arrows]
     # letters at the points
