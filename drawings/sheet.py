@@ -15,6 +15,7 @@ import os
 from dataclasses import dataclass, replace
 from typing import Any, Sequence
 
+import shapely
 from ezdxf.document import Drawing
 from shapely.geometry import Polygon, box
 
@@ -325,7 +326,6 @@ class Sheet:
                 items.append((name.split(":", 1)[0], shrunk))
         if len(items) < 2:
             return []
-        import shapely
         geoms = [g for _, g in items]
         left, right = shapely.STRtree(geoms).query(geoms, predicate="intersects")
         seen: set[tuple[str, str]] = set()
@@ -351,8 +351,9 @@ class Sheet:
                 continue
             far = geom.difference(region.buffer(tol_mm, join_style=2))
             if not far.is_empty:
-                found.append(f"view {owner}: {what} {far.hausdorff_distance(region) if far.length or far.area else 0.0:.1f} mm "
-                             f"outside at {tuple(round(c, 1) for c in far.representative_point().coords[0])}")
+                out = max(shapely.points(shapely.get_coordinates(far)), key=region.distance)
+                found.append(f"view {owner}: {what} {region.distance(out):.1f} mm outside at "
+                             f"({out.x:.1f}, {out.y:.1f})")
         return found
 
     # -- output -------------------------------------------------------------------------------
