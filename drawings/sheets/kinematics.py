@@ -119,9 +119,11 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
             small_cache[crank_mm] = small_plans(project, crank_mm)
         return small_cache[crank_mm]
     plan_views: list[tuple[str, Plan, str]] = []
+    a3 = layout.sheet == "A3"        # the control work's one position: the scheme's title names it
     for j, (vplan, aplan) in pairs.items():
         names = plan_view_names(j, first=(j == data.analysed))
-        plan_views += [(names[0], vplan, tr("sheets.sk103", i=j)), (names[1], aplan, tr("sheets.sk104", i=j))]
+        plan_views += [(names[0], vplan, tr("control.sheet.vplan_a3") if a3 else tr("sheets.sk103", i=j)),
+                       (names[1], aplan, tr("control.sheet.aplan_a3") if a3 else tr("sheets.sk104", i=j))]
     # the table's rows name the small plans too, whose μv the arrangement chooses: the table's view
     # is the core's (for its most rows) and filled once the small plans are known
     candidates = [scale_rows(1.0 / k, scale_text, pairs, d, small_of(c)) for c in SMALL_PLAN_MM]

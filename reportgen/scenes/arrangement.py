@@ -21,8 +21,8 @@ from shapely.geometry.base import BaseGeometry
 
 from ..errors import BuildError
 from ..tolerances import MM_EPS
-from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_MM,
-                    PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM,
+from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
+                    PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM,
                     SCHEME_PADS_MM, SHEET_MM, TABLE_ROW_MM, TABLE_TITLE_MM, VIEW_GAP, control_sheet,
                     free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
@@ -203,12 +203,13 @@ def scheme_view_size(b: tuple[float, float, float, float], k: float, min_width: 
     return max((b[2] - b[0]) * k + left + right, min_width), (b[3] - b[1]) * k + bottom + top
 
 
-def plan_view_size(plan, title_mm: float) -> tuple[float, float]:
+def plan_view_size(plan, title_mm: float, min_width: float = PLAN_MIN_WIDTH_MM) -> tuple[float, float]:
     """A plan's view (:class:`reportgen.plans.Plan`, its points in mm): the plan with
-    ``PLAN_PAD_MM`` round it and its title and caption strips, at least as wide as its title's room."""
+    ``PLAN_PAD_MM`` round it and its title and caption strips, at least as wide as its title's room
+    and ``min_width``."""
     xs = [float(p[0]) for p in plan.points.values()]
     ys = [float(p[1]) for p in plan.points.values()]
-    w = max(max(xs) - min(xs) + 2 * PLAN_PAD_MM, title_mm, PLAN_MIN_WIDTH_MM)
+    w = max(max(xs) - min(xs) + 2 * PLAN_PAD_MM, title_mm, min_width)
     return w, max(ys) - min(ys) + 2 * PLAN_PAD_MM + 2 * PLAN_STRIP_MM
 
 
@@ -283,9 +284,11 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
             rects[req.name] = rect
     except BuildError:
         return None
-    title = lettering_room(PLAN_TITLE_MM, lang)
+    a3 = fmt == "A3"
+    title = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)
+    least = PLAN_MIN_WIDTH_A3_MM if a3 else PLAN_MIN_WIDTH_MM
     names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
-    sizes = [plan_view_size(plan, title) for vp, ap in pairs.values() for plan in (vp, ap)]
+    sizes = [plan_view_size(plan, title, least) for vp, ap in pairs.values() for plan in (vp, ap)]
     found = arrange(region, placed, sizes, names)
     if found is None:
         return None

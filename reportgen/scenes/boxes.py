@@ -150,10 +150,13 @@ DEFAULT = SceneBoxes()
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
 #: The control work's scheme view is at least as wide as its title (5 mm letters): «Механизм в
 #: заданном положении, φ1 = …°» on A1, «Механизм, φ1 = …°» on A3.
-SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 65.0}
+SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 85.0}
 #: A plan's view: room for letters and names round its points, its caption and title strips, its
 #: least width, mm.
 PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_MIN_WIDTH_MM = 16.0, 12.0, 120.0
+#: The control work on A3: a plan's view is at least this wide (its title is the short «План
+#: скоростей»: the one position is named by the scheme's title), mm.
+PLAN_MIN_WIDTH_A3_MM = 100.0
 #: Zhukovsky's lever's panel: room round the turned plan, the strips of its title, subtitle and
 #: scale captions, mm (drawings.scenes.kinetostatics_views.lever_panel draws in them).
 LEVER_PAD_MM, LEVER_STRIPS_MM = 12.0, 10.0 + 6.0 + 16.0
@@ -168,9 +171,11 @@ GROW_PLANS_MM = 40.0
 #: Room the lettering of these views needs, per language of the sheet (the words are the
 #: catalogue's, which the core does not read; the sheet font's widths were measured with
 #: drawings.style.text_width and tests/sheet1/test_arrangement_core.py checks every language's
-#: lines fit): a plan view's title at 5 mm + 10 mm («План ускорений, положение 11»), the lever's
+#: lines fit): a plan view's title at 5 mm + 10 mm («План ускорений, положение 11»; on the control
+#: work's A3 sheet «План ускорений», the control work's catalogue is Russian), the lever's
 #: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns).
 PLAN_TITLE_MM = {"ru": 138.0, "uk": 142.0, "en": 160.0}
+PLAN_TITLE_A3_MM = {"ru": 75.0}
 LEVER_TITLE_MM = {"ru": 116.0, "uk": 119.0, "en": 106.0}
 SCALES_TABLE_MM = {"ru": 190.0, "uk": 186.0, "en": 218.0}
 
