@@ -94,7 +94,7 @@ class SceneBoxes:
     #: fell back to a smaller scale where its views did not fit: t22-v1 1:15 on A1, the example
     #: 1:40 on A3, while the note printed 1:10).
     scheme_control: tuple[float, float] = (200.0, 200.0)
-    scheme_control_a3: tuple[float, float] = (40.0, 40.0)
+    scheme_control_a3: tuple[float, float] = (90.0, 90.0)
     #: The control work on A3: no point of the velocity or acceleration plan farther than this from
     #: the pole, mm (the smallest round μ of the plans' series that does it); on A1 the plans keep
     #: the scales of :func:`reportgen.plans.build_plans`, the course project's.
