@@ -22,7 +22,8 @@ from shapely.geometry.base import BaseGeometry
 from ..errors import BuildError
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
-                    PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM,
+                    PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
+                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM,
                     SCHEME_PADS_MM, SHEET_MM, TABLE_ROW_MM, TABLE_TITLE_MM, VIEW_GAP, control_sheet,
                     free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
@@ -285,10 +286,11 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     except BuildError:
         return None
     a3 = fmt == "A3"
-    title = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)
+    titles = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)
     least = PLAN_MIN_WIDTH_A3_MM if a3 else PLAN_MIN_WIDTH_MM
     names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
-    sizes = [plan_view_size(plan, title, least) for vp, ap in pairs.values() for plan in (vp, ap)]
+    sizes = [plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
+             for j, pair in pairs.items() for plan, title in zip(pair, titles)]
     found = arrange(region, placed, sizes, names)
     if found is None:
         return None

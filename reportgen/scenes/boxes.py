@@ -171,15 +171,18 @@ GROW_PLANS_MM = 40.0
 #: Room the lettering of these views needs, per language of the sheet (the words are the
 #: catalogue's, which the core does not read; the sheet font's widths were measured with
 #: drawings.style.text_width and tests/sheet1/test_arrangement_core.py checks every language's
-#: lines fit): a plan view's title at 5 mm + 10 mm («План ускорений, положение 11»; on the control
-#: work's A3 sheet «План ускорений», the control work's catalogue is Russian), the lever's
+#: lines fit): a plan view's title at 5 mm + 10 mm (velocity, acceleration: «План ускорений,
+#: положение 2»; on the control work's A3 sheet «План ускорений», the control work's catalogue is
+#: Russian), the lever's
 #: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns).
-PLAN_TITLE_MM = {"ru": 138.0, "uk": 142.0, "en": 160.0}
-PLAN_TITLE_A3_MM = {"ru": 75.0}
+PLAN_TITLE_MM = {"ru": (133.0, 133.0), "uk": (138.0, 138.0), "en": (138.0, 156.0)}
+#: … and each further digit of the position's number.
+PLAN_TITLE_DIGIT_MM = 4.6
+PLAN_TITLE_A3_MM = {"ru": (75.0, 75.0)}
 LEVER_TITLE_MM = {"ru": 116.0, "uk": 119.0, "en": 106.0}
 SCALES_TABLE_MM = {"ru": 190.0, "uk": 186.0, "en": 218.0}
 
 
-def lettering_room(table: dict[str, float], language: str) -> float:
+def lettering_room(table, language: str):
     """``table``'s room for ``language`` (the widest of the catalogue's languages for another)."""
     return table.get(language, max(table.values()))
