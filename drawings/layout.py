@@ -1,7 +1,8 @@
 """Placing views in the free field of a sheet, and checking that nothing overlaps.
 
-The packing (:mod:`reportgen.scenes.packing`, re-exported here): :func:`pack` puts rectangles one by one into a region (a shapely polygon: the frame minus the
-title block), each as near to its preferred corner as it fits, without touching the others.
+The packing is the core's (:mod:`reportgen.scenes.packing`, re-exported here): :func:`pack` puts
+rectangles one by one into a region (a shapely polygon: the frame minus the title block), each as
+near to its preferred corner as it fits, without touching the others.
 :func:`find_overlaps` reports pairs of named shapes (view extents, text boxes) that overlap.
 """
 from __future__ import annotations

@@ -88,11 +88,12 @@ class SceneBoxes:
     #: the lever's box on A1 and on A3 (``[control_work] sheet``).
     lever_control: tuple[float, float] = (300.0, 250.0)
     lever_control_a3: tuple[float, float] = (110.0, 80.0)
-    #: The control work's sheet: the drawing of the mechanism at φ (``scheme`` is sheet 1's, whose
-    #: field holds no lever) on A1 and on A3. The plan of positions takes the largest ГОСТ scale
-    #: that draws it within the box, and sheet and note print that one (issue 12; on main the sheet
-    #: fell back to a smaller scale where its views did not fit: t22-v1 1:15 on A1, the example
-    #: 1:40 on A3, while the note printed 1:10).
+    #: The control work's sheet: the largest drawing of the mechanism at φ tried (``scheme`` is sheet
+    #: 1's, whose field holds no lever) on A1 and on A3. The scale the note and the sheet print is the
+    #: largest ГОСТ scale within the box at which the whole sheet's arrangement fits
+    #: (:mod:`reportgen.scenes.arrangement`; issue 12: on main the sheet fell back to a smaller scale
+    #: by itself — table 4 variant 1 on A3 drew 1:50, the note printed 1:40 — and tables 2 and 22
+    #: did not fit A3 at all with the 40 mm box and the course plans' titles).
     scheme_control: tuple[float, float] = (200.0, 200.0)
     scheme_control_a3: tuple[float, float] = (90.0, 90.0)
     #: The control work on A3: no point of the velocity or acceleration plan farther than this from
@@ -101,10 +102,6 @@ class SceneBoxes:
     plan_control_a3_mm: float = 75.0
     #: Sheet 3: the diagrams.
     diagrams: GraphLayout = field(default_factory=GraphLayout)
-    #: The control work's sheet: the largest drawing of the mechanism tried first on A1 and on A3
-    #: is ``scheme_control``/``scheme_control_a3``; the scale the note and the sheet print is the
-    #: largest ГОСТ scale not above it at which the whole sheet's arrangement fits
-    #: (:mod:`reportgen.scenes.arrangement`), and so is sheet 1's.
 
     def lever_for(self, task) -> tuple[float, float]:
         """The box of Zhukovsky's lever on the sheet that draws it for ``task``: sheet 2, or the control
