@@ -4,8 +4,9 @@ sheet draw at it — they never fall back to another scale on their own.
 
 On main before this, sheet 1 tried the scales in turn and drew at the first whose views fitted,
 while the note printed the first of all: a crank-slider with a 0.6 m coupler and three plan
-positions drew 1:2,5 while the note printed 1:2 (tests/control/test_control_scales.py has the control
-work's cases: table 4 variant 1 on A3 drew 1:50 against the note's 1:40, tables 2 and 22 failed).
+positions drew 1:2,5 while the note printed 1:2. tests/control/test_control_scales.py has the control
+work's cases (table 4 variant 1 on A3 drew 1:50 against the note's 1:40, tables 2 and 22 failed on A3);
+the slow test below draws every table's variant 1 (and a sample of others) on A1 and A3.
 """
 from __future__ import annotations
 
@@ -93,12 +94,6 @@ def test_course_sheet_with_three_plan_positions_draws_the_notes_scale(tmp_path):
     assert chosen != first                                # the box alone would say 1:2
     b = bounds(project.scenes.scheme_data, project.linkage)
     assert arrangement.layout_at(project, b, *first) is None
-
-
-@pytest.mark.parametrize("table, sheet", [(4, "A3"), (2, "A3"), (22, "A3"), (22, "A1")])
-def test_control_sheet_draws_the_notes_scale(tmp_path, table, sheet):
-    project = Project(load_task(control_variant(tmp_path, table, 1, sheet)))
-    assert_sheet_prints_the_notes_scale(project, control_sheet.draw(project, 1, 1), tmp_path)
 
 
 def test_the_chosen_scale_is_the_largest_that_fits(tmp_path):
