@@ -236,14 +236,6 @@ def _table_widths(candidates: list[list[tuple[str, str, str]]], width: float | N
     return widths[0], width - widths[0] - widths[2], widths[2]
 
 
-def reserve_scales_table(sheet: Sheet, candidates: list[list[tuple[str, str, str]]]) -> View:
-    """The table's view, big enough for the longest of ``candidates`` (row lists): the small
-    plans' μv, one of its rows, is chosen once the other views are placed."""
-    w = sum(_table_widths(candidates))
-    n = max(len(rows) for rows in candidates)
-    return sheet.add_view("scales", w, TABLE_ROW_MM * (n + 1) + TABLE_TITLE_MM, preferred="bottom-right")
-
-
 def fill_scales_table(view: View, rows: list[tuple[str, str, str]], widths: tuple[float, ...]) -> None:
     """Draw the table «Масштабы» with ``rows`` (columns ``widths``) at the top of its reserved view."""
     w = sum(widths)
@@ -266,12 +258,3 @@ def fill_scales_table(view: View, rows: list[tuple[str, str, str]], widths: tupl
         for wi, text in zip(widths, row):
             view.text((x + 2.0, y), text, 3.5, "middle-left")
             x += wi
-
-
-def add_scales_table(sheet: Sheet, mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]],
-                     d: Diagrams | None, small: list[Plan] | None = None) -> View:
-    """The table «Масштабы» (reserved and filled at once)."""
-    rows = scale_rows(mu_l, scale_text, pairs, d, small)
-    view = reserve_scales_table(sheet, [rows])
-    fill_scales_table(view, rows, _table_widths([rows]))
-    return view
