@@ -235,7 +235,7 @@ def positions_scene(project, data: SchemeData, k: float, ratio: str) -> Scene:
         ents.append(Circle(f"pos{i}:S{kk}", mm(pos), 1.0, "contour"))
         labels.append(Label(f"S_{{{kk}}}", f"pos{i}:S{kk}", mm(pos), "point"))
     tip = lk.drive_tip
-    for j in range(len(data.kin.phi)):
+    for j in range(len(data.kin.phi) if len(data.kin.phi) > 1 else 0):   # one position (a control work): no number
         labels.append(Label(str(j), f"pos{j}:{tip}", mm(data.kin.points[tip].pos[j]), "number"))
     if data.extremes is not None:
         end = "0'" if data.start_is_zero else "к.р.х."
