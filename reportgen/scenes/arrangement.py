@@ -250,52 +250,60 @@ class SheetLayout:
         return free_field(*SHEET_MM[self.sheet])
 
 
+#: Where the lever's panel of the control work's sheet may go, in order of preference: top right (as
+#: sheet 2's), else bottom left under the scheme (an A3 sheet whose plans need the middle's height).
+LEVER_CORNERS = ("top-right", "bottom-left")
+
+
 def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: str) -> SheetLayout | None:
     """Sheet 1 (or the control work's sheet) with the plan of positions at ``k``: every view
-    placed as the sheet places it — the scheme top left, the diagrams (the lever) top right, the
-    table bottom right, then the plans (:func:`arrange`) — or None where they do not all fit."""
+    placed as the sheet places it — the scheme top left, the diagrams top right (the lever top
+    right, else bottom left: ``LEVER_CORNERS``), the table bottom right, then the plans
+    (:func:`arrange`) — or None where they do not all fit."""
     task = project.task
     control = control_sheet(task)
     fmt = control or "A1"
     lang = task.document.language
     region = free_field(*SHEET_MM[fmt])
-    requests: list[Request] = [Request("scheme", *scheme_view_size(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0),
-                                       "top-left")]
+    scheme = Request("scheme", *scheme_view_size(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0), "top-left")
+    second: list[Request] = []
     diagrams = None
     if control:
         from .lever import lever_scene
-        requests.append(Request("lever", *lever_view_size(lever_scene(project.kinetostatics, project.linkage),
-                                                          lettering_room(LEVER_TITLE_MM, lang)), "top-right"))
+        size = lever_view_size(lever_scene(project.kinetostatics, project.linkage), lettering_room(LEVER_TITLE_MM, lang))
+        second = [Request("lever", *size, corner) for corner in LEVER_CORNERS]
     else:
         diagrams = project.output_diagrams
         if diagrams is not None:
-            from .output_diagrams import size
-            requests.append(Request("diagrams", *size(diagrams), "top-right"))
+            from .output_diagrams import size as diagrams_size
+            second = [Request("diagrams", *diagrams_size(diagrams), "top-right")]
     pairs = project.plans_by_position
     rows = table_rows(pairs, small=not control, diagrams=diagrams is not None)
-    if fmt != "A3":      # the A3 field has no room for the table: each view prints its scale
-        requests.append(Request("scales", lettering_room(SCALES_TABLE_MM, lang),
-                                TABLE_ROW_MM * (rows + 1) + TABLE_TITLE_MM, "bottom-right"))
-    placed: list[Rect] = []
-    rects: dict[str, Rect] = {}
-    try:
-        for req in requests:          # one by one, as the sheet reserves them (Sheet.add_view)
-            rect = pack(region, [req], gap=VIEW_GAP, placed=placed)[0]
-            placed.append(rect)
-            rects[req.name] = rect
-    except BuildError:
-        return None
+    # the A3 field has no room for the table: each view prints its scale
+    table = [] if fmt == "A3" else [Request("scales", lettering_room(SCALES_TABLE_MM, lang),
+                                            TABLE_ROW_MM * (rows + 1) + TABLE_TITLE_MM, "bottom-right")]
     a3 = fmt == "A3"
     titles = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)
     least = PLAN_MIN_WIDTH_A3_MM if a3 else PLAN_MIN_WIDTH_MM
     names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
     sizes = [plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
              for j, pair in pairs.items() for plan, title in zip(pair, titles)]
-    found = arrange(region, placed, sizes, names)
-    if found is None:
-        return None
-    rects.update(found.rects)
-    return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows)
+    for other in second or [None]:
+        requests = [scheme, *([other] if other is not None else []), *table]
+        placed: list[Rect] = []
+        rects: dict[str, Rect] = {}
+        try:
+            for req in requests:          # one by one, as the sheet reserves them (Sheet.add_view)
+                rect = pack(region, [req], gap=VIEW_GAP, placed=placed)[0]
+                placed.append(rect)
+                rects[req.name] = rect
+        except BuildError:
+            continue
+        found = arrange(region, placed, sizes, names)
+        if found is not None:
+            rects.update(found.rects)
+            return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows)
+    return None
 
 
 #: The smallest drawing of the mechanism worth trying, mm (its larger side): below it the plan of
