@@ -23,9 +23,8 @@ from ..errors import BuildError
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
-                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM,
-                    SCHEME_PADS_MM, SHEET_MM, TABLE_ROW_MM, TABLE_TITLE_MM, VIEW_GAP, control_sheet,
-                    free_field, lettering_room)
+                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM, SCHEME_PADS_MM, SHEET_MM, TABLE_ROW_MM,
+                    TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
 
 #: The small plans the sheet may add: (what to draw, its grids to try as (columns, width, height)),
@@ -189,8 +188,6 @@ def _grow(region, blocks: list[Block], rects: list[Rect], placed: list[Rect]) ->
             limit = (GROW_PLANS_MM, 0.0)
         rects = grow(region, rects, k, gap=VIEW_GAP, placed=placed, max_grow=limit)
     return rects
-
-
 
 
 # ---------------------------------------------------------------------------------------------
