@@ -53,7 +53,7 @@ def does_not_fit(project: Project) -> None:
     if is_a3(project):
         raise TaskError("control_work.sheet", "the mechanism, its velocity and acceleration plans and "
                         "Zhukovsky's lever of this variant do not fit on one A3 sheet at any scale",
-                        '"A1" (sheet = "A1" in [control_work])')
+                        '"A1": an A1 sheet has room for them')
 
 
 def draw(project: Project, number: int, count: int) -> Sheet:
