@@ -263,17 +263,17 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     lang = task.document.language
     region = free_field(*SHEET_MM[fmt])
     scheme = Request("scheme", *scheme_view_size(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0), "top-left")
-    second: list[Request] = []
+    second: list[tuple[Request, ...]] = []   # the second view, in the corners to try
     diagrams = None
     if control:
         from .lever import lever_scene
         size = lever_view_size(lever_scene(project.kinetostatics, project.linkage), lettering_room(LEVER_TITLE_MM, lang))
-        second = [Request("lever", *size, corner) for corner in LEVER_CORNERS]
+        second = [(Request("lever", *size, corner),) for corner in LEVER_CORNERS]
     else:
         diagrams = project.output_diagrams
         if diagrams is not None:
             from .output_diagrams import size as diagrams_size
-            second = [Request("diagrams", *diagrams_size(diagrams), "top-right")]
+            second = [(Request("diagrams", *diagrams_size(diagrams), "top-right"),)]
     pairs = project.plans_by_position
     rows = table_rows(pairs, small=not control, diagrams=diagrams is not None)
     # the A3 field has no room for the table: each view prints its scale
@@ -285,8 +285,8 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
     sizes = [plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
              for j, pair in pairs.items() for plan, title in zip(pair, titles)]
-    for other in second or [None]:
-        requests = [scheme, *([other] if other is not None else []), *table]
+    for other in second or [()]:
+        requests = [scheme, *other, *table]
         placed: list[Rect] = []
         rects: dict[str, Rect] = {}
         try:

@@ -6,8 +6,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
-from shapely.geometry import Polygon, box
+if TYPE_CHECKING:
+    from shapely.geometry import Polygon
 
 # ---------------------------------------------------------------------------------------------
 # the sheet's free field (numbers of ГОСТ 2.301 and 2.104; drawings.sheet draws them)
@@ -24,9 +26,10 @@ FIELD_MARGIN = 5.0
 
 
 @lru_cache(maxsize=8)
-def free_field(width: float, height: float, margin: float = FIELD_MARGIN) -> Polygon:
+def free_field(width: float, height: float, margin: float = FIELD_MARGIN) -> "Polygon":
     """The free field of a ``width`` × ``height`` sheet: the frame's interior less the title block
     (bottom right) and graph 26 (top left, turned), ``margin`` mm clear of all."""
+    from shapely.geometry import box        # here: `reportgen solve` imports these boxes, not shapely
     x0, y0, x1, y1 = FRAME_LEFT, FRAME_BOTTOM, width - FRAME_RIGHT, height - FRAME_TOP
     region = box(x0 + margin, y0 + margin, x1 - margin, y1 - margin)
     for bx0, by0, bx1, by1 in ((x1 - TITLE_W, y0, x1, y0 + TITLE_H), (x0, y1 - EXTRA_H, x0 + EXTRA_W, y1)):
