@@ -174,13 +174,14 @@ GROW_PLANS_MM = 40.0
 #: lines fit): a plan view's title at 5 mm + 10 mm (velocity, acceleration: «План ускорений,
 #: положение 2»; on the control work's A3 sheet «План ускорений», the control work's catalogue is
 #: Russian), the lever's
-#: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns).
+#: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns; measured on
+#: every example with 1, 2 and 3 plan positions: ru ≤ 199,4, uk ≤ 196,2, en ≤ 228,0 mm).
 PLAN_TITLE_MM = {"ru": (133.0, 133.0), "uk": (138.0, 138.0), "en": (138.0, 156.0)}
 #: … and each further digit of the position's number.
 PLAN_TITLE_DIGIT_MM = 4.6
 PLAN_TITLE_A3_MM = {"ru": (75.0, 75.0)}
 LEVER_TITLE_MM = {"ru": 116.0, "uk": 119.0, "en": 106.0}
-SCALES_TABLE_MM = {"ru": 190.0, "uk": 186.0, "en": 218.0}
+SCALES_TABLE_MM = {"ru": 200.0, "uk": 197.0, "en": 229.0}
 
 
 def lettering_room(table, language: str):
