@@ -24,6 +24,8 @@ from .layout import Overlap, Rect, Request, find_overlaps, pack
 from .primitives import _ALIGN, _ALIGN_NAMES, Annotations, Canvas, Transform
 from .words import tr
 from reportgen.errors import InternalError, ParameterError
+from reportgen.scenes.boxes import (EXTRA_H, EXTRA_W, FRAME_BOTTOM, FRAME_LEFT, FRAME_RIGHT,  # noqa: F401
+                                    FRAME_TOP, SHEET_MM, TITLE_H, TITLE_W, free_field)
 from reportgen.tolerances import AREA_EPS_MM2
 
 # ---------------------------------------------------------------------------------------------
@@ -38,16 +40,12 @@ class SheetFormat:
     height: float
 
 
-A1 = SheetFormat("A1", 841.0, 594.0)
-A2 = SheetFormat("A2", 594.0, 420.0)
-A3 = SheetFormat("A3", 420.0, 297.0)
+A1 = SheetFormat("A1", *SHEET_MM["A1"])
+A2 = SheetFormat("A2", *SHEET_MM["A2"])
+A3 = SheetFormat("A3", *SHEET_MM["A3"])
 
-#: Frame offsets from the sheet edges (ГОСТ 2.301): left (binding), bottom, right, top.
-FRAME_LEFT, FRAME_BOTTOM, FRAME_RIGHT, FRAME_TOP = 20.0, 5.0, 5.0, 5.0
-
-#: Form 1 of ГОСТ 2.104 is 185 × 55 mm; graph 26 is 70 × 14 mm.
-TITLE_W, TITLE_H = 185.0, 55.0
-EXTRA_W, EXTRA_H = 70.0, 14.0
+# The frame's offsets (ГОСТ 2.301), form 1 of ГОСТ 2.104 (185 × 55 mm) and graph 26 (70 × 14 mm) are
+# numbers of the core (reportgen.scenes.boxes: the core arranges sheet 1's views in the same field).
 
 # Lines of the title block in its own coordinates (mm from its lower-left corner):
 # (x0, y0, x1, y1, thick). Left part: columns 7 | 10 | 23 | 15 | 10, eleven rows of 5 mm; right
@@ -278,11 +276,7 @@ class Sheet:
     @property
     def free_region(self) -> Polygon:
         """The frame's interior less the title block and graph 26, ``margin`` mm clear of all."""
-        m = self.margin
-        region = self.frame.expanded(-m).polygon()
-        for r in (self.title_rect, self.extra_rect):
-            region = region.difference(r.expanded(m).polygon())
-        return region
+        return free_field(self.format.width, self.format.height, self.margin)
 
     def add_view(self, name: str, width: float, height: float, *, preferred: str = "top-left",
                  gap: float = 10.0, scale: float = 1.0, origin: tuple[float, float] = (0.0, 0.0)

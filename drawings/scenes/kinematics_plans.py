@@ -28,8 +28,9 @@ from reportgen.scenes.scene import Arrow, Scene
 from drawings.scenes import render
 from drawings.scenes.kinetostatics_views import place_vector_names
 
-#: Room for letters and names around a plan's points, and the caption / title strips, mm.
-PAD_LABELS, STRIP = 16.0, 12.0
+#: Room for letters and names around a plan's points, and the caption / title strips, mm (the core's:
+#: it arranges sheet 1 with these sizes, reportgen.scenes.arrangement.plan_view_size).
+from reportgen.scenes.boxes import PLAN_MIN_WIDTH_MM, PLAN_PAD_MM as PAD_LABELS, PLAN_STRIP_MM as STRIP  # noqa: E402
 #: Points of a plan closer than this (mm) share one label.
 SAME_MM = 0.3
 
@@ -52,7 +53,7 @@ def extent(plan: Plan) -> tuple[float, float, float, float]:
 def view_size(plan: Plan, title: str) -> tuple[float, float, tuple[float, float]]:
     """Width, height and the model point at the lower-left corner of a plan's view."""
     x0, y0, x1, y1 = extent(plan)
-    w = max(x1 - x0 + 2 * PAD_LABELS, style.text_width(title, 5.0) + 10.0, 120.0)
+    w = max(x1 - x0 + 2 * PAD_LABELS, style.text_width(title, 5.0) + 10.0, PLAN_MIN_WIDTH_MM)
     h = y1 - y0 + 2 * PAD_LABELS + 2 * STRIP
     cx = (x0 + x1) / 2
     return w, h, (cx - w / 2, y0 - PAD_LABELS - STRIP)

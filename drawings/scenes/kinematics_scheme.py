@@ -13,6 +13,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.geometry import Point as ShapelyPoint
 from shapely.ops import nearest_points
 
+from drawings import style
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import View
 from drawings.scenes import kinematics_labels as rl
@@ -70,8 +71,10 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     _draw_letters(view, scene, k, links)
     _draw_numbers(view, project, scene, k, links)
     _draw_link_numbers(view, project, data, links)
-    view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
-                 tr("sheets.ks01", v1=format_significant(mu_l, 4), scale_text=scale_text), 5.0, "bottom-center")
+    caption = tr("sheets.ks01", v1=format_significant(mu_l, 4), scale_text=scale_text)
+    width = style.text_width(caption, 5.0)      # lettered down to 3.5 mm where the view is narrower (A3)
+    height = 5.0 if width <= view.rect.width - 4.0 else max(3.5, 5.0 * (view.rect.width - 4.0) / width)
+    view.text_mm((view.rect.center[0], view.rect.y0 + 4.0), caption, height, "bottom-center")
     if project.task.document.kind == "control-work":
         phi = math.degrees(float(data.kin.phi[data.analysed])) % 360.0
         cw = project.task.control_work

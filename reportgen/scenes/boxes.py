@@ -5,6 +5,36 @@ and the note draws the same scenes (reduced where the text block is smaller, and
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from shapely.geometry import Polygon
+
+# ---------------------------------------------------------------------------------------------
+# the sheet's free field (numbers of ГОСТ 2.301 and 2.104; drawings.sheet draws them)
+
+#: Sheet formats, landscape, mm (ГОСТ 2.301).
+SHEET_MM: dict[str, tuple[float, float]] = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0)}
+#: Frame offsets from the sheet edges (ГОСТ 2.301): left (binding), bottom, right, top.
+FRAME_LEFT, FRAME_BOTTOM, FRAME_RIGHT, FRAME_TOP = 20.0, 5.0, 5.0, 5.0
+#: Form 1 of ГОСТ 2.104 is 185 × 55 mm; graph 26 is 70 × 14 mm.
+TITLE_W, TITLE_H = 185.0, 55.0
+EXTRA_W, EXTRA_H = 70.0, 14.0
+#: Views keep this far from the frame, the title block and graph 26, mm.
+FIELD_MARGIN = 5.0
+
+
+@lru_cache(maxsize=8)
+def free_field(width: float, height: float, margin: float = FIELD_MARGIN) -> "Polygon":
+    """The free field of a ``width`` × ``height`` sheet: the frame's interior less the title block
+    (bottom right) and graph 26 (top left, turned), ``margin`` mm clear of all."""
+    from shapely.geometry import box        # here: `reportgen solve` imports these boxes, not shapely
+    x0, y0, x1, y1 = FRAME_LEFT, FRAME_BOTTOM, width - FRAME_RIGHT, height - FRAME_TOP
+    region = box(x0 + margin, y0 + margin, x1 - margin, y1 - margin)
+    for bx0, by0, bx1, by1 in ((x1 - TITLE_W, y0, x1, y0 + TITLE_H), (x0, y1 - EXTRA_H, x0 + EXTRA_W, y1)):
+        region = region.difference(box(bx0 - margin, by0 - margin, bx1 + margin, by1 + margin))
+    return region
 
 
 @dataclass(frozen=True)
@@ -61,20 +91,20 @@ class SceneBoxes:
     #: the lever's box on A1 and on A3 (``[control_work] sheet``).
     lever_control: tuple[float, float] = (300.0, 250.0)
     lever_control_a3: tuple[float, float] = (110.0, 80.0)
-    #: The control work's sheet: the drawing of the mechanism at φ (``scheme`` is sheet 1's, whose
-    #: field holds no lever) on A1 and on A3. The plan of positions takes the largest ГОСТ scale
-    #: that draws it within the box, and sheet and note print that one (issue 12; on main the sheet
-    #: fell back to a smaller scale where its views did not fit: t22-v1 1:15 on A1, the example
-    #: 1:40 on A3, while the note printed 1:10).
+    #: The control work's sheet: the largest drawing of the mechanism at φ tried (``scheme`` is sheet
+    #: 1's, whose field holds no lever) on A1 and on A3. The scale the note and the sheet print is the
+    #: largest ГОСТ scale within the box at which the whole sheet's arrangement fits
+    #: (:mod:`reportgen.scenes.arrangement`; issue 12: on main the sheet fell back to a smaller scale
+    #: by itself — table 4 variant 1 on A3 drew 1:50, the note printed 1:40 — and tables 2 and 22
+    #: did not fit A3 at all with the 40 mm box and the course plans' titles).
     scheme_control: tuple[float, float] = (200.0, 200.0)
-    scheme_control_a3: tuple[float, float] = (40.0, 40.0)
+    scheme_control_a3: tuple[float, float] = (90.0, 90.0)
     #: The control work on A3: no point of the velocity or acceleration plan farther than this from
     #: the pole, mm (the smallest round μ of the plans' series that does it); on A1 the plans keep
     #: the scales of :func:`reportgen.plans.build_plans`, the course project's.
     plan_control_a3_mm: float = 75.0
     #: Sheet 3: the diagrams.
     diagrams: GraphLayout = field(default_factory=GraphLayout)
-
 
     def lever_for(self, task) -> tuple[float, float]:
         """The box of Zhukovsky's lever on the sheet that draws it for ``task``: sheet 2, or the control
@@ -109,3 +139,51 @@ def control_sheet(task) -> str | None:
 
 
 DEFAULT = SceneBoxes()
+
+
+# ---------------------------------------------------------------------------------------------
+# sheet 1 and the control work's sheet: the views' sizes, from which the core arranges the sheet
+# (reportgen.scenes.arrangement) and chooses the scale of the plan of positions
+
+#: Padding of the scheme around its model bounds: left, bottom, right, top, mm (the scale caption
+#: below, the title above).
+SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
+#: The control work's scheme view is at least as wide as its title (5 mm letters): «Механизм в
+#: заданном положении, φ1 = …°» on A1, «Механизм, φ1 = …°» on A3.
+SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 85.0}
+#: A plan's view: room for letters and names round its points, its caption and title strips, its
+#: least width, mm.
+PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_MIN_WIDTH_MM = 16.0, 12.0, 120.0
+#: The control work on A3: a plan's view is at least this wide (its title is the short «План
+#: скоростей»: the one position is named by the scheme's title), mm.
+PLAN_MIN_WIDTH_A3_MM = 100.0
+#: Zhukovsky's lever's panel: room round the turned plan, the strips of its title, subtitle and
+#: scale captions, mm (drawings.scenes.kinetostatics_views.lever_panel draws in them).
+LEVER_PAD_MM, LEVER_STRIPS_MM = 12.0, 10.0 + 6.0 + 16.0
+#: The table «Масштабы»: a row's height and the strip above it for its title, mm.
+TABLE_ROW_MM, TABLE_TITLE_MM = 8.0, 12.0
+#: Gap between views, and between the two plans of a plan position put together (smaller, so that
+#: a pair reads as one: the views' own margins keep the drawings ~30 mm apart), mm.
+VIEW_GAP, PAIR_GAP = 10.0, 4.0
+#: The plans may widen by this much to give their names room, mm.
+GROW_PLANS_MM = 40.0
+
+#: Room the lettering of these views needs, per language of the sheet (the words are the
+#: catalogue's, which the core does not read; the sheet font's widths were measured with
+#: drawings.style.text_width and tests/sheet1/test_arrangement_core.py checks every language's
+#: lines fit): a plan view's title at 5 mm + 10 mm (velocity, acceleration: «План ускорений,
+#: положение 2»; on the control work's A3 sheet «План ускорений», the control work's catalogue is
+#: Russian), the lever's
+#: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns; measured on
+#: every example with 1, 2 and 3 plan positions: ru ≤ 199,4, uk ≤ 196,2, en ≤ 228,0 mm).
+PLAN_TITLE_MM = {"ru": (133.0, 133.0), "uk": (138.0, 138.0), "en": (138.0, 156.0)}
+#: … and each further digit of the position's number.
+PLAN_TITLE_DIGIT_MM = 4.6
+PLAN_TITLE_A3_MM = {"ru": (75.0, 75.0)}
+LEVER_TITLE_MM = {"ru": 116.0, "uk": 119.0, "en": 106.0}
+SCALES_TABLE_MM = {"ru": 200.0, "uk": 197.0, "en": 229.0}
+
+
+def lettering_room(table, language: str):
+    """``table``'s room for ``language`` (the widest of the catalogue's languages for another)."""
+    return table.get(language, max(table.values()))

@@ -1,8 +1,8 @@
 """The plan of positions (план положений) as a scene: the mechanism in every analysed position at
-the ГОСТ 2.302 scale of sheet 1 (the largest that fits the scheme's box), position 0 and the
-analysed position bold, the others thin, the extreme position of the end of the working stroke
-(dash-two-dots), the trajectories of the centres of mass and the crank pin, the frame guides and
-pivots; labels: the letters of the analysed position (and of position 0 with index 0), the centres
+the ГОСТ 2.302 scale of sheet 1 (the largest within the scheme's box at which the sheet's views all
+fit, :mod:`.arrangement`), position 0 and the analysed position bold, the others thin, the extreme
+position of the end of the working stroke (dash-two-dots), the trajectories of the centres of mass
+and the crank pin, the frame guides and pivots; labels: the letters of the analysed position (and of position 0 with index 0), the centres
 of mass, the position numbers at the crank pin. Coordinates: paper mm = metres × k."""
 from __future__ import annotations
 
@@ -69,10 +69,11 @@ def bounds(data: SchemeData, linkage=None) -> tuple[float, float, float, float]:
 
 def positions_scales(b: tuple[float, float, float, float], boxes: SceneBoxes, pairs: int = 2,
                      scheme: tuple[float, float] | None = None) -> list[tuple[float, str]]:
-    """ГОСТ 2.302 scales (paper mm per metre, «1:2,5») for the plan of positions, the one that fits
-    ``scheme`` (default ``boxes.scheme``; the control work's sheet gives its own,
-    :meth:`SceneBoxes.scheme_for`) first (less ``boxes.scheme_less_per_pair`` of height for each of
-    the ``pairs`` plan positions beyond two)."""
+    """ГОСТ 2.302 scales (paper mm per metre, «1:2,5») for the plan of positions, largest first from
+    the one that fits ``scheme`` (default ``boxes.scheme``; the control work's sheet gives its own,
+    :meth:`SceneBoxes.scheme_for`; less ``boxes.scheme_less_per_pair`` of height for each of the
+    ``pairs`` plan positions beyond two): the candidates, of which the project takes the largest at
+    which the whole sheet fits (:func:`reportgen.scenes.arrangement.choose_layout`)."""
     w, h = boxes.scheme if scheme is None else scheme
     h -= boxes.scheme_less_per_pair * max(pairs - 2, 0)
     k, _ = gost_scale(b[2] - b[0], b[3] - b[1], w, h)
@@ -234,7 +235,7 @@ def positions_scene(project, data: SchemeData, k: float, ratio: str) -> Scene:
         ents.append(Circle(f"pos{i}:S{kk}", mm(pos), 1.0, "contour"))
         labels.append(Label(f"S_{{{kk}}}", f"pos{i}:S{kk}", mm(pos), "point"))
     tip = lk.drive_tip
-    for j in range(len(data.kin.phi)):
+    for j in range(len(data.kin.phi) if len(data.kin.phi) > 1 else 0):   # one position (a control work): no number
         labels.append(Label(str(j), f"pos{j}:{tip}", mm(data.kin.points[tip].pos[j]), "number"))
     if data.extremes is not None:
         end = "0'" if data.start_is_zero else "к.р.х."

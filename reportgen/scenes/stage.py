@@ -6,6 +6,7 @@ from functools import cached_property
 from types import MappingProxyType
 from typing import Mapping
 
+from .arrangement import SheetLayout, choose_layout
 from .dynamics import DynamicsScenes, dynamics_scenes
 from .free_body import FreeBody, free_bodies
 from .meshing import MeshingScene, meshing_scene
@@ -25,19 +26,34 @@ class Scenes:
 
     @cached_property
     def positions_scales(self) -> list[tuple[float, str]]:
-        """The ГОСТ scales of the plan of positions, the chosen one first."""
+        """The ГОСТ scales of the plan of positions not above the scheme's box, largest first (the
+        candidates: :attr:`sheet_layout` takes the first at which the whole sheet fits)."""
         boxes = self.project.boxes
         return positions_scales(bounds(self.scheme_data, self.project.linkage), boxes,
                                 len(self.project.plan_positions), boxes.scheme_for(self.project.task))
 
+    @cached_property
+    def sheet_layout(self) -> SheetLayout | None:
+        """Sheet 1's (or the control work's sheet's) views at the largest of :attr:`positions_scales`
+        at which they all fit (:mod:`.arrangement`); None: at none of them (the sheet says so)."""
+        return choose_layout(self.project, bounds(self.scheme_data, self.project.linkage), self.positions_scales)
+
+    @cached_property
+    def positions_scale(self) -> tuple[float, str]:
+        """The scale of the plan of positions (mm per metre, «1:N»), the one the note and the sheet
+        print: :attr:`sheet_layout`'s; the scheme box's where no arrangement fits (the note can be
+        built without the sheet, whose build then stops with a clear error)."""
+        found = self.sheet_layout
+        return (found.k, found.ratio) if found is not None else self.positions_scales[0]
+
     def positions_at(self, k: float, ratio: str) -> Scene:
-        """The plan of positions at another scale (a sheet whose views do not fit)."""
+        """The plan of positions at another scale."""
         return positions_scene(self.project, self.scheme_data, k, ratio)
 
     @cached_property
     def positions(self) -> Scene:
         """The plan of positions at its scale (sheet 1's scheme; the note's figure, reduced)."""
-        return self.positions_at(*self.positions_scales[0])
+        return self.positions_at(*self.positions_scale)
 
     @cached_property
     def velocity_plan(self) -> Scene:
