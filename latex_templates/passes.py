@@ -4,27 +4,31 @@ run while the note's figures are still being saved.
 The first pass of a cold build only writes the auxiliary files (contents, labels, page numbers);
 xelatex reads nothing of a figure but its size. ``reportgen build`` therefore writes a placeholder
 of each figure at its final size (:func:`placeholder_pdf`), starts this driver, saves the real
-figures meanwhile and then writes one byte to the driver's standard input: the driver runs the
-next passes on the real figures until the auxiliary files stop changing — latexmk's rule — and
-``xdvipdfmx`` makes the PDF from the last pass. The commands are latexmk's own, so the PDF is the
-same bytes; a placeholder of a slightly wrong size costs at most one more pass, never a different
-PDF, because the passes continue until the auxiliary files are stable on the real figures.
+figures meanwhile and then writes one byte to the driver's standard input. Meanwhile the driver
+runs the passes on the placeholders until the auxiliary files stop changing — latexmk's rule:
+a pass that leaves them as it found them is the last — and then waits for that byte.
 
-Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3).
-Exit status: 0, or the failing program's status (its log says why).
+The byte ``2`` says that every real figure has the page box of its placeholder, written the same
+way (:func:`media_box`; a figure kept by the build cache is its real PDF already). xelatex reads
+nothing of a figure but that box — the ``.xdv`` names the file, ``xdvipdfmx`` embeds it — so the
+passes on the placeholders typeset the real figures: the stable pass already made is the last
+(for a rebuild whose auxiliary files the cache restored, often pass 1), and only ``xdvipdfmx``
+runs once the figures are there. A cold build of the press thus runs its two passes beside the
+figures' saving instead of one of them after it.
 
-The byte ``2`` instead of ``1`` says more: every real figure has the page box of its placeholder,
-written the same way (:func:`media_box`; a figure kept by the build cache is its real PDF already).
-xelatex reads nothing of a figure but that box — the ``.xdv`` names the file, ``xdvipdfmx`` embeds
-it — so the first pass then typeset the real figures. If that pass also left the auxiliary files
-as it found them (an earlier build's, restored by the build cache), a next pass would read the same
-input and write the same output: the first pass is the last one (latexmk's rule, met after one
-pass), and only ``xdvipdfmx`` runs. Otherwise the passes go on as above.
+The byte ``1`` (a box may differ, or could not be read): the passes go on on the real figures
+until the auxiliary files are stable, at least one of them after the byte, and ``xdvipdfmx``
+makes the PDF from the last. The commands are latexmk's own, so the PDF is the same bytes; a
+placeholder of a slightly wrong size costs at most one more pass, never a different PDF.
+
+Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3)
+after the pass running. Exit status: 0, or the failing program's status (its log says why).
 """
 from __future__ import annotations
 
 import subprocess
 import sys
+import threading
 from pathlib import Path
 from typing import Callable
 
@@ -59,27 +63,67 @@ def _run(cmd: list[str], cwd: Path) -> int:
 FIGURES_REAL, SAME_BOXES = b"1", b"2"
 
 
+class Signal:
+    """What the build says once the figures are saved (:data:`FIGURES_REAL`, :data:`SAME_BOXES`,
+    or ``b""``: stop), read by a thread so that the driver can go on with passes meanwhile."""
+
+    def __init__(self, read: Callable[[], bytes | bool]) -> None:
+        self._said: bytes | bool | None = None
+        self._done = threading.Event()
+        threading.Thread(target=self._read, args=(read,), daemon=True).start()
+
+    def _read(self, read: Callable[[], bytes | bool]) -> None:
+        try:
+            self._said = read()
+        finally:
+            self._done.set()
+
+    def poll(self) -> bytes | bool | None:
+        """What was said, or None while nothing was."""
+        return self._said if self._done.is_set() else None
+
+    def wait(self) -> bytes | bool:
+        self._done.wait()
+        return self._said or b""
+
+
 def drive(tex: Path, build_dir_name: str, go: Callable[[], bytes | bool]) -> int:
-    """Pass 1 now, then (once ``go()`` says the figures are real) the passes until the auxiliary
-    files are stable, then xdvipdfmx; none after pass 1 when ``go()`` says :data:`SAME_BOXES` and
-    pass 1 left the auxiliary files as they were. Returns an exit status."""
+    """The passes until the auxiliary files are stable on figures known to have their real page
+    boxes, then xdvipdfmx. Returns an exit status.
+
+    Pass 1 starts at once. While ``go()`` has said nothing (the figures are being saved), the
+    passes go on on the placeholders until the auxiliary files are stable there; a pass is not
+    repeated once a pass left them as it found them. ``go()`` saying :data:`SAME_BOXES` makes every
+    pass count as one on the real figures (xelatex reads nothing of a figure but its page box, the
+    same in both): a stable pass already made is the last. :data:`FIGURES_REAL` (a box may differ)
+    counts only the passes started after it was said, so at least one more runs."""
     work = tex.parent
     build_dir = work / build_dir_name
-    found = _aux_state(build_dir) if build_dir.is_dir() else None
-    status = _xelatex(tex, build_dir_name)
-    if status != 0:
-        return status
-    said = go()
-    if not said:
-        return CANCELLED
-    if said == SAME_BOXES and _aux_state(build_dir) == found:
-        return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
-    for _ in range(MAX_PASSES):
-        before = _aux_state(build_dir)
+    signal = Signal(go)
+    before = _aux_state(build_dir) if build_dir.is_dir() else None
+    said_at_start: bytes | bool | None = None        # what was said when the last pass started
+    real_passes = early_passes = 0
+    while True:
+        # pass 1 counts as one on the placeholders whenever the byte came (the build starts the
+        # driver before it saves the figures): the count of passes does not depend on a race
+        said_at_start = signal.poll() if early_passes + real_passes else None
         status = _xelatex(tex, build_dir_name)
         if status != 0:
             return status
-        if _aux_state(build_dir) == before:
+        if said_at_start:
+            real_passes += 1
+        else:
+            early_passes += 1
+        after = _aux_state(build_dir)
+        stable = after == before
+        before = after
+        said = signal.poll()
+        if said is None and (stable or early_passes >= MAX_PASSES):
+            said = signal.wait()                     # nothing more to do on the placeholders
+        if said is not None and not said:
+            return CANCELLED
+        on_real = said == SAME_BOXES or (said == FIGURES_REAL and said_at_start == FIGURES_REAL)
+        if (stable and on_real) or real_passes >= MAX_PASSES:
             break
     return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
 

@@ -160,3 +160,57 @@ def test_a_placeholder_writes_the_page_box_a_saved_figure_has(tmp_path):
     assert passes.media_box(tmp_path / "f0.pdf") != passes.media_box(tmp_path / "f1.pdf")   # tight, and not
     (tmp_path / "odd.pdf").write_bytes(passes.placeholder_pdf(10.0, 20.0).replace(b"/Resources", b"/Rotate 90 /Resources"))
     assert passes.media_box(tmp_path / "odd.pdf") is None        # a box xelatex might read otherwise
+
+
+def _pass_lines_before_the_byte(tmp_path: Path, count: int, go: bytes) -> tuple[int, int]:
+    """Start the driver on MINIMAL, wait (≤ 120 s) until it has begun ``count`` passes without being
+    told anything, then say ``go``; (the passes it ran in all, its exit status)."""
+    import select
+    import time
+
+    (tmp_path / "n.tex").write_text(MINIMAL, encoding="utf-8")
+    (tmp_path / "b").mkdir(exist_ok=True)
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")
+    proc = subprocess.Popen([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path, env=env,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    seen, deadline = 0, time.monotonic() + 120
+    try:
+        while seen < count and time.monotonic() < deadline:
+            ready, _, _ = select.select([proc.stdout], [], [], 1.0)
+            if ready:
+                line = proc.stdout.readline()
+                if not line:
+                    break
+                seen += line.decode().strip() == passes.PASS_LINE
+        assert seen == count, f"{seen} passes began before the figures were said to be saved, not {count}"
+        out, _ = proc.communicate(go, timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    return seen + sum(line == passes.PASS_LINE for line in out.decode().splitlines()), proc.returncode
+
+
+@needs_tex
+def test_the_passes_go_on_on_the_placeholders_until_stable_and_same_boxes_ends_them(tmp_path):
+    """A cold build's two passes run beside the figures' saving: the second (the contents line
+    filled in) begins before the byte, and with SAME_BOXES no pass follows it."""
+    total, status = _pass_lines_before_the_byte(tmp_path, 2, passes.SAME_BOXES)
+    assert status == 0 and total == 2
+    assert "A" in (tmp_path / "b" / "n.toc").read_text(encoding="utf-8")
+    assert (tmp_path / "b" / "n.pdf").is_file()
+
+
+@needs_tex
+def test_figures_real_means_one_more_pass_after_the_placeholders_were_stable(tmp_path):
+    """FIGURES_REAL (a box may differ): the passes on the placeholders do not count, one more runs
+    on the real figures (stable there: the last)."""
+    total, status = _pass_lines_before_the_byte(tmp_path, 2, passes.FIGURES_REAL)
+    assert status == 0 and total == 3
+
+
+@needs_tex
+def test_the_driver_stops_after_the_pass_running_when_the_build_fails(tmp_path):
+    total, status = _pass_lines_before_the_byte(tmp_path, 2, b"")
+    assert status == passes.CANCELLED and total == 2
+    assert not (tmp_path / "b" / "n.pdf").exists()
