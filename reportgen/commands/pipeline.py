@@ -3,7 +3,7 @@
     main process   task → solve → note's sections, report.tex → figures (share 1) ─ results.json ─ join ─ join
     figures                                       (forked) figures (share 2) ─┘                    │      │
     sheets         (forked after solve, nice 3)  sheet 1 … sheet n: DXF + PNG preview ─────────────┘      │
-    LaTeX          (first pass beside the figures, on their placeholders)  xelatex passes + xdvipdfmx ─────┘
+    LaTeX          (passes on the figures' placeholders, beside the figures, until stable) → xdvipdfmx ┘
 
 The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
 the sheets are drawn in a forked child process while the main process composes the note, and
