@@ -102,17 +102,19 @@ def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes]) -> int:
     """The passes until the auxiliary files are stable on figures known to have their real page
     boxes, then xdvipdfmx. Returns an exit status.
 
-    Pass 1 starts at once. While ``go()`` has said nothing (the figures are being saved), the
-    passes go on on the placeholders until the auxiliary files are stable there; a pass is not
-    repeated once a pass left them as it found them. ``go()`` saying :data:`SAME_BOXES` makes every
-    pass count as one on the real figures (xelatex reads nothing of a figure but its page box, the
-    same in both): a stable pass already made is the last. :data:`FIGURES_REAL` (a box may differ)
-    counts only the passes started after it was said, so at least one more runs."""
+    ``read1`` reads one byte of what the build says (:class:`Signal`). Pass 1 starts at once and
+    waits at ``\\begin{document}`` for the placeholders (:func:`_first_pass`). While nothing is said
+    of the figures (they are being saved), the passes go on on the placeholders until the auxiliary
+    files are stable there: a pass that left them as it found them is not followed by another.
+    :data:`SAME_BOXES` makes every pass count as one on the real figures (xelatex reads nothing of
+    a figure but its page box, the same in both): a stable pass already made is the last.
+    :data:`FIGURES_REAL` (a box may differ) counts only the passes started after it was said, so at
+    least one more runs."""
     work = tex.parent
     build_dir = work / build_dir_name
     signal = Signal(read1)
     before = _aux_state(build_dir) if build_dir.is_dir() else None
-    said_at_start: bytes | bool | None = None        # what was said when the last pass started
+    said_at_start: bytes | None = None               # what was said when the last pass started
     real_passes = early_passes = 0
     while True:
         # pass 1 counts as one on the placeholders whenever the byte came (the build starts the
@@ -157,7 +159,7 @@ _SIMPLE_NAME = re.compile(r"[A-Za-z0-9_.-]+\.tex")
 
 def first_pass_command(tex_name: str, build_dir: str) -> list[str] | None:
     """Pass 1 as :func:`xelatex_command`, that reads the preamble at once and waits at
-    ``\begin{document}`` (:data:`WAIT_HOOK`): the same .xdv and auxiliary files (the job's name
+    ``\\begin{document}`` (:data:`WAIT_HOOK`): the same .xdv and auxiliary files (the job's name
     given, the file read by ``\\input``), the preamble's ≈ 0.7 s spent while the build writes the
     figures' placeholders. None for a file name that ``\\input`` would read otherwise."""
     if not _SIMPLE_NAME.fullmatch(tex_name):
