@@ -123,7 +123,7 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
     build_dir = work / BUILD_DIR
     build_dir.mkdir(exist_ok=True)
     _write_provisional_toc(tex, build_dir)
-    env = _tex_env(source_date_epoch)
+    env = tex_env(source_date_epoch)
     cmd = [exe, "-xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
            f"-outdir={BUILD_DIR}", tex.name]
     proc = subprocess.Popen(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
@@ -186,7 +186,7 @@ def start_passes(tex_path: Path | str, *, strict_references: bool = True,
     _write_provisional_toc(tex, build_dir)
     driver = Path(__file__).with_name("passes.py")      # by path: no package import, stdlib only
     proc = subprocess.Popen([sys.executable, str(driver), tex.name, BUILD_DIR], cwd=work,
-                            env=_tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            env=tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
     pending = PendingPasses(tex, proc, strict_references)
     if placeholders:
@@ -201,7 +201,8 @@ def _write_provisional_toc(tex: Path, build_dir: Path) -> None:
             (build_dir / (tex.stem + ".toc")).write_text(toc, encoding="utf-8")
 
 
-def _tex_env(source_date_epoch: str | None) -> dict[str, str]:
+def tex_env(source_date_epoch: str | None) -> dict[str, str]:
+    """The environment of xelatex and xdvipdfmx: every date they write fixed (reproducible bytes)."""
     env = dict(os.environ)
     env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH", DEFAULT_SOURCE_DATE_EPOCH)
     env["FORCE_SOURCE_DATE"] = "1"
