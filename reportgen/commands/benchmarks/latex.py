@@ -42,16 +42,16 @@ def _best(cmd: list[str], cwd: Path, env: dict[str, str], repeat: int) -> tuple[
 
 def pass_table(task_path: Path, quick: bool, repeat: int = 3) -> Table:
     """One xelatex pass of the task's note, split into start, preamble and body; xdvipdfmx."""
-    from latex_templates.build import BUILD_DIR, tex_env
-    from latex_templates.passes import xdvipdfmx_command, xelatex_command
-
-    from ..build import build
-
     t = Table("latex-pass", f"One xelatex pass of the note of `{task_path.parent.name}/{task_path.name}`: "
               f"where its time goes (best of {repeat} runs)", ["part", "wall, s", "CPU, s"])
     if quick or not all(shutil.which(p) for p in ("xelatex", "xdvipdfmx")):
         t.notes.append("not measured: " + ("--quick" if quick else "xelatex or xdvipdfmx not found"))
         return t
+    from latex_templates.build import BUILD_DIR, tex_env
+    from latex_templates.passes import xdvipdfmx_command, xelatex_command
+
+    from ..build import build
+
     with tempfile.TemporaryDirectory(prefix="reportgen-bench-") as tmp:
         out = Path(tmp) / "out"
         try:
