@@ -123,7 +123,7 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
     build_dir = work / BUILD_DIR
     build_dir.mkdir(exist_ok=True)
     _write_provisional_toc(tex, build_dir)
-    env = _tex_env(source_date_epoch)
+    env = tex_env(source_date_epoch)
     cmd = [exe, "-xelatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
            f"-outdir={BUILD_DIR}", tex.name]
     proc = subprocess.Popen(cmd, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
@@ -134,6 +134,20 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
 class PendingPasses(PendingPdf):
     """xelatex's first pass running on placeholder figures (:mod:`latex_templates.passes`);
     :meth:`figures_ready` lets it go on with the real ones; :meth:`wait` as for latexmk."""
+
+    def placeholders_ready(self) -> None:
+        """The figures' placeholders are written: pass 1, its preamble read meanwhile, may go on
+        into the document's body (:data:`latex_templates.passes.PLACEHOLDERS`)."""
+        from .passes import PLACEHOLDERS
+
+        stdin = self.proc.stdin
+        if stdin is None:
+            return
+        try:
+            stdin.write(PLACEHOLDERS.decode())
+            stdin.flush()
+        except (BrokenPipeError, OSError):   # the first pass failed already: wait() says why
+            pass
 
     def figures_ready(self, same_boxes: bool = False) -> None:
         """The figures are saved; ``same_boxes``: each has its placeholder's page box, so that a
@@ -153,10 +167,12 @@ class PendingPasses(PendingPdf):
 
 
 def start_passes(tex_path: Path | str, *, strict_references: bool = True,
-                 source_date_epoch: str | None = None) -> PendingPasses:
+                 source_date_epoch: str | None = None, placeholders: bool = True) -> PendingPasses:
     """Start the first xelatex pass of a cold build now, on the figures' placeholders (see
-    :mod:`latex_templates.passes`); the later passes wait for :meth:`PendingPasses.figures_ready`.
-    Raise BuildError when TeX is missing."""
+    :mod:`latex_templates.passes`); the passes after it wait for :meth:`PendingPasses.figures_ready`
+    once stable on the placeholders. ``placeholders=False``: they are not written yet; pass 1 reads
+    its preamble meanwhile and waits for :meth:`PendingPasses.placeholders_ready` at
+    ``\\begin{document}``. Raise BuildError when TeX is missing."""
     import sys
 
     tex = Path(tex_path).resolve()
@@ -170,9 +186,12 @@ def start_passes(tex_path: Path | str, *, strict_references: bool = True,
     _write_provisional_toc(tex, build_dir)
     driver = Path(__file__).with_name("passes.py")      # by path: no package import, stdlib only
     proc = subprocess.Popen([sys.executable, str(driver), tex.name, BUILD_DIR], cwd=work,
-                            env=_tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            env=tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
-    return PendingPasses(tex, proc, strict_references)
+    pending = PendingPasses(tex, proc, strict_references)
+    if placeholders:
+        pending.placeholders_ready()
+    return pending
 
 
 def _write_provisional_toc(tex: Path, build_dir: Path) -> None:
@@ -182,7 +201,8 @@ def _write_provisional_toc(tex: Path, build_dir: Path) -> None:
             (build_dir / (tex.stem + ".toc")).write_text(toc, encoding="utf-8")
 
 
-def _tex_env(source_date_epoch: str | None) -> dict[str, str]:
+def tex_env(source_date_epoch: str | None) -> dict[str, str]:
+    """The environment of xelatex and xdvipdfmx: every date they write fixed (reproducible bytes)."""
     env = dict(os.environ)
     env["SOURCE_DATE_EPOCH"] = source_date_epoch or env.get("SOURCE_DATE_EPOCH", DEFAULT_SOURCE_DATE_EPOCH)
     env["FORCE_SOURCE_DATE"] = "1"

@@ -4,27 +4,32 @@ run while the note's figures are still being saved.
 The first pass of a cold build only writes the auxiliary files (contents, labels, page numbers);
 xelatex reads nothing of a figure but its size. ``reportgen build`` therefore writes a placeholder
 of each figure at its final size (:func:`placeholder_pdf`), starts this driver, saves the real
-figures meanwhile and then writes one byte to the driver's standard input: the driver runs the
-next passes on the real figures until the auxiliary files stop changing — latexmk's rule — and
-``xdvipdfmx`` makes the PDF from the last pass. The commands are latexmk's own, so the PDF is the
-same bytes; a placeholder of a slightly wrong size costs at most one more pass, never a different
-PDF, because the passes continue until the auxiliary files are stable on the real figures.
+figures meanwhile and then writes one byte to the driver's standard input. Meanwhile the driver
+runs the passes on the placeholders until the auxiliary files stop changing — latexmk's rule:
+a pass that leaves them as it found them is the last — and then waits for that byte.
 
-Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3).
-Exit status: 0, or the failing program's status (its log says why).
+The byte ``2`` says that every real figure has the page box of its placeholder, written the same
+way (:func:`media_box`; a figure kept by the build cache is its real PDF already). xelatex reads
+nothing of a figure but that box — the ``.xdv`` names the file, ``xdvipdfmx`` embeds it — so the
+passes on the placeholders typeset the real figures: the stable pass already made is the last
+(for a rebuild whose auxiliary files the cache restored, often pass 1), and only ``xdvipdfmx``
+runs once the figures are there. A cold build of the press thus runs its two passes beside the
+figures' saving instead of one of them after it.
 
-The byte ``2`` instead of ``1`` says more: every real figure has the page box of its placeholder,
-written the same way (:func:`media_box`; a figure kept by the build cache is its real PDF already).
-xelatex reads nothing of a figure but that box — the ``.xdv`` names the file, ``xdvipdfmx`` embeds
-it — so the first pass then typeset the real figures. If that pass also left the auxiliary files
-as it found them (an earlier build's, restored by the build cache), a next pass would read the same
-input and write the same output: the first pass is the last one (latexmk's rule, met after one
-pass), and only ``xdvipdfmx`` runs. Otherwise the passes go on as above.
+The byte ``1`` (a box may differ, or could not be read): the passes go on on the real figures
+until the auxiliary files are stable, at least one of them after the byte, and ``xdvipdfmx``
+makes the PDF from the last. The commands are latexmk's own, so the PDF is the same bytes; a
+placeholder of a slightly wrong size costs at most one more pass, never a different PDF.
+
+Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3)
+after the pass running. Exit status: 0, or the failing program's status (its log says why).
 """
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
+import threading
 from pathlib import Path
 from typing import Callable
 
@@ -54,32 +59,84 @@ def _run(cmd: list[str], cwd: Path) -> int:
     return subprocess.run(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL).returncode
 
 
-#: What the build writes to the driver's standard input once the figures are saved: they are real;
-#: they are real and each has its placeholder's page box (:func:`media_box`).
-FIGURES_REAL, SAME_BOXES = b"1", b"2"
+#: What the build writes to the driver's standard input: the placeholders are written (pass 1 may
+#: read the document's body; optional, the other two say it too); the figures are saved, real; they
+#: are real and each has its placeholder's page box (:func:`media_box`).
+PLACEHOLDERS, FIGURES_REAL, SAME_BOXES = b"P", b"1", b"2"
 
 
-def drive(tex: Path, build_dir_name: str, go: Callable[[], bytes | bool]) -> int:
-    """Pass 1 now, then (once ``go()`` says the figures are real) the passes until the auxiliary
-    files are stable, then xdvipdfmx; none after pass 1 when ``go()`` says :data:`SAME_BOXES` and
-    pass 1 left the auxiliary files as they were. Returns an exit status."""
+class Signal:
+    """What the build says on the driver's standard input (:data:`PLACEHOLDERS`, then
+    :data:`FIGURES_REAL` or :data:`SAME_BOXES`; anything else or the end of the input: stop, ``b""``),
+    read by a thread so that the driver can go on with passes meanwhile."""
+
+    def __init__(self, read1: Callable[[], bytes]) -> None:
+        self._said: bytes | None = None
+        self.placed = threading.Event()          # the placeholders are there (or it is too late for them)
+        self._done = threading.Event()
+        threading.Thread(target=self._read, args=(read1,), daemon=True).start()
+
+    def _read(self, read1: Callable[[], bytes]) -> None:
+        said = b""
+        try:
+            while True:
+                said = read1()
+                if said != PLACEHOLDERS:
+                    break
+                self.placed.set()
+        finally:
+            self._said = said if said in (FIGURES_REAL, SAME_BOXES) else b""
+            self.placed.set()
+            self._done.set()
+
+    def poll(self) -> bytes | None:
+        """What was said of the figures, or None while nothing was."""
+        return self._said if self._done.is_set() else None
+
+    def wait(self) -> bytes:
+        self._done.wait()
+        return self._said or b""
+
+
+def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes]) -> int:
+    """The passes until the auxiliary files are stable on figures known to have their real page
+    boxes, then xdvipdfmx. Returns an exit status.
+
+    ``read1`` reads one byte of what the build says (:class:`Signal`). Pass 1 starts at once and
+    waits at ``\\begin{document}`` for the placeholders (:func:`_first_pass`). While nothing is said
+    of the figures (they are being saved), the passes go on on the placeholders until the auxiliary
+    files are stable there: a pass that left them as it found them is not followed by another.
+    :data:`SAME_BOXES` makes every pass count as one on the real figures (xelatex reads nothing of
+    a figure but its page box, the same in both): a stable pass already made is the last.
+    :data:`FIGURES_REAL` (a box may differ) counts only the passes started after it was said, so at
+    least one more runs."""
     work = tex.parent
     build_dir = work / build_dir_name
-    found = _aux_state(build_dir) if build_dir.is_dir() else None
-    status = _xelatex(tex, build_dir_name)
-    if status != 0:
-        return status
-    said = go()
-    if not said:
-        return CANCELLED
-    if said == SAME_BOXES and _aux_state(build_dir) == found:
-        return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
-    for _ in range(MAX_PASSES):
-        before = _aux_state(build_dir)
-        status = _xelatex(tex, build_dir_name)
+    signal = Signal(read1)
+    before = _aux_state(build_dir) if build_dir.is_dir() else None
+    said_at_start: bytes | None = None               # what was said when the last pass started
+    real_passes = early_passes = 0
+    while True:
+        # pass 1 counts as one on the placeholders whenever the byte came (the build starts the
+        # driver before it saves the figures): the count of passes does not depend on a race
+        said_at_start = signal.poll() if early_passes + real_passes else None
+        status = _xelatex(tex, build_dir_name) if early_passes + real_passes else _first_pass(tex, build_dir_name, signal)
         if status != 0:
             return status
-        if _aux_state(build_dir) == before:
+        if said_at_start:
+            real_passes += 1
+        else:
+            early_passes += 1
+        after = _aux_state(build_dir)
+        stable = after == before
+        before = after
+        said = signal.poll()
+        if said is None and (stable or early_passes >= MAX_PASSES):
+            said = signal.wait()                     # nothing more to do on the placeholders
+        if said is not None and not said:
+            return CANCELLED
+        on_real = said == SAME_BOXES or (said == FIGURES_REAL and said_at_start == FIGURES_REAL)
+        if (stable and on_real) or real_passes >= MAX_PASSES:
             break
     return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
 
@@ -91,6 +148,49 @@ PASS_LINE = "xelatex pass"
 def _xelatex(tex: Path, build_dir_name: str) -> int:
     print(PASS_LINE, flush=True)
     return _run(xelatex_command(tex.name, build_dir_name), tex.parent)
+
+
+#: What pass 1 does at ``\begin{document}`` (the hook's last code, before the .aux is read): wait
+#: for a line on xelatex's standard input, written once the placeholders are there. The terminal
+#: is read in ``\errorstopmode`` only (a read is fatal in nonstop mode); nothing is typeset.
+WAIT_HOOK = r"\AddToHook{begindocument/before}{\errorstopmode\read-1to\reportgenplaceholders\nonstopmode}"
+_SIMPLE_NAME = re.compile(r"[A-Za-z0-9_.-]+\.tex")
+
+
+def first_pass_command(tex_name: str, build_dir: str) -> list[str] | None:
+    """Pass 1 as :func:`xelatex_command`, that reads the preamble at once and waits at
+    ``\\begin{document}`` (:data:`WAIT_HOOK`): the same .xdv and auxiliary files (the job's name
+    given, the file read by ``\\input``), the preamble's ≈ 0.7 s spent while the build writes the
+    figures' placeholders. None for a file name that ``\\input`` would read otherwise."""
+    if not _SIMPLE_NAME.fullmatch(tex_name):
+        return None
+    return ["xelatex", "-no-pdf", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
+            f"-output-directory={build_dir}", f"-jobname={tex_name[:-4]}", WAIT_HOOK + r"\input " + tex_name]
+
+
+def _first_pass(tex: Path, build_dir_name: str, signal: Signal) -> int:
+    """Pass 1, started at once and let on into the document's body once the placeholders are
+    there; stopped (:data:`CANCELLED`) when the build fails before."""
+    cmd = first_pass_command(tex.name, build_dir_name)
+    if cmd is None:
+        signal.placed.wait()
+        return CANCELLED if signal.poll() == b"" else _xelatex(tex, build_dir_name)
+    print(PASS_LINE, flush=True)
+    proc = subprocess.Popen(cmd, cwd=tex.parent, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL)
+    while not signal.placed.wait(0.05):
+        if proc.poll() is not None:               # stopped on an error in the preamble
+            break
+    if proc.poll() is None and signal.poll() == b"":
+        proc.kill()
+        proc.wait()
+        return CANCELLED
+    try:
+        assert proc.stdin is not None
+        proc.stdin.write(b"\n")
+        proc.stdin.close()
+    except OSError:                               # stopped already: its status and log say why
+        pass
+    return proc.wait()
 
 
 def _pdf_number(x: float) -> bytes:
@@ -138,9 +238,8 @@ def media_box(pdf: Path) -> bytes | None:
     return b" ".join(boxes[0].split())
 
 
-def _go_from_stdin() -> bytes:
-    said = sys.stdin.buffer.read(1)
-    return said if said in (FIGURES_REAL, SAME_BOXES) else b""
+def _byte_from_stdin() -> bytes:
+    return sys.stdin.buffer.read(1)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -148,7 +247,7 @@ def main(argv: list[str] | None = None) -> int:
     if len(args) != 2:
         print("usage: python -m latex_templates.passes TEX BUILD_DIR", file=sys.stderr)
         return 2
-    return drive(Path(args[0]).resolve(), args[1], _go_from_stdin)
+    return drive(Path(args[0]).resolve(), args[1], _byte_from_stdin)
 
 
 if __name__ == "__main__":

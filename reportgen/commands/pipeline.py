@@ -3,7 +3,7 @@
     main process   task → solve → note's sections, report.tex → figures (share 1) ─ results.json ─ join ─ join
     figures                                       (forked) figures (share 2) ─┘                    │      │
     sheets         (forked after solve, nice 3)  sheet 1 … sheet n: DXF + PNG preview ─────────────┘      │
-    LaTeX          (first pass beside the figures, on their placeholders)  xelatex passes + xdvipdfmx ─────┘
+    LaTeX          (passes on the figures' placeholders, beside the figures, until stable) → xdvipdfmx ┘
 
 The sheets do not need the note, nor the note the sheets: on a machine with more than one processor
 the sheets are drawn in a forked child process while the main process composes the note, and
@@ -197,13 +197,14 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
         tex = _note_text(project, tmp, timeline)
     pending = None
     boxes: dict[Path, bytes | None] = {}
-    if early and len(figures):
-        _restore_latex(tex, cache)
-        with timeline.stage("note: figure sizes"):
-            figures.write_placeholders()
-        boxes = {target: media_box(target) for _, target in figures.items}
-        pending = _start_passes(tex)
     try:
+        if early and len(figures):
+            _restore_latex(tex, cache)
+            pending = _start_passes(tex)        # pass 1 reads its preamble meanwhile
+            with timeline.stage("note: figure sizes"):
+                figures.write_placeholders()
+            boxes = {target: media_box(target) for _, target in figures.items}
+            pending.placeholders_ready()
         with timeline.stage("note: figures"):
             figures.save(fork=_fork_figures if parallel_possible() else None, cache=cache)
     except BaseException:
@@ -228,7 +229,7 @@ def _start_passes(tex: Path) -> Any:
     from latex_templates.build import start_passes
 
     try:
-        return start_passes(tex)
+        return start_passes(tex, placeholders=False)
     except BuildError as exc:
         raise BuildError("LaTeX", exc.problem, exc.kept) from None
 

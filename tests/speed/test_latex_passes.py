@@ -91,7 +91,8 @@ def test_the_driver_waits_for_the_figures_and_stops_when_told(tmp_path, go, stat
     proc = subprocess.run([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path,
                           input=go, capture_output=True)
     assert proc.returncode == status
-    assert (tmp_path / "b" / "n.aux").is_file()        # the first pass ran either way
+    # stopped before the placeholders were said to be there: pass 1 never read the document's body
+    assert (tmp_path / "b" / "n.aux").is_file() == (status == 0)
     assert (tmp_path / "b" / "n.pdf").is_file() == (status == 0)
     if status == 0:                                    # the contents line needed a second pass
         assert "A" in (tmp_path / "b" / "n.toc").read_text(encoding="utf-8")
@@ -160,3 +161,145 @@ def test_a_placeholder_writes_the_page_box_a_saved_figure_has(tmp_path):
     assert passes.media_box(tmp_path / "f0.pdf") != passes.media_box(tmp_path / "f1.pdf")   # tight, and not
     (tmp_path / "odd.pdf").write_bytes(passes.placeholder_pdf(10.0, 20.0).replace(b"/Resources", b"/Rotate 90 /Resources"))
     assert passes.media_box(tmp_path / "odd.pdf") is None        # a box xelatex might read otherwise
+
+
+def _pass_lines_before_the_byte(tmp_path: Path, count: int, go: bytes) -> tuple[int, int]:
+    """Start the driver on MINIMAL, say that the placeholders are there, wait (≤ 120 s) until it has
+    begun ``count`` passes without being told anything more, then say ``go``; (the passes it ran in
+    all, its exit status)."""
+    import select
+    import time
+
+    (tmp_path / "n.tex").write_text(MINIMAL, encoding="utf-8")
+    (tmp_path / "b").mkdir(exist_ok=True)
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")
+    proc = subprocess.Popen([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path, env=env,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    assert proc.stdin is not None
+    proc.stdin.write(passes.PLACEHOLDERS)
+    proc.stdin.flush()
+    seen, deadline = 0, time.monotonic() + 120
+    try:
+        while seen < count and time.monotonic() < deadline:
+            ready, _, _ = select.select([proc.stdout], [], [], 1.0)
+            if ready:
+                line = proc.stdout.readline()
+                if not line:
+                    break
+                seen += line.decode().strip() == passes.PASS_LINE
+        assert seen == count, f"{seen} passes began before the figures were said to be saved, not {count}"
+        out, _ = proc.communicate(go, timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    return seen + sum(line == passes.PASS_LINE for line in out.decode().splitlines()), proc.returncode
+
+
+@needs_tex
+def test_the_passes_go_on_on_the_placeholders_until_stable_and_same_boxes_ends_them(tmp_path):
+    """A cold build's two passes run beside the figures' saving: the second (the contents line
+    filled in) begins before the byte, and with SAME_BOXES no pass follows it."""
+    total, status = _pass_lines_before_the_byte(tmp_path, 2, passes.SAME_BOXES)
+    assert status == 0 and total == 2
+    assert "A" in (tmp_path / "b" / "n.toc").read_text(encoding="utf-8")
+    assert (tmp_path / "b" / "n.pdf").is_file()
+
+
+@needs_tex
+def test_figures_real_means_one_more_pass_after_the_placeholders_were_stable(tmp_path):
+    """FIGURES_REAL (a box may differ): the passes on the placeholders do not count, one more runs
+    on the real figures (stable there: the last)."""
+    total, status = _pass_lines_before_the_byte(tmp_path, 2, passes.FIGURES_REAL)
+    assert status == 0 and total == 3
+
+
+@needs_tex
+def test_the_driver_stops_after_the_pass_running_when_the_build_fails(tmp_path):
+    total, status = _pass_lines_before_the_byte(tmp_path, 2, b"")
+    assert status == passes.CANCELLED and total == 2
+    assert not (tmp_path / "b" / "n.pdf").exists()
+
+
+FIGURED = ("\\documentclass{article}\\usepackage{graphicx}\\begin{document}\\tableofcontents\\section{A}"
+           "\\includegraphics{f.pdf}\\label{a} \\pageref{a}\\end{document}\n")
+
+
+@needs_tex
+def test_the_waiting_first_pass_writes_the_xdv_and_aux_files_of_a_plain_pass(tmp_path):
+    """Pass 1 started before the placeholders (the wait hook, the job's name, ``\\input``) makes the
+    bytes that latexmk's own pass makes."""
+    (tmp_path / "n.tex").write_text(FIGURED, encoding="utf-8")
+    (tmp_path / "f.pdf").write_bytes(passes.placeholder_pdf(100.5, 70.25))
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")
+    made = {}
+    for name, cmd in (("plain", passes.xelatex_command("n.tex", "plain")),
+                      ("waiting", passes.first_pass_command("n.tex", "waiting"))):
+        (tmp_path / name).mkdir()
+        proc = subprocess.run(cmd, cwd=tmp_path, env=env, input=b"\n", capture_output=True)
+        assert proc.returncode == 0, proc.stdout[-2000:]
+        made[name] = {p.name: p.read_bytes() for p in (tmp_path / name).iterdir() if p.suffix != ".log"}
+    assert set(made["plain"]) == {"n.aux", "n.toc", "n.xdv"}
+    assert made["waiting"] == made["plain"]
+    assert passes.first_pass_command("my note.tex", "b") is None      # \input would read another name
+
+
+def _children(pid: int) -> list[int]:
+    out = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            out.append(int(stat.parent.name))
+    return out
+
+
+@needs_tex
+@pytest.mark.skipif(not Path("/proc/self/syscall").exists(), reason="needs Linux's /proc/PID/syscall")
+def test_pass_1_waits_for_the_placeholders_at_begin_document(tmp_path):
+    """Started before the placeholders are there, pass 1 stops reading its standard input (the
+    wait hook, at ``\\begin{document}``: its preamble read) and has not begun the body (no .aux);
+    told, it goes on and the build ends as usual."""
+    import time
+
+    (tmp_path / "n.tex").write_text(FIGURED, encoding="utf-8")
+    (tmp_path / "b").mkdir()
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")
+    proc = subprocess.Popen([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path, env=env,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    try:
+        waiting, deadline = False, time.monotonic() + 120
+        while not waiting and time.monotonic() < deadline:
+            time.sleep(0.2)
+            for child in _children(proc.pid):
+                try:
+                    call = (Path("/proc") / str(child) / "syscall").read_text().split()
+                except OSError:
+                    continue
+                waiting = call[:2] == ["0", "0x0"]          # read(0, …): xelatex waits on its input
+        assert waiting and proc.poll() is None
+        assert not (tmp_path / "b" / "n.aux").exists()
+        (tmp_path / "f.pdf").write_bytes(passes.placeholder_pdf(100.5, 70.25))
+        out, _ = proc.communicate(passes.PLACEHOLDERS + passes.SAME_BOXES, timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 0
+    assert sum(line == passes.PASS_LINE for line in out.decode().splitlines()) == 2
+    assert (tmp_path / "b" / "n.pdf").is_file()
+
+
+@needs_tex
+def test_an_error_in_the_preamble_is_reported_while_pass_1_waits_for_the_placeholders(tmp_path):
+    tex = tmp_path / "bad.tex"
+    tex.write_text("\\documentclass{article}\\usepackage{nosuchpackagexyz}\\begin{document}x\\end{document}\n",
+                   encoding="utf-8")
+    pending = start_passes(tex, placeholders=False)
+    pending.proc.wait(timeout=120)                        # nothing said: the error ends the driver
+    with pytest.raises(BuildError) as exc:
+        pending.wait()
+    assert "nosuchpackagexyz" in exc.value.problem
+    assert str(tex) in exc.value.kept and "bad.log" in exc.value.kept

@@ -28,7 +28,7 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
     called before each part."""
     from ...project import Project
     from ...taskfile import load_task
-    from . import runs, speed
+    from . import latex, runs, speed
 
     say = progress or (lambda _name: None)
     t0 = time.perf_counter()
@@ -53,6 +53,8 @@ def run_bench(task_path: Path, *, quick: bool = False, progress=None) -> BenchRe
         rep.tables.append(runs.planetary_table(project, (60, 120, 250) if quick else (60, 120, 250, 500, 1000)))
     say("the build's critical path")
     rep.tables.append(speed.critical_path_table(Path(task_path), quick))
+    say("an xelatex pass")
+    rep.tables.append(latex.pass_table(Path(task_path), quick))
     say("cold, warm and incremental builds")
     rep.tables.append(speed.builds_table(Path(task_path), quick))
     say("the solver")

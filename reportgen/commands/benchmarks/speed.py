@@ -83,10 +83,11 @@ def critical_path_table(task_path: Path, quick: bool) -> Table:
                    "Python process (solve, the note's sections and report.tex, then its figures: half of them saved "
                    "by a second forked process meanwhile; results.json, then it waits), sheets = a forked process "
                    "at a lower priority (DXF + PNG preview of each sheet), LaTeX = xelatex's passes and xdvipdfmx "
-                   "(latex_templates/passes.py; the first pass starts on placeholders of the figures' sizes while "
-                   "the figures are saved, the next ones once they are)")
-    t.notes.append("the critical path is main (solve → note's sections → figure sizes) → LaTeX (first pass beside "
-                   "the figures, then the passes on the real figures, xdvipdfmx); the sheets overlap the note and LaTeX")
+                   "(latex_templates/passes.py; pass 1 reads its preamble while the placeholders of the figures' sizes are "
+                   "written, then the passes run on them while the figures are saved, until the aux files are stable; "
+                   "xdvipdfmx once the figures are there)")
+    t.notes.append("the critical path is main (solve → note's sections → figure sizes → figures) → xdvipdfmx, with LaTeX's "
+                   "passes beside the figures (on the critical path when they end later); the sheets overlap the note and LaTeX")
     t.notes.append(_load_note())
     if not pdf:
         t.notes.append("LaTeX not run (" + ("--quick" if quick else "latexmk not found") + ")")
