@@ -112,11 +112,16 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     with timeline.stage("solve"):
         results = build_results(project)
     task = project.task
-    todo = _sheet_list(project) if sheets else []
-    if todo and parallel_possible():
-        _shared_imports()
-        _shared_stages(project, todo)
-    child = _Child.start(project, tmp, todo, cache) if todo and parallel_possible() else None
+    child = None
+    todo: list[tuple[str, Any]] = []
+    if sheets and parallel_possible():
+        # forked before the main process imports matplotlib, ezdxf only in the sheets' process: it
+        # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
+        _shared_imports(project)
+        _shared_stages(project)
+        child = _Child.start(project, tmp, None, cache)
+    elif sheets:
+        todo = _sheet_list(project)
     pending = None
     try:
         if (task.mechanism is not None or task.gears is not None or task.planetary is not None
@@ -155,22 +160,25 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     return results
 
 
-def _shared_imports() -> None:
-    """Load what both the note and the sheets use (matplotlib with the note's style, shapely, Jinja
-    and the catalogues) before the sheets' process is forked: the child inherits it instead of
-    importing it a second time (≈ 0.5 s of CPU); the note would import it next anyway."""
+def _shared_imports(project: Any) -> None:
+    """Load what both the note and the sheets use (shapely, Jinja, the strings catalogue of the
+    task's language) before the sheets' process is forked: the child inherits it instead of loading
+    it a second time; the note would load it next anyway. What only one of them uses is loaded by
+    that one after the fork, beside the other: matplotlib (≈ 0.3 s) by the note, ezdxf and the
+    sheet modules (≈ 0.25 s) by the sheets (tests/speed/test_pipeline.py)."""
     import shapely.geometry  # noqa: F401
 
-    import latex_templates.figures  # noqa: F401
-    import latex_templates.render  # noqa: F401
+    from latex_templates.render import Strings
+    Strings(project.task.document.language or "ru")
 
 
-def _shared_stages(project: Any, todo: list[tuple[str, Any]]) -> None:
+def _shared_stages(project: Any) -> None:
     """Compute before the fork the costly stages that both the note and a sheet read, so that the
     two processes do not each compute them: the meshing picture with its designations placed
-    (≈ 0.2 s of CPU; section 4 and the gears' sheet). The note reads it anyway, so the main process
-    does no more than it would; the cheaper scenes are left to whichever process reads them."""
-    if project.task.gears is not None and any(stem.endswith("-gears") for stem, _ in todo):
+    (≈ 0.2 s of CPU; section 4 and the gears' sheet, both made whenever the task has a gear pair).
+    The note reads it anyway, so the main process does no more than it would; the cheaper scenes
+    are left to whichever process reads them."""
+    if project.task.gears is not None and getattr(project.task, "kind", "") != "crane":
         _ = project.scenes.meshing
 
 
@@ -346,15 +354,15 @@ class _Child:
         self.stage = stage
 
     @classmethod
-    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any) -> "_Child":
-        """Draw the sheets in a child process."""
-        (tmp / "sheets").mkdir(exist_ok=True)
+    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]] | None, cache: Any) -> "_Child":
+        """Draw the sheets in a child process (``todo`` None: the sheets the task has, listed there)."""
 
         def work() -> list[Span]:
             # the sheets are off the critical path (solve → note → LaTeX): let the scheduler give
             # the note's processes and xelatex the processors first, the sheets the time left over
             _lower_priority(SHEETS_NICENESS)
-            return list(draw_sheets(project, tmp, todo, cache))
+            sheets = _sheet_list(project) if todo is None else todo
+            return list(draw_sheets(project, tmp, sheets, cache)) if sheets else []
 
         return cls.fork(work, "sheets")
 
