@@ -204,16 +204,29 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline)
     pending = None
+    split = None
     boxes: dict[Path, bytes | None] = {}
     if early and len(figures):
         _restore_latex(tex, cache)
+        targets = [target for _, target in figures.items]
         with timeline.stage("note: figure sizes"):
-            figures.write_placeholders()
-        boxes = {target: media_box(target) for _, target in figures.items}
-        pending = _start_passes(tex)
+            if parallel_possible():      # measured in two processes, each then saves its share
+                split = figures.start_split(_fork_figures_ready, cache)
+            else:
+                figures.write_placeholders()
+        boxes = {target: media_box(target) for target in targets}
+        try:
+            pending = _start_passes(tex)
+        except BaseException:
+            if split is not None:
+                split.cancel()
+            raise
     try:
         with timeline.stage("note: figures"):
-            figures.save(fork=_fork_figures if parallel_possible() else None, cache=cache)
+            if split is not None:
+                split.finish()
+            else:
+                figures.save(fork=_fork_figures if parallel_possible() else None, cache=cache)
     except BaseException:
         if pending is not None:
             pending.cancel()
@@ -243,6 +256,10 @@ def _start_passes(tex: Path) -> Any:
 
 def _fork_figures(work: Any) -> "_Child":
     return _Child.fork(work, "note's figures")
+
+
+def _fork_figures_ready(work: Any) -> "_Child":
+    return _Child.fork(work, "note's figures", ready=True)
 
 
 def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
@@ -348,10 +365,11 @@ class _Child:
     the note's figures) and sends back its result, or the exception that stopped it (re-raised in
     the parent with its class and fields)."""
 
-    def __init__(self, pid: int, fd: int, stage: str = "sheets") -> None:
+    def __init__(self, pid: int, fd: int, stage: str = "sheets", ready_fd: int | None = None) -> None:
         self.pid = pid
         self.fd = fd
         self.stage = stage
+        self.ready_fd = ready_fd
 
     @classmethod
     def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]] | None, cache: Any) -> "_Child":
@@ -367,9 +385,12 @@ class _Child:
         return cls.fork(work, "sheets")
 
     @classmethod
-    def fork(cls, work: Any, stage: str = "sheets") -> "_Child":
-        """Run ``work()`` in a forked child; :meth:`join` returns its (picklable) result."""
+    def fork(cls, work: Any, stage: str = "sheets", *, ready: bool = False) -> "_Child":
+        """Run ``work()`` in a forked child; :meth:`join` returns its (picklable) result. With
+        ``ready``, ``work(ready)`` gets a function to call when the parent may go on
+        (:meth:`wait_ready` returns then, or when the child ends without calling it)."""
         r, w = os.pipe()
+        ready_r, ready_w = os.pipe() if ready else (None, None)
         sys.stdout.flush()
         sys.stderr.flush()
         pid = os.fork()
@@ -379,7 +400,12 @@ class _Child:
             try:
                 signal.signal(signal.SIGINT, signal.SIG_DFL)
                 try:
-                    payload: tuple[str, Any] = ("ok", work())
+                    if ready_w is not None:
+                        assert ready_r is not None
+                        os.close(ready_r)
+                        payload: tuple[str, Any] = ("ok", work(lambda: _say_ready(ready_w)))
+                    else:
+                        payload = ("ok", work())
                 except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
                     payload = ("error", _portable(exc))
                 data = pickle.dumps(payload)
@@ -390,9 +416,22 @@ class _Child:
             finally:
                 os._exit(status)
         os.close(w)
-        return cls(pid, r, stage)
+        if ready_w is not None:
+            os.close(ready_w)
+        return cls(pid, r, stage, ready_r)
+
+    def wait_ready(self) -> None:
+        """Wait until the child calls ``ready()`` (see :meth:`fork`) or ends; an error it ended
+        with is raised by :meth:`join`."""
+        if self.ready_fd is not None:
+            try:
+                os.read(self.ready_fd, 1)
+            finally:
+                os.close(self.ready_fd)
+                self.ready_fd = None
 
     def join(self) -> Any:
+        self.wait_ready()
         with os.fdopen(self.fd, "rb") as f:
             data = f.read()
         _, status = os.waitpid(self.pid, 0)
@@ -412,11 +451,23 @@ class _Child:
                 os.waitpid(self.pid, 0)
             except (ProcessLookupError, ChildProcessError):
                 pass
-            try:
-                os.close(self.fd)
-            except OSError:
-                pass
+            for fd in (self.fd, self.ready_fd):
+                try:
+                    if fd is not None:
+                        os.close(fd)
+                except OSError:
+                    pass
+            self.ready_fd = None
             self.pid = 0
+
+
+def _say_ready(fd: int) -> None:
+    """The child's ``ready()``: one byte to the parent's :meth:`_Child.wait_ready`, once."""
+    try:
+        os.write(fd, b"1")
+        os.close(fd)
+    except OSError:
+        pass
 
 
 def _lower_priority(increment: int) -> None:
