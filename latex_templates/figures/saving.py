@@ -224,7 +224,7 @@ class FigureQueue:
         todo = []
         for fig, target in items:
             if isinstance(fig, KeptFigure):     # the kept PDF itself, when it is still there
-                if cache is not None and cache.copy_figure(fig.reportgen_key, target):
+                if cache is not None and cache.restore_figure(fig.reportgen_key, target):
                     continue
                 fig = fig.make()
             else:
