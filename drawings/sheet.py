@@ -15,6 +15,7 @@ import os
 from dataclasses import dataclass, replace
 from typing import Any, Sequence
 
+import shapely
 from ezdxf.document import Drawing
 from shapely.geometry import Polygon, box
 
@@ -163,6 +164,16 @@ def fit_text(text: str, width: float, height: float, *, max_height: float,
 # views
 
 
+#: Text boxes are shrunk by this much (mm) on each side before :meth:`Sheet.content_overlaps`
+#: compares them with another view's drawing.
+CONTENT_TOUCH_MM = 0.25
+
+
+def view_of(owner: str) -> str:
+    """The view a canvas belongs to: ``plans_all/3`` (a part drawn as a canvas of its own) → ``plans_all``."""
+    return owner.split("/", 1)[0]
+
+
 #: The smallest height a view's caption is lettered down to, mm (ГОСТ 2.304 size 3.5).
 TITLE_MIN_MM = 3.5
 
@@ -174,6 +185,7 @@ class View(Canvas):
         super().__init__(sheet.msp, transform, sheet.annotations, name)
         self.sheet = sheet
         self.rect = rect
+        sheet.annotations.regions[name] = rect.polygon()
 
     def title(self, text: str, height: float = 5.0) -> None:
         """A caption centred above the view (inside its rectangle's top margin). A caption wider
@@ -292,13 +304,56 @@ class Sheet:
                 found.append(Overlap(name, "outside the frame", outside))
         found += find_overlaps(list(self.annotations.boxes))
         for name, poly in self.annotations.boxes:
-            owner = name.split(":", 1)[0]
+            owner = view_of(name.split(":", 1)[0])
             for vname, vpoly in views + reserved:
                 if vname == f"view {owner}":
                     continue
                 area = poly.intersection(vpoly).area
                 if area > AREA_EPS_MM2:
                     found.append(Overlap(name, vname, area))
+        return found
+
+    def content_overlaps(self) -> list[Overlap]:
+        """Where the drawings of two views meet: a line, ring or filled shape one canvas drew (or a
+        text box of it, shrunk by ``CONTENT_TOUCH_MM`` so that texts set edge to edge only touch)
+        intersecting another canvas's. A view's parts drawn as canvases of their own (``view/part``,
+        the small velocity plans' cells) count apart: :meth:`overlaps` compares the views'
+        rectangles and texts only, not what is drawn in them (a plan spilling into the next)."""
+        items: list[tuple[str, Any]] = [(owner, g) for owner, g in self.annotations.drawn]
+        for name, poly in self.annotations.boxes:
+            shrunk = poly.buffer(-CONTENT_TOUCH_MM, join_style=2)
+            if not shrunk.is_empty:
+                items.append((name.split(":", 1)[0], shrunk))
+        if len(items) < 2:
+            return []
+        geoms = [g for _, g in items]
+        left, right = shapely.STRtree(geoms).query(geoms, predicate="intersects")
+        seen: set[tuple[str, str]] = set()
+        found: list[Overlap] = []
+        for i, j in zip(left.tolist(), right.tolist()):
+            a, b = items[i][0], items[j][0]
+            if i >= j or a == b or (min(a, b), max(a, b)) in seen:
+                continue
+            seen.add((min(a, b), max(a, b)))
+            found.append(Overlap(f"view {a}", f"view {b}", geoms[i].intersection(geoms[j]).area))
+        return found
+
+    def content_outside(self, tol_mm: float = CONTENT_TOUCH_MM) -> list[str]:
+        """What a view drew outside its own rectangle (a part drawn as a canvas of its own: outside
+        its part, a small plan's cell) by more than ``tol_mm``: (view, what, how far) as text."""
+        found: list[str] = []
+        items = [(o, g, "line") for o, g in self.annotations.drawn]
+        items += [(n.split(":", 1)[0], b.buffer(-CONTENT_TOUCH_MM, join_style=2), n.split(":", 1)[1].strip())
+                  for n, b in self.annotations.boxes]
+        for owner, geom, what in items:
+            region = self.annotations.regions.get(owner)
+            if region is None or geom.is_empty:
+                continue
+            far = geom.difference(region.buffer(tol_mm, join_style=2))
+            if not far.is_empty:
+                out = max(shapely.points(shapely.get_coordinates(far)), key=region.distance)
+                found.append(f"view {owner}: {what} {region.distance(out):.1f} mm outside at "
+                             f"({out.x:.1f}, {out.y:.1f})")
         return found
 
     # -- output -------------------------------------------------------------------------------

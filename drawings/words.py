@@ -56,6 +56,14 @@ def tr(key: str, **values) -> str:
     return str(_strings().text(key, **values))
 
 
+def tr_list(key: str) -> list[str]:
+    """A list of the catalogue (a table's header row, ``crane.sheet.drive.head``) as plain text."""
+    value = _strings().raw(key)
+    if not isinstance(value, list):
+        raise InternalError("drawings.words", f"{key!r} is not a list in the catalogue")
+    return [str(x) for x in value]
+
+
 def symbol(name: str) -> str:
     """A load or label name with Russian subscript words (``Fур``, ``Mпр``, ``Адв``) in this language."""
     return _strings().symbol(name)

@@ -70,7 +70,8 @@ def assignment_section(project) -> Section:
         from reportgen.control.tables import table
         t = table(cw.table)
         ctx["control"] = {"table": t.number, "variant": cw.variant, "page": t.page,
-                          "columns": [(label_tex(c.label), c.printed[cw.variant - 1]) for c in t.columns],
+                          "columns": [(label_tex(c.label, strings), _printed(c.printed[cw.variant - 1], strings))
+                                      for c in t.columns],
                           "scheme": scheme_phrases(t.scheme, strings)}
     return Section(key="assignment", title=strings.get("headings.assignment"), template="assignment.tex.j2",
                    context=ctx, figures=figures)
@@ -81,8 +82,15 @@ def _expr_tex(expr: str) -> str:
     return re.sub(r"l_([A-Z]+)", r"l_{\1}", expr.replace("*", r" \cdot ")).replace("+ -", "- ")
 
 
-def label_tex(label: str) -> Tex:
-    """A printed column heading as LaTeX: "lCE =lEF, м" → "$l_{CE} = l_{EF}$, м", "ϕ , °" → "$\\varphi$, °"."""
+def _printed(value: str, strings) -> str:
+    """A table value as the manual prints it (decimal comma), with the language's decimal mark."""
+    mark = "," if strings.raw("format.decimal") == "{,}" else "."
+    return value.replace(",", mark)
+
+
+def label_tex(label: str, strings=None) -> Tex:
+    """A printed column heading as LaTeX: "lCE =lEF, м" → "$l_{CE} = l_{EF}$, м", "ϕ , °" → "$\\varphi$, °";
+    the unit in the language of ``strings`` (``м`` → ``m``)."""
     name, _, unit = label.partition(",")
     parts = []
     for p in (x.strip() for x in name.split("=")):
@@ -96,6 +104,8 @@ def label_tex(label: str) -> Tex:
         else:
             parts.append(p)
     unit = unit.strip()
+    if unit and strings is not None:
+        unit = strings.math_word(unit)
     return Tex("$" + " = ".join(parts) + "$" + (f", {unit}" if unit else ""))
 
 

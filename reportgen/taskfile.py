@@ -140,15 +140,7 @@ def parse_task(data: dict, source: str = "") -> Task:
             control_work = ControlWork()
     task = Task(document=document, mechanism=mechanism, analysis=analysis, dynamics=dynamics,
                 gears=gears, planetary=planetary, crane=crane, control_work=control_work, source=str(source))
-    language = document.language or "ru"
-    if task.kind in RUSSIAN_ONLY_KINDS and language != "ru":
-        raise TaskError("document.language", f"{language!r}: the {task.kind} document is written in "
-                        "Russian only so far (its words are not yet translated)", '"ru" (or leave it out)')
     return task
-
-
-#: Kinds of document whose words exist only in the Russian catalogue (docs/languages.md).
-RUSSIAN_ONLY_KINDS = ("crane", "control-work")
 
 
 def _control_work(value: Any, path: str) -> ControlWork:

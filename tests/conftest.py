@@ -88,6 +88,12 @@ SLOW_TESTS = (
     "tests/robustness/test_scaled_sheets.py::test_scaled_example_builds_without_pdf",
     # section 3 of the press × 100 rendered in three languages
     "tests/hard_cases/test_wittenbauer_fits.py::test_the_note_says_the_energy_graph_is_reduced",
+    # sheet 4 drawn at the corners of the examples' blocking contours and for every gear example;
+    # sheet 3 at each example's grid and at 24 positions; note ↔ sheet 4 places (issue 12)
+    "tests/scenes/test_meshing_marks.py::test_sheet4_texts_apart_at_contour_corners",
+    "tests/scenes/test_meshing_marks.py::test_sheet4_texts_apart",
+    "tests/scenes/test_meshing_note_sheet_same.py::test_designations_at_the_same_places_in_note_and_sheet",
+    "tests/dynamics_presentation/test_sheet3_numbers.py::test_sheet3_numbers_apart_and_beside_their_nodes",
 )
 
 

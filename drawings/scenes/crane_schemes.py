@@ -13,6 +13,7 @@ from typing import Sequence
 from drawings.layout import Rect
 from drawings.primitives import Transform
 from drawings.sheet import Sheet, View
+from drawings.words import tr
 from reportgen.tolerances import MM_ROUNDOFF
 
 ROW_MM = 8.0          # table rows
@@ -185,7 +186,7 @@ def motor(view: View, x0: float, y: float, w: float = 40.0, h: float = 26.0) -> 
     returns x of the shaft's exit."""
     view.polyline([(x0, y - h / 2), (x0 + w, y - h / 2), (x0 + w, y + h / 2), (x0, y + h / 2)], "contour",
                   closed=True)
-    view.text((x0 + w / 2, y), "М", 5.0, "center")
+    view.text((x0 + w / 2, y), tr("crane.sheet.motor_letter"), 5.0, "center")
     return x0 + w
 
 

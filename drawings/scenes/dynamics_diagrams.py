@@ -17,10 +17,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from drawings import style
 from drawings.layout import LAYOUT_LIMIT, Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from reportgen.dynamics.graphical import KL_DECIMALS
 from reportgen.errors import BuildError
+from reportgen.tolerances import ABS_ZERO, MM_EPS
 from reportgen.scenes import dynamics as ds
 from reportgen.scenes.scene import Polyline, Scene, Segment
 from .render import draw_entities
@@ -256,15 +259,83 @@ def draw_wittenbauer(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Sce
         mid = math.radians(psi / 2)
         v.label((r_arc * math.cos(mid), y0 + r_arc * math.sin(mid)), name, 3.5, gap_mm=1.0, prefer_deg=-20.0)
     nodes = pts[:-1]
-    for p, name in zip(nodes, labels[:-1]):
-        if name.isdigit():           # beside its own node: never nearer to another node (issue 12, «5», «7»)
-            v.label(p, name, 3.5, gap_mm=1.0, others=[q for q in nodes if q != p])
+    numbered = [(p, name) for p, name in zip(nodes, labels[:-1]) if name.isdigit()]
+    number_labels(v, numbered, nodes)
     v.circle_mm((0.0, K_mm), 0.8, "contour")
     v.circle_mm((0.0, L_mm), 0.8, "contour")
     v.text((-2.0, K_mm + 1.0), "K", 5.0, "bottom-right")
     v.text((-2.0, L_mm - 1.0), "L", 5.0, "top-right")
-    kl = v.dimension((0.0, L_mm), (0.0, K_mm), offset_mm=LEFT_MM + 2.0, decimals=1)
+    kl = v.dimension((0.0, L_mm), (0.0, K_mm), offset_mm=LEFT_MM + 2.0, decimals=KL_DECIMALS)
     return v, kl
+
+
+#: The positions' numbers on the Wittenbauer curve: letter height, the distances tried beside the
+#: node (sheet mm, from the node to the number's padded box) and the leaders' lengths where the
+#: curve crowds its nodes (class3 with 24 positions: «23» on «0», «12» on «13»).
+NUMBER_H = 3.5
+NUMBER_GAPS = (1.0, 2.5)
+NUMBER_LEADERS = (6.0, 9.0, 12.0, 16.0, 21.0)
+
+
+def number_labels(v: View, numbered, nodes) -> None:
+    """Each position's number beside its node (model points): the first of 16 directions — from
+    the one away from the curve's middle — and NUMBER_GAPS where the number's box overlaps no text
+    (the padded boxes keep 1 mm between letters), crosses no drawn line and is nearer to its own
+    node than to any other; else on a thin leader from the node (NUMBER_LEADERS), its box clear of
+    the texts and lines, the leader crossing no text and the fewest lines; else where
+    :meth:`drawings.primitives.Canvas.label` puts it."""
+    from shapely.geometry import LineString, Point
+
+    from drawings.primitives import text_box
+    sheet_nodes = [v.transform(q) for q in nodes]
+    mid = (sum(q[0] for q in sheet_nodes) / len(sheet_nodes), sum(q[1] for q in sheet_nodes) / len(sheet_nodes))
+    ann = v.annotations
+    for p, name in numbered:
+        P = v.transform(p)
+        rivals = [Point(q) for q in sheet_nodes if math.dist(q, P) > MM_EPS]
+        away = math.degrees(math.atan2(P[1] - mid[1], P[0] - mid[0])) if math.dist(P, mid) > MM_EPS else 45.0
+        order = [away + sgn * i * 22.5 for i in range(9) for sgn in ((1, -1) if i else (1,))][:16]
+        w = style.text_width(name, NUMBER_H)
+        placed = False
+        for gap in NUMBER_GAPS:
+            for ang in order:
+                ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
+                t = min((w / 2 + 0.5) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
+                        (NUMBER_H / 2 + 0.5) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
+                c = (P[0] + ux * (t + gap), P[1] + uy * (t + gap))
+                poly = text_box(c, name, NUMBER_H, "center", descend=True)
+                own = poly.distance(Point(P))
+                if ann.hits_box(poly) or ann.crossings(poly) or any(poly.distance(q) < own for q in rivals):
+                    continue
+                v.text_mm(c, name, NUMBER_H, "center", names=Point(P))
+                placed = True
+                break
+            if placed:
+                break
+        if placed:
+            continue
+        best = None
+        for rank, (L, ang) in enumerate((L, a) for L in NUMBER_LEADERS for a in order):
+            ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
+            end = (P[0] + ux * L, P[1] + uy * L)
+            t = min((w / 2 + 0.5) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
+                    (NUMBER_H / 2 + 0.5) / abs(uy) if abs(uy) > ABS_ZERO else math.inf)
+            c = (end[0] + ux * (t + 0.5), end[1] + uy * (t + 0.5))
+            poly = text_box(c, name, NUMBER_H, "center", descend=True)
+            leader = LineString([(P[0] + ux * 1.2, P[1] + uy * 1.2), end])
+            if ann.hits_box(poly) or ann.crossings(poly) or any(leader.intersects(b) for _, b in ann.boxes):
+                continue
+            score = (ann.crossings(leader), rank)
+            if best is None or score < best[0]:
+                best = (score, c, end)
+            if score[0] == 0:
+                break
+        if best is None:
+            v.label(p, name, NUMBER_H, gap_mm=1.0, others=[q for q in nodes if q != p])
+            continue
+        _, c, end = best
+        v.line(p, (end[0] - P[0] + p[0], end[1] - P[1] + p[1]), "thin")
+        v.text_mm(c, name, NUMBER_H, "center", names=LineString([P, end]))
 
 
 def draw_inertia(sheet: Sheet, lay: Layout, g, labels: list[str], scene: Scene) -> View:

@@ -7,6 +7,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
 from reportgen import gost_scales
+from reportgen.dynamics.graphical import KL_DECIMALS
 from reportgen.dynamics.hub import Hub, bore_outline, hub_of, section_rects
 from reportgen.tolerances import MM_ROUNDOFF
 from ..words import tr
@@ -159,7 +160,7 @@ def result_rows(res, kl_on_sheet: float) -> list[tuple[str, str]]:
             (tr("sheets.fw11"), format_significant(g.mu_J, 4)),
             (tr("sheets.fw12"), format_number(g.psi_max_deg, 2)),
             (tr("sheets.fw13"), format_number(g.psi_min_deg, 2)),
-            (tr("sheets.fw14"), format_number(kl_on_sheet, 1)),
+            (tr("sheets.fw14"), format_number(kl_on_sheet, KL_DECIMALS)),
             (tr("sheets.fw15"), format_significant(res.delta_target, 4))]
     for c in res.comparison:
         rows.append((tr("sheets.fw21", v1=names[c.method]), format_significant(c.J_fly, 4)))

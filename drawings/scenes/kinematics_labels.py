@@ -108,7 +108,7 @@ def size(label: Label, height: float) -> tuple[float, float, float]:
     w = sum(_one_width(r, height) for r in items)
     w += style.text_width(SEPARATOR, height) * (len(items) - 1)
     depth = max(0.35 * height if any(r.sub for r in items) else 0.0,
-                descent("".join(r.base for r in items), height))
+                descent("".join(r.base for r in items) + (SEPARATOR if len(items) > 1 else ""), height))
     rise = max(0.0, 0.45 * height + small - height) if any(r.sup for r in items) else 0.0
     return w, depth, rise
 
@@ -160,19 +160,22 @@ def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
 
 def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: float,
                inside: Polygon | None = None, optional: bool = False,
-               names: Names = None) -> Polygon | None:
+               names: Names = None, avoid: BaseGeometry | None = None) -> Polygon | None:
     """Draw ``label`` at the first candidate centre (sheet mm) whose box overlaps no text and
     crosses no line (and lies ``inside``), else at the one with the fewest conflicts; an
-    ``optional`` label that would overlap a text (or leave ``inside``) is not drawn."""
-    return place_passes(canvas, [(candidates, 0)], label, height, inside, optional, names)
+    ``optional`` label that would overlap a text (or leave ``inside``) is not drawn. ``avoid``:
+    lines a label never crosses where any candidate keeps off them (a scheme's links), counted as
+    leaving ``inside``."""
+    return place_passes(canvas, [(candidates, 0)], label, height, inside, optional, names, avoid)
 
 
 def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], label: Label,
                  height: float, inside: Polygon | None = None, optional: bool = False,
-                 names: Names = None) -> Polygon | None:
+                 names: Names = None, avoid: BaseGeometry | None = None) -> Polygon | None:
     """Like :func:`place_rich` over several passes of (candidates, lines it may cross): the first
-    candidate of the first pass that overlaps no text, stays ``inside`` and crosses at most that
-    many lines wins; otherwise the candidate with the fewest conflicts over all passes."""
+    candidate of the first pass that overlaps no text, stays ``inside`` (and off ``avoid``) and
+    crosses at most that many lines wins; otherwise the candidate with the fewest conflicts over
+    all passes."""
     boxes = [b for _, b in canvas.annotations.boxes]
     tree = shapely.STRtree(boxes) if boxes else None
 
@@ -186,7 +189,7 @@ def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], la
     for candidates, tolerate in passes:
         for c in candidates:
             poly = rich_box(label, c, height)
-            out = 0 if inside is None or inside.contains(poly) else 1
+            out = 0 if (inside is None or inside.contains(poly)) and (avoid is None or not avoid.intersects(poly)) else 1
             h = hits(poly)
             crossings = canvas.annotations.crossings(poly) if out == 0 and h == 0 else 99
             if out == 0 and h == 0 and crossings <= tolerate:
@@ -302,17 +305,18 @@ def own_point(candidates: Sequence[Vec], label: Label, height: float, p: Vec,
 
 def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefer_deg: float,
                       others: Sequence[Vec], inside: Polygon | None = None,
-                      optional: bool = False) -> Polygon | None:
+                      optional: bool = False, avoid: BaseGeometry | None = None,
+                      far_gaps: Sequence[float] = (8.0, 11.0, 14.0, 18.0)) -> Polygon | None:
     """A point's letter: beside ``p`` (within LABEL_NEAR_MM, nearer to it than to the ``others``)
     where it overlaps no text and crosses no line, then crossing one line; where no such spot is
-    free, farther out on a thin leader from the point (the leader is part of what it names);
-    else beside it, overlapping the fewest."""
+    free, farther out (``far_gaps``) on a thin leader from the point (the leader is part of what
+    it names); else beside it, overlapping the fewest. ``avoid``: see :func:`place_passes`."""
     from shapely.geometry import LineString, Point
     from reportgen.tolerances import LABEL_NEAR_MM
     near = own_point(around(p, label, height, prefer_deg, gaps=(0.6, 1.5, 3.0, 4.5, 6.0)),
                      label, height, p, others, LABEL_NEAR_MM - 1.0)
     poly = place_passes(canvas, [(near, 0), (near, 1)], label, height, inside, optional=True,
-                        names=Point(p)) if near else None
+                        names=Point(p), avoid=avoid) if near else None
     if poly is not None:
         return poly
     leader: list = []
@@ -322,11 +326,12 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
         leader.append((q.x, q.y))
         return LineString([(q.x, q.y), p])
 
-    far = around(p, label, height, prefer_deg, gaps=(8.0, 11.0, 14.0, 18.0))
-    poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named)
+    far = around(p, label, height, prefer_deg, gaps=far_gaps)
+    poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named, avoid=avoid)
     if poly is not None:
         canvas.layout.add_line(leader[0], p, dxfattribs={"layer": "thin"})
+        canvas.annotations.drawn.append((canvas.name, LineString([leader[0], p])))
         return poly
     fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
     return place_passes(canvas, [(fallback, 0), (fallback, 1)], label, height, inside, optional,
-                        names=Point(p))
+                        names=Point(p), avoid=avoid)

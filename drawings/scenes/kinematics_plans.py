@@ -18,6 +18,7 @@ from drawings.sheet import Sheet, View
 from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
 from reportgen.errors import BuildError
+from reportgen.tolerances import MM_ROUNDOFF
 from reportgen.plans import Plan
 from ..words import tr
 from ..words import unit as words_unit
@@ -73,9 +74,11 @@ class Drawn:
 
 
 def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names: bool = True,
-              letter_height: float = 5.0, small: bool = False, scene: Scene | None = None) -> list[Drawn]:
-    """The plan's scene (:func:`reportgen.scenes.plans.plan_scene`) in ``view`` (model = plan mm).
-    Returns the arrows drawn."""
+              letter_height: float = 5.0, small: bool = False, scene: Scene | None = None,
+              letters: set[str] | None = None) -> list[Drawn]:
+    """The plan's scene (:func:`reportgen.scenes.plans.plan_scene`) in ``view`` (model = plan mm);
+    a ``small`` plan carries only the plan letters in ``letters`` (all if None) and the vectors
+    ending at them. Returns the arrows drawn."""
     scene = scene if scene is not None else plan_scene(plan, image_keys)
     helper = helpers(plan, image_keys)
     symbol, unit, _ = UNITS[plan.kind]
@@ -89,12 +92,15 @@ def draw_plan(view: View, plan: Plan, image_keys: set[str], title: str, *, names
         view.title(title)
     head = 3.5 if small else 5.0
     arrows = [e for e in scene.entities if isinstance(e, Arrow)]
+    if small and letters is not None:         # no vector ends at a point left unlettered (s_k)
+        ends = [plan.points[k] for k in plan.points if k in letters]
+        arrows = [e for e in arrows if any(math.dist(e.b, q) < SAME_MM for q in ends)]
     render.draw_entities(view, arrows, head_mm=head)
     drawn = [Drawn(e.id, e.a, e.b) for e in arrows]
     # letters at the points
     inside = label_region(view, small)
     if small:
-        place_small_letters(view, scene, helper, letter_height, inside)
+        place_small_letters(view, scene, helper, letter_height, inside, letters)
     others = [view.transform(lb.at) for lb in scene.labels if lb.role == "point"]
     for lb in scene.labels if not small else ():
         if lb.role != "point":
@@ -137,13 +143,26 @@ def place_plan_view(sheet: Sheet, name: str, plan: Plan, image_keys: set[str], t
 SMALL_CLUSTER_MM, SMALL_NEAR_MM, SMALL_FAR_MM = 2.5, 3.0, 18.0
 #: A cluster of more letters is labelled in pieces of this many (each placed on its own).
 SMALL_LETTERS = 4
+#: A leader stops this short of its point (mm), where the plan's vectors meet: it must cross none
+#: of them on its way.
+LEADER_GAP_MM = 0.8
+#: Where no leader crossing no vector reaches a free spot (a point inside a tight triangle of
+#: vectors), the leader may cross this many: a thin line over a vector reads, a letter on it not.
+LEADER_CROSSINGS = 3
 
 
-def letter_clusters(scene: Scene, view: View) -> list[tuple[tuple[float, float], list[str]]]:
+def letter_clusters(scene: Scene, view: View, letters: set[str] | None = None
+                    ) -> list[tuple[tuple[float, float], list[str]]]:
     """The point labels of a small plan merged where their points are within ``SMALL_CLUSTER_MM``
-    on paper (single linkage, in the scene's order): (sheet point of the first, plan letters)."""
-    items = [(view.transform(lb.at), lb.anchor.split(":", 1)[1].split(",")) for lb in scene.labels
-             if lb.role == "point"]
+    on paper (single linkage, in the scene's order): (sheet point of the first, plan letters);
+    only the plan letters in ``letters`` (all if None), a point with none of them unlabelled."""
+    items = []
+    for lb in scene.labels:
+        if lb.role != "point":
+            continue
+        keys = [k for k in lb.anchor.split(":", 1)[1].split(",") if letters is None or k in letters]
+        if keys:
+            items.append((view.transform(lb.at), keys))
     parent = list(range(len(items)))
 
     def root(k: int) -> int:
@@ -164,25 +183,68 @@ def letter_clusters(scene: Scene, view: View) -> list[tuple[tuple[float, float],
     return list(out.values())
 
 
-def place_small_letters(view: View, scene: Scene, helper: set[str], height: float, inside: Polygon) -> None:
-    """Letters of a small plan: each cluster of points (:func:`letter_clusters`, in pieces of
-    ``SMALL_LETTERS``) labelled beside
-    it (within ``SMALL_NEAR_MM``) where that overlaps no text and crosses no line; else farther
-    (up to ``SMALL_FAR_MM``) with a thin leader from the point; else beside it crossing one line;
-    a label that would overlap a text or leave the cell is left out (the analysed positions'
-    plans carry every letter)."""
-    chunks = [(p, keys[n:n + SMALL_LETTERS]) for p, keys in letter_clusters(scene, view)
+def place_small_letters(view: View, scene: Scene, helper: set[str], height: float, inside: Polygon,
+                        letters: set[str] | None = None) -> int:
+    """Letters of a small plan (only ``letters``, if given): each cluster of points
+    (:func:`letter_clusters`, in pieces of ``SMALL_LETTERS``) labelled beside it (within
+    ``SMALL_NEAR_MM``, nearer to it than to the other labelled points) where it overlaps no text,
+    crosses no line and stays in the cell; else farther (up to ``SMALL_FAR_MM``) on a thin leader
+    from the point that crosses no line (else no more than ``LEADER_CROSSINGS``) and no text;
+    else beside it with the fewest
+    conflicts (never left out). Returns how many labels found no clean place (0: every letter
+    legible; tests/sheet1 checks the drawn sheet)."""
+    clusters = letter_clusters(scene, view, letters)
+    others = [p for p, _ in clusters]
+    chunks = [(p, keys[n:n + SMALL_LETTERS]) for p, keys in clusters
               for n in range(0, len(keys), SMALL_LETTERS)]
+    unclean = 0
     for p, keys in chunks:
         label = tuple(rl.from_letter(k, helpers=k in helper) for k in keys)
-        near = rl.around(p, label, height, 45.0, gaps=(0.8, 1.6))
-        far = rl.around(p, label, height, 45.0, gaps=(4.0, 7.0, 10.0, 14.0, 18.0))
-        poly = rl.place_passes(view, [(near, 0), (far, 0), (near, 1), (far, 1), (far, 3)], label, height, inside=inside,
-                               optional=True)
-        if poly is None or poly.exterior.distance(Point(p)) <= SMALL_NEAR_MM:
-            continue
-        q = nearest_points(poly.exterior, Point(p))[0]
-        view.line(view.transform.inverse(p), view.transform.inverse((q.x, q.y)), "thin")
+        if not _small_label(view, p, label, height, inside, others):
+            unclean += 1
+    return unclean
+
+
+def _clean(view: View, poly: Polygon, inside: Polygon) -> bool:
+    """Is a label's box ``poly`` within ``inside``, over no text and crossed by no line?"""
+    ann = view.annotations
+    return inside.contains(poly) and not ann.hits_box(poly) and not ann.crossings(poly)
+
+
+def _small_label(view: View, p: tuple[float, float], label: rl.Label, height: float, inside: Polygon,
+                 others: list[tuple[float, float]]) -> bool:
+    """One small plan's label at sheet point ``p`` (see :func:`place_small_letters`); False where
+    it had to overlap or cross something."""
+    ann = view.annotations
+    near = rl.own_point(rl.around(p, label, height, 45.0, gaps=(0.6, 1.2, 2.0)), label, height, p, others,
+                        SMALL_NEAR_MM)
+    for c in near:
+        if _clean(view, rl.rich_box(label, c, height), inside):
+            rl.draw_rich(view, c, label, height, names=Point(p))
+            return True
+    far = rl.around(p, label, height, 45.0, gaps=(4.0, 6.0, 9.0, 12.0, 15.0, SMALL_FAR_MM))
+    for crossed in (0, LEADER_CROSSINGS):        # a leader over no vector, else over a few of them
+        for c in far:
+            poly = rl.rich_box(label, c, height)
+            if not _clean(view, poly, inside):
+                continue
+            q = nearest_points(rl.text_extent(label, c, height), Point(p))[0]     # from the letters
+            d = q.distance(Point(p))
+            if d <= LEADER_GAP_MM + MM_ROUNDOFF:
+                continue
+            t = LEADER_GAP_MM / d
+            foot = (p[0] + (q.x - p[0]) * t, p[1] + (q.y - p[1]) * t)
+            leader = LineString([(q.x, q.y), foot])
+            if ann.crossings(leader) > crossed or ann.hits_box(leader.buffer(0.2)):
+                continue
+            if any(Point(o).distance(leader) < 1.0 for o in others if math.dist(o, p) > MM_ROUNDOFF):
+                continue                       # a leader past another point would name it
+            rl.draw_rich(view, c, label, height, names=LineString([(q.x, q.y), p]))
+            view.line(view.transform.inverse((q.x, q.y)), view.transform.inverse(p), "thin")
+            return True
+    fallback = near or rl.around(p, label, height, 45.0, gaps=(0.6, 1.2, 2.0))
+    rl.place_passes(view, [(fallback, 0), (fallback, 1)], label, height, inside=inside, names=Point(p))
+    return False
 
 
 #: Title and caption strips of the small plans' view, mm; a title in two lines takes
@@ -245,9 +307,10 @@ def small_grids(plans: list[Plan], max_width: float) -> list[tuple[int, float, f
 
 
 def place_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], cols: int,
-                      rect: Rect) -> View:
+                      rect: Rect, letters: set[str] | None = None) -> View:
     """All velocity plans in ``rect``, a grid of ``cols`` equal cells numbered by position, the
-    cells sharing out the rectangle."""
+    cells sharing out the rectangle; each cell a canvas of its own (``plans_all/<position>``), the
+    plans lettered with ``letters`` only (all plan letters if None)."""
     holder = sheet.place_view("plans_all", rect, Transform())
     lines = title_lines(small_title(plans), rect.width)
     for k, line in enumerate(lines):     # the title, in two lines if the grid is narrower than it
@@ -267,12 +330,13 @@ def place_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], col
         e = extent(plan)
         cx, cy = (e[0] + e[2]) / 2, (e[1] + e[3]) / 2
         tr = Transform(1.0, (cx, cy), ((cell.x0 + cell.x1) / 2, (cell.y0 + cell.y1 - 5.0) / 2))
-        sub = View(sheet, "plans_all", cell, tr)
-        draw_plan(sub, plan, image_keys, f"{i}", names=False, letter_height=3.5, small=True)
+        sub = View(sheet, f"plans_all/{i}", cell, tr)
+        draw_plan(sub, plan, image_keys, f"{i}", names=False, letter_height=3.5, small=True, letters=letters)
     return holder
 
 
-def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str) -> View | None:
+def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str,
+                    letters: set[str] | None = None) -> View | None:
     """All velocity plans in one view packed near ``preferred``; None if the sheet has no room."""
     for cols, w, h in small_grids(plans, sheet.frame.width):
         try:
@@ -280,5 +344,5 @@ def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], prefe
         except BuildError:
             continue
         del sheet.views["plans_all"]
-        return place_small_plans(sheet, plans, image_keys, cols, holder.rect)
+        return place_small_plans(sheet, plans, image_keys, cols, holder.rect, letters)
     return None

@@ -7,8 +7,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import shapely
 from shapely.geometry import LineString, MultiLineString, Polygon
+from shapely.geometry.base import BaseGeometry
 from shapely.geometry import Point as ShapelyPoint
+from shapely.ops import nearest_points
 
 from drawings.primitives import format_number, format_significant
 from drawings.sheet import View
@@ -20,7 +23,7 @@ from reportgen.project import Project
 from reportgen.scenes import positions
 from reportgen.scenes.positions import BLOCK_MM, SchemeData
 from reportgen.scenes.scales import GOST_SCALES, gost_scale  # noqa: F401  (re-exported for the sheet)
-from reportgen.scenes.scene import Scene
+from reportgen.scenes.scene import Polyline, Scene, Segment
 from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
 
 from ..words import tr
@@ -61,11 +64,12 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
         if abs(scene.scale().value * k - 1.0) > RTOL_EQUAL:
             scene = project.scenes.positions_at(k, scale_text)
     render.draw_scene(view, scene, unit=1.0 / k)
-    _draw_crank_angles(view, project, data)
-    _draw_stroke(view, project, data)
-    _draw_letters(view, scene, k)
-    _draw_numbers(view, project, scene, k)
-    _draw_link_numbers(view, project, data)
+    links = scene_links(view, scene, k)
+    _draw_crank_angles(view, project, data, links)
+    _draw_stroke(view, project, data, links)
+    _draw_letters(view, scene, k, links)
+    _draw_numbers(view, project, scene, k, links)
+    _draw_link_numbers(view, project, data, links)
     view.text_mm((view.rect.center[0], view.rect.y0 + 4.0),
                  tr("sheets.ks01", v1=format_significant(mu_l, 4), scale_text=scale_text), 5.0, "bottom-center")
     if project.task.document.kind == "control-work":
@@ -76,6 +80,29 @@ def draw_scheme(view: View, project: Project, data: SchemeData, scale_text: str,
     else:
         view.title(tr("sheets.ks02", v1=len(data.kin.phi)))
     return scene
+
+
+def scene_links(view: View, scene: Scene, k: float) -> BaseGeometry:
+    """The links of every position as drawn (the bars, cut at their hinges, and the sliders'
+    blocks), sheet mm, prepared: the scheme's labels never lie on them (issue 12: the shaper's
+    «φх.х.» under its rocker), tests/sheet1/legibility.py reads the same lines back."""
+    def at(p):
+        return view.transform((p[0] / k, p[1] / k))
+    lines = []
+    for e in scene.entities:
+        if isinstance(e, Segment) and ":link" in e.id:
+            a, b = at(e.a), at(e.b)
+            d = math.dist(a, b)
+            if d > e.trim[0] + e.trim[1]:
+                u = ((b[0] - a[0]) / d, (b[1] - a[1]) / d)
+                lines.append(LineString([(a[0] + u[0] * e.trim[0], a[1] + u[1] * e.trim[0]),
+                                         (b[0] - u[0] * e.trim[1], b[1] - u[1] * e.trim[1])]))
+        elif isinstance(e, Polyline) and ":block" in e.id:
+            pts = [at(p) for p in e.points]
+            lines.append(LineString(pts + ([pts[0]] if e.closed else [])))
+    links = MultiLineString(lines)
+    shapely.prepare(links)
+    return links
 
 
 def _inside(view: View) -> Polygon:
@@ -96,7 +123,7 @@ def _arc_points(o: np.ndarray, r: float, a0: float, sweep: float, n: int = 60) -
     return [(o[0] + r * math.cos(a0 + sweep * t / n), o[1] + r * math.sin(a0 + sweep * t / n)) for t in range(n + 1)]
 
 
-def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
+def _draw_crank_angles(view: View, project: Project, data: SchemeData, links: BaseGeometry | None = None) -> None:
     """The crank's extreme lines and two arcs: φр.х. (start → end in the direction of rotation)
     and φх.х., each with an arrowhead and its value in degrees."""
     st = project.strokes
@@ -121,13 +148,69 @@ def _draw_crank_angles(view: View, project: Project, data: SchemeData) -> None:
         tip = view.transform(pts[-1])
         prev = view.transform(pts[-3])
         view.arrowhead_mm(tip, (tip[0] - prev[0], tip[1] - prev[1]), 4.0, 1.3, "thin")
-        am = math.degrees(a0 + sweep / 2)
-        mid = view.transform(pts[len(pts) // 2])
-        rich = rl.Rich(text)
-        rl.place_rich(view, rl.around(mid, rich, 3.5, am), rich, 3.5, inside=_inside(view))
+        _place_arc_label(view, [view.transform(q) for q in pts], view.transform(tuple(o)), rl.Rich(text), links)
 
 
-def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
+#: Gaps between a position number and its crank pin tried, mm (outside the crank circle).
+NUMBER_GAPS_MM = (1.0, 2.5, 4.5)
+#: Leaders of the position numbers where no spot beside the pin is free, mm.
+NUMBER_LEADER_MM = (6.0, 9.0, 12.0, 16.0)
+#: Leaders of the scheme's letters where no spot beside the point keeps off the links, mm.
+LETTER_LEADER_MM = (8.0, 11.0, 14.0, 18.0, 23.0, 28.0)
+#: Where along its arc a crank angle's value is tried (fractions of the sweep, the middle first).
+ARC_LABEL_AT = (0.5, 0.42, 0.58, 0.34, 0.66, 0.26, 0.74, 0.18, 0.82, 0.1, 0.9)
+#: Gaps between the arc and its value tried, mm (all along the arc at one gap before the next).
+ARC_LABEL_GAPS_MM = (1.0, 3.0, 6.0)
+#: Lengths of the leader tried, where no spot beside the arc is free of the links' lines (mm), and
+#: how far short of the arc a leader's crossings are counted (it ends on the arc).
+ARC_LEADER_MM, ARC_LEADER_GAP_MM = (8.0, 12.0, 16.0, 20.0, 25.0), 0.6
+
+
+def _place_arc_label(view: View, arc: list[tuple[float, float]], centre: tuple[float, float],
+                     rich: rl.Rich, links: BaseGeometry | None = None) -> None:
+    """The value of a crank angle (φр.х., φх.х.) beside its arc (sheet points ``arc`` round the
+    crank's axis ``centre``): beside the arc, at the middle first, then towards its ends, outside
+    the arc first, the nearest gap first, where it overlaps no text and crosses no line — the links of the positions
+    fan across a crank circle (issue 12: the shaper's «φх.х.» under its rocker); else farther out
+    on a thin leader ending on the arc that crosses no line and no text; else beside the middle
+    crossing the fewest. The label names its arc (the sheet's label check measures it)."""
+    height, inside, ann = 3.5, _inside(view), view.annotations
+    line = LineString(arc)
+    n = len(arc) - 1
+    spots = []
+    for t in ARC_LABEL_AT:
+        q = arc[round(t * n)]
+        out = math.degrees(math.atan2(q[1] - centre[1], q[0] - centre[0]))
+        spots.append((q, out))
+    beside = [c for gap in ARC_LABEL_GAPS_MM for q, out in spots for c in rl.around(q, rich, height, out, gaps=(gap,))]
+    if rl.place_passes(view, [(beside, 0)], rich, height, inside=inside, optional=True, names=line,
+                       avoid=links) is not None:
+        return
+    for length in ARC_LEADER_MM:
+        for q, out in spots:
+            for turn in (0.0, 20.0, -20.0, 40.0, -40.0):
+                a = math.radians(out + turn)
+                end = (q[0] + length * math.cos(a), q[1] + length * math.sin(a))
+                c = rl.around(end, rich, height, out + turn, gaps=(0.0,))[0]
+                poly = rl.rich_box(rich, c, height)
+                if not inside.contains(poly) or ann.hits_box(poly) or ann.crossings(poly):
+                    continue
+                foot = nearest_points(rl.text_extent(rich, c, height), ShapelyPoint(q))[0]
+                d = foot.distance(ShapelyPoint(q))
+                if d <= ARC_LEADER_GAP_MM:
+                    continue
+                k = ARC_LEADER_GAP_MM / d
+                near_q = (q[0] + (foot.x - q[0]) * k, q[1] + (foot.y - q[1]) * k)
+                leader = LineString([(foot.x, foot.y), near_q])
+                if ann.crossings(leader) or ann.hits_box(leader.buffer(0.2)):
+                    continue
+                rl.draw_rich(view, c, rich, height, names=LineString([(foot.x, foot.y), q]))
+                view.line(view.transform.inverse((foot.x, foot.y)), view.transform.inverse(q), "thin")
+                return
+    rl.place_passes(view, [(beside, 0), (beside, 1)], rich, height, inside=inside, names=line, avoid=links)
+
+
+def _draw_stroke(view: View, project: Project, data: SchemeData, links: BaseGeometry | None = None) -> None:
     """The stroke H of a slider, dimensioned between its extreme positions (beyond the guide)."""
     st = project.strokes
     if st is None or data.extremes is None:
@@ -139,7 +222,7 @@ def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
         piv = np.asarray(data.extremes.points[out.point].pos[0])
         rich = rl.Rich(f"ψ = {format_number(math.degrees(st.stroke), 1)}°")
         rl.place_rich(view, rl.around(view.transform(tuple(piv)), rich, 3.5, -45.0, gaps=(12.0, 16.0, 20.0)),
-                      rich, 3.5, inside=_inside(view))
+                      rich, 3.5, inside=_inside(view), avoid=links)
         return
     p0 = np.asarray(data.extremes.points[out.point].pos[0])
     p1 = np.asarray(data.extremes.points[out.point].pos[1])
@@ -153,7 +236,7 @@ def _draw_stroke(view: View, project: Project, data: SchemeData) -> None:
                    text=f"H = {format_number(st.stroke * 1000.0, 1)}")
 
 
-def _draw_letters(view: View, scene: Scene, k: float) -> None:
+def _draw_letters(view: View, scene: Scene, k: float, links: BaseGeometry | None = None) -> None:
     """The scene's letters: the points of the analysed position, the moving points of position 0
     with index 0, the centres of mass S_k — each beside its point, away from the mechanism's middle."""
     pts = [lb.at for lb in scene.labels if lb.role == "point"]
@@ -168,13 +251,19 @@ def _draw_letters(view: View, scene: Scene, k: float) -> None:
         p = view.transform((lb.at[0] / k, lb.at[1] / k))
         rich = rl.from_tex(lb.text)
         prefer = 90.0 if lb.text.startswith("S_") else math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
-        rl.place_point_label(view, p, rich, 5.0, prefer, others, inside=_inside(view))
+        rl.place_point_label(view, p, rich, 5.0, prefer, others, inside=_inside(view), avoid=links,
+                             far_gaps=LETTER_LEADER_MM)
 
 
-def _draw_numbers(view: View, project: Project, scene: Scene, k: float) -> None:
-    """The scene's position numbers at the crank pin, outside the crank circle."""
+def _draw_numbers(view: View, project: Project, scene: Scene, k: float, links: BaseGeometry | None = None) -> None:
+    """The scene's position numbers at the crank pin, outside the crank circle first, nearer to
+    their pin than to any other labelled point, off the links; where no such spot is free, on a
+    thin leader from the pin (:func:`drawings.scenes.kinematics_labels.place_point_label`)."""
+    from reportgen.tolerances import LABEL_NEAR_MM
     lk = project.linkage
     o = view.transform(tuple(_pts(project.scenes.scheme_data.kin, 0)[lk.drive_axis]))
+    pins = [view.transform((lb.at[0] / k, lb.at[1] / k)) for lb in scene.labels if lb.role in ("number", "point")]
+    inside = _inside(view)
     for lb in scene.labels:
         if lb.role != "number":
             continue
@@ -186,10 +275,14 @@ def _draw_numbers(view: View, project: Project, scene: Scene, k: float) -> None:
             text = tr("sheets.ks06")
         ang = math.degrees(math.atan2(p[1] - o[1], p[0] - o[0]))
         rich = rl.Rich(text)
-        cands = rl.around(p, rich, 3.5, ang, gaps=(1.0, 2.5, 4.5))
+        cands = rl.around(p, rich, 3.5, ang, gaps=NUMBER_GAPS_MM)
         r = math.dist(p, o)
-        cands = [q for q in cands if math.dist(q, o) > r] or cands
-        rl.place_rich(view, cands, rich, 3.5, inside=_inside(view), names=ShapelyPoint(p))
+        cands = [q for q in cands if math.dist(q, o) > r] + [q for q in cands if math.dist(q, o) <= r]
+        near = rl.own_point(cands, rich, 3.5, p, pins, LABEL_NEAR_MM - 1.0)
+        if near and rl.place_passes(view, [(near, 0), (near, 1)], rich, 3.5, inside=inside, optional=True,
+                                    names=ShapelyPoint(p), avoid=links) is not None:
+            continue
+        rl.place_point_label(view, p, rich, 3.5, ang, pins, inside=inside, avoid=links, far_gaps=NUMBER_LEADER_MM)
 
 
 def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i: int) -> list[tuple[float, float]]:
@@ -224,7 +317,7 @@ def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i
     d = d / (np.hypot(*d) or 1.0)
     nrm = np.array([-d[1], d[0]])
     half_l, half_h = BLOCK_MM[0] / 2, BLOCK_MM[1] / 2
-    for extra in (1.5, 4.0, 7.0):
+    for extra in (1.5, 3.0, 4.5, 6.0, 7.0):
         for along, across in ((0.0, half_h + r + extra), (0.0, -(half_h + r + extra)),
                               (half_l * 0.6, half_h + r + extra), (-half_l * 0.6, half_h + r + extra),
                               (half_l * 0.6, -(half_h + r + extra)), (-half_l * 0.6, -(half_h + r + extra))):
@@ -233,33 +326,99 @@ def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i
     return out
 
 
-def _draw_link_numbers(view: View, project: Project, data: SchemeData) -> None:
+def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: BaseGeometry | None = None) -> None:
     """The numbers of the moving links on the analysed position (the bold one with letters), in
-    small circles beside the links, where they overlap no text and cross no line (else crossing
-    as few lines as possible; never over a text)."""
+    small circles beside the links, off every position's links, where they overlap no text and
+    cross no line (else crossing as few lines as possible; never over a text); where no spot beside
+    a link is off the links (a crank among its twelve positions), on a thin leader to the link, as
+    ГОСТ 2.109 numbers items; never left out."""
     lk = project.linkage
     r, h = LINK_NUMBER_MM
     inside = _inside(view)
     ann = view.annotations
+
+    def square(c: tuple[float, float]) -> Polygon:
+        return Polygon([(c[0] - r - 0.3, c[1] - r - 0.3), (c[0] + r + 0.3, c[1] - r - 0.3),
+                        (c[0] + r + 0.3, c[1] + r + 0.3), (c[0] - r - 0.3, c[1] + r + 0.3)])
+
+    def off_links(sq: Polygon) -> bool:
+        return links is None or not links.intersects(sq)
     for k in lk.moving:
-        best: tuple[int, tuple[float, float]] | None = None
-        for c in _link_number_spots(view, project, data, k, data.analysed):
-            square = Polygon([(c[0] - r - 0.3, c[1] - r - 0.3), (c[0] + r + 0.3, c[1] - r - 0.3),
-                              (c[0] + r + 0.3, c[1] + r + 0.3), (c[0] - r - 0.3, c[1] + r + 0.3)])
-            if not inside.contains(square) or ann.hits_box(square):
+        best: tuple[tuple[int, int], tuple[float, float], tuple[float, float] | None] | None = None
+        spots: list[tuple[tuple[float, float], tuple[float, float] | None]] = [
+            (c, None) for c in _link_number_spots(view, project, data, k, data.analysed)]
+        spots += [(c, foot) for c, foot in _link_number_leader_spots(view, project, data, k, data.analysed)]
+        for c, foot in spots:
+            sq = square(c)
+            if not inside.contains(sq) or ann.hits_box(sq):
                 continue
-            crossings = ann.crossings(square)
-            if best is None or crossings < best[0]:
-                best = (crossings, c)
-            if crossings == 0:
+            if foot is not None:
+                leader = LineString([_circle_edge(c, foot, r), foot])
+                if not off_links(sq) or ann.hits_box(leader.buffer(0.2)):
+                    continue
+                score = (0, ann.crossings(sq) + ann.crossings(leader) - 1)    # the leader meets its link
+            else:
+                score = (0 if off_links(sq) else 2, ann.crossings(sq))
+            if best is None or score < best[0]:
+                best = (score, c, foot)
+            if score == (0, 0) or (best[0][0] == 0 and foot is not None):
                 break
         if best is None:
             continue
-        c = best[1]
+        _, c, foot = best
+        named = _link_lines(view, project, data, k)
+        if foot is not None:
+            edge = _circle_edge(c, foot, r)
+            view.line(view.transform.inverse(edge), view.transform.inverse(foot), "thin")
+            named = shapely.union_all([named, LineString([edge, foot])])
         view.circle_mm(view.transform.inverse(c), r, "thin")
-        view.text_mm(c, str(k), h, "center", register=False, names=_link_lines(view, project, data, k))
+        view.text_mm(c, str(k), h, "center", register=False, names=named)
         ann.add_box(f"{view.name}: «{k}»", Polygon([(c[0] - r, c[1] - r), (c[0] + r, c[1] - r),
                                                    (c[0] + r, c[1] + r), (c[0] - r, c[1] + r)]))
+
+
+def _circle_edge(c: tuple[float, float], towards: tuple[float, float], r: float) -> tuple[float, float]:
+    d = math.dist(c, towards) or 1.0
+    return (c[0] + (towards[0] - c[0]) * r / d, c[1] + (towards[1] - c[1]) * r / d)
+
+
+#: Distances of a link number on a leader from its link, mm (where none beside it is off the links).
+LINK_LEADER_MM = (9.0, 12.0, 16.0, 20.0)
+
+
+def _link_number_leader_spots(view: View, project: Project, data: SchemeData, k: int, i: int
+                              ) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """(centre, foot on the link) of link ``k``'s number on a leader: across its segments at
+    ``LINK_LEADER_MM``, from their middles towards the ends; round a slider's block."""
+    lk = project.linkage
+    pts = {n: view.transform(tuple(p)) for n, p in _pts(data.kin, i).items()}
+    names = lk.bodies[k].points
+    out: list[tuple[tuple[float, float], tuple[float, float]]] = []
+    if len(names) >= 2:
+        for off in LINK_LEADER_MM:
+            for t in (0.5, 0.62, 0.38, 0.72, 0.28):
+                for a, b in _link_outline(names):
+                    pa, pb = np.asarray(pts[a]), np.asarray(pts[b])
+                    d = pb - pa
+                    n = float(np.hypot(*d))
+                    if n < 1.0:
+                        continue
+                    nrm = np.array([-d[1], d[0]]) / n
+                    foot = pa + d * t
+                    for ang in (0.0, 30.0, -30.0):
+                        rot = math.radians(ang)
+                        v = np.array([nrm[0] * math.cos(rot) - nrm[1] * math.sin(rot),
+                                      nrm[0] * math.sin(rot) + nrm[1] * math.cos(rot)])
+                        for side in (1.0, -1.0):
+                            q = foot + side * v * off
+                            out.append(((float(q[0]), float(q[1])), (float(foot[0]), float(foot[1]))))
+        return out
+    p = np.asarray(pts[names[0]])
+    for off in LINK_LEADER_MM:
+        for ang in range(0, 360, 30):
+            q = p + off * np.array([math.cos(math.radians(ang)), math.sin(math.radians(ang))])
+            out.append(((float(q[0]), float(q[1])), (float(p[0]), float(p[1]))))
+    return out
 
 
 def _link_lines(view: View, project: Project, data: SchemeData, k: int):

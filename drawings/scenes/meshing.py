@@ -12,6 +12,7 @@ from reportgen.gears.meshing import GOST_SCALES
 from reportgen.scenes.meshing import (CAPTION, PADDING, VIEW_H, VIEW_W, WINDOW_H, WINDOW_W,  # noqa: F401
                                      DrawingScale, MeshingScene, ab_on_sheet, label_room, meshing_marks,
                                      meshing_scale, model_bounds, model_centre)
+from drawings import style
 from ..words import decimal_mark, tr
 
 
@@ -53,22 +54,41 @@ def draw_marks(view, marks) -> None:
                       (arc.centre[0] + r1 * c, arc.centre[1] + r1 * s_), "thin")
     view.polyline(marks.angle.points(), "thin")
     for m in marks.marks:
-        if m.leader:
-            view.polyline(list(m.leader), "thin")
         text = tr(f"marks.sheet4.{m.text}") if m.word else m.text
         x0, y0, x1, y1 = m.box
-        view.text(((x0 + x1) / 2, (y0 + y1) / 2), text, m.height, "center")
+        if m.leader:
+            # the box holds the note's text too (placed once for both, at the note's size): the
+            # sheet's text in its middle on the leader's shelf, the shelf to the text's far end
+            w = style.text_width(text, m.height) / k
+            leader = list(m.leader)
+            elbow, end = leader[-2], leader[-1]
+            right = end[0] >= elbow[0]
+            cx = (x0 + x1) / 2
+            leader[-1] = ((cx + w / 2) if right else (cx - w / 2), elbow[1])
+            view.polyline(leader, "thin")
+            view.text((cx, y0), text, m.height, "bottom-center")
+        else:
+            # a letter beside its point: in its box, as near to the point as the box allows
+            w, h = style.text_width(text, m.height) / k, m.height / k
+            cx = min(max(m.anchor[0], x0 + w / 2), x1 - w / 2) if x1 - x0 > w else (x0 + x1) / 2
+            cy = min(max(m.anchor[1], y0 + h / 2), y1 - h / 2) if y1 - y0 > h else (y0 + y1) / 2
+            view.text((cx, cy), text, m.height, "center")
     for d in marks.dimensions:
         view.dimension(d.p1, d.p2, offset_mm=d.offset_mm, unit_factor=1.0, text=d.text)
 
 
-#: Names a, P, b closer than this along ρ (mm) are staggered one line up.
-NAME_GAP_MM = 6.0
+#: The names a, P, b of the sliding diagram keep this far from each other and from the λ axis's
+#: name (sheet mm, between their boxes padded by 0,5 mm: 2 mm between the letters).
+NAME_CLEAR_MM = 1.0
+#: The ρ axis goes this far beyond N2 (or b beyond it): its name «ρ, мм» clear of N2's tick (sheet mm).
+AXIS_BEYOND_N2_MM = 28.0
+#: Sheet mm per unit of λ, the largest that fits the view first.
+SLIDING_UNITS = (40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0)
 
 
 def draw_sliding(sheet, pair, rect, k: float) -> None:
     """The specific-sliding diagram λ1, λ2 over ρ = N1K (x at the meshing scale ``k``)."""
-    from drawings.primitives import Transform, format_number
+    from drawings.primitives import Transform, format_number, text_box
     sl = pair.sliding
     g = pair.geometry
     # ρ at a ГОСТ scale that uses the width of the view; the active line a…b can stand out of
@@ -77,27 +97,37 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     k = next((f for f in GOST_SCALES if (x_hi - x_lo) * f <= rect.width - 70), GOST_SCALES[-1])
     x_len = g.g * k
     lam_low = math.floor(min(sl.lambda1_a, sl.lambda2_b, -1.0) * 1.5)
+    # near the limits of the blocking contour λ at a or b runs to −∞ (a at N1: undercut): the
+    # axis is cut where the smallest unit still fits the view, the curves leave it at the bottom
+    lam_low = max(lam_low, 1 - math.floor((rect.height - 38) / SLIDING_UNITS[-1]))
     span = 1.0 - lam_low
-    per_unit = next(v for v in (40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0) if v * span <= rect.height - 38)
+    per_unit = next(v for v in SLIDING_UNITS if v * span <= rect.height - 38)
     ox = rect.x0 + 22 - x_lo * k
     oy = rect.y0 + 14 + (-lam_low) * per_unit
     view = sheet.place_view("sliding", rect, Transform(1.0, (0.0, 0.0), (ox, oy)))
     yt = [(v * per_unit, format_number(v, 0)) for v in range(int(lam_low), 2)]
-    view.axes((0.0, 0.0), x_len + 12, per_unit * 1.0 + 10, y_down_mm=-lam_low * per_unit,
+    view.axes((0.0, 0.0), max(x_len, x_hi * k) + AXIS_BEYOND_N2_MM, per_unit * 1.0 + 10, y_down_mm=-lam_low * per_unit,
               x_label=tr("sheets.me04"), y_label="λ", y_ticks=yt)
     rho, l1, l2 = sl.curve(801, clip=0.002)
     for lam in (l1, l2):
         pts = [(r_ * k, v * per_unit) for r_, v in zip(rho, lam) if v >= lam_low]
         if len(pts) > 1:
             view.polyline(pts, "contour")
-    # a, P, b above their lines; a name too near the one before it (P near a or b at the limits of
-    # the contour) goes one line higher
-    prev_x, level = -math.inf, 0
+    # a, P, b above their lines, each on the lowest level where it keeps NAME_CLEAR_MM from the
+    # names before it and from the λ axis's name (a at ρ = 0 touched «λ» at a corner of the
+    # blocking contour; P near a or b at its limits)
+    taken = [text_box((ox + 2.5, oy + per_unit + 10.0), "λ", 5.0, "top-left")]
     for name, x in sorted((("a", g.n1a), ("P", g.n1p), ("b", g.n1b)), key=lambda item: item[1]):
-        level = level + 1 if x * k - prev_x < NAME_GAP_MM else 0
+        level = 0
+        while True:
+            at = (x * k + 1.5, per_unit + 1.5 + 5.0 * level)
+            poly = text_box((ox + at[0], oy + at[1]), name, 3.5, "bottom-left")
+            if all(poly.distance(t) >= NAME_CLEAR_MM for t in taken) or level > 6:
+                break
+            level += 1
+        taken.append(poly)
         view.line((x * k, lam_low * per_unit), (x * k, per_unit + 5.0 * level), "thin")
-        view.text((x * k + 1.5, per_unit + 1.5 + 5.0 * level), name, 3.5)
-        prev_x = x * k
+        view.text(at, name, 3.5)
     view.line((g.g * k, -2.0), (g.g * k, 2.0), "thin")
     view.text((g.g * k, -3.0), "N2", 3.5, "top-center")
     i1 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.2 * g.g))

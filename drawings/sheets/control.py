@@ -27,7 +27,7 @@ def new_sheet(project: Project, number: int, count: int) -> Sheet:
     cw = project.task.control_work
     fmt = A3 if cw is not None and cw.sheet == "A3" else A1
     return Sheet(fmt, TitleBlock.from_document(project.task.document, title=tr("control.sheet.title"), code=project.task.document.sheet_code(number),
-                                               number=number, count=count, scale="", letter="У"))
+                                               number=number, count=count, scale="", letter=""))
 
 
 def is_a3(project: Project) -> bool:

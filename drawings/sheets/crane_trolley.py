@@ -1,4 +1,4 @@
-"""Crane sheet «Механизм передвижения тележки» (A1): the kinematic scheme of the central drive
+"""Crane sheet «trolley travel mechanism» (A1): the kinematic scheme of the central drive
 (ГОСТ 2.770) with the numbered parts and the table of its parameters and checks. Every number is a
 record of ``project.crane.trolley`` printed as the note prints it."""
 from __future__ import annotations
@@ -7,12 +7,11 @@ from drawings.layout import Rect
 from drawings.primitives import Transform
 from drawings.scenes import crane_schemes as cs
 from drawings.sheet import Sheet
-from reportgen.crane.steps import plain_number, shown
+from drawings.words import tr, tr_list
 
-from .crane_hoist import CLEAR_MM, code
+from .crane_hoist import CLEAR_MM, code, num, rec
 
 NEEDS = ("crane",)
-TITLE = "Механизм передвижения тележки. Кинематическая схема"
 #: The scheme is not to scale; it is drawn 1,2 times its nominal size to fill its half of the sheet.
 SCALE = 1.2
 
@@ -21,40 +20,40 @@ def available(project) -> bool:
     return getattr(project.task, "crane", None) is not None
 
 
-def rows(project) -> list[tuple[str, str, str]]:
+def rows(project) -> list[tuple[str, ...]]:
     calc = project.crane
     t = calc.crane.trolley
     r = calc.trolley.records
-    out = [("Поз.", "Наименование", "Параметры")]
+    k = "crane.sheet.drive."
+    out = [tuple(tr_list(k + "head"))]
     m = t.motor
-    out.append(("1", f"Двигатель {m.designation}",
-                f"N = {plain_number(m.power_kw)} кВт при ПВ {plain_number(m.pv_percent)} %, "
-                f"n = {plain_number(m.speed_rpm)} об/мин"))
+    out.append(("1", tr(k + "motor", name=m.designation),
+                tr(k + "motor_trolley", n=num(m.power_kw), pv=num(m.pv_percent), rpm=num(m.speed_rpm))))
     b = t.brake
-    out.append(("2", f"Тормоз {b.designation}", f"Tном = {plain_number(b.rated_torque)} Н·м, "
-                f"Tр = {shown(r['T_br'])} Н·м, Dш = {plain_number(b.pulley_diameter_mm)} мм"))
+    out.append(("2", tr(k + "brake", name=b.designation),
+                tr(k + "brake_params", t=num(b.rated_torque), tr=rec(r["T_br"]), d=num(b.pulley_diameter_mm))))
     for c in t.couplings:
-        out.append(("3", c.designation, f"T = {plain_number(c.rated_torque)} Н·м"))
+        out.append(("3", c.designation, tr(k + "coupling_trolley", t=num(c.rated_torque))))
     red = t.reducer
-    out.append(("4", f"Редуктор {red.designation}", f"uр = {plain_number(red.ratio)}, "
-                f"Tном = {plain_number(red.rated_torque)} Н·м"))
+    out.append(("4", tr(k + "reducer", name=red.designation),
+                tr(k + "reducer_trolley", u=num(red.ratio), t=num(red.rated_torque))))
     w = t.wheel
-    out.append(("5", f"Колесо приводное {w.designation}", f"Dк = {plain_number(w.diameter_mm)} мм, "
-                f"{t.driven_wheels} шт.; [P] = {plain_number(w.allowable_load_kn)} кН"))
-    out.append(("6", "Колесо неприводное", f"{t.wheels - t.driven_wheels} шт."))
-    out.append(("", f"Рельс {t.rail.designation}", f"b = {plain_number(t.rail.head_width_mm)} мм"))
-    out.append(("", "Статическое сопротивление", f"Wст = {shown(r['W_st'])} Н"))
-    out.append(("", "Скорость передвижения", f"vф = {shown(r['v_act'])} м/с "
-                f"(задана {plain_number(t.speed_m_min / 60)} м/с)"))
-    out.append(("", "Запас сцепления при пуске", f"kсц = {shown(r['k_sp'])}"))
+    out.append(("5", tr(k + "wheel_driven", name=w.designation),
+                tr(k + "wheel_driven_params", d=num(w.diameter_mm), n=str(t.driven_wheels),
+                   p=num(w.allowable_load_kn))))
+    out.append(("6", tr(k + "wheel_idle"), tr(k + "pieces", n=str(t.wheels - t.driven_wheels))))
+    out.append(("", tr(k + "rail", name=t.rail.designation), tr(k + "rail_params", b=num(t.rail.head_width_mm))))
+    out.append(("", tr(k + "W_st"), tr(k + "W_st_value", w=rec(r["W_st"]))))
+    out.append(("", tr(k + "travel_speed"), tr(k + "speed_value", v=rec(r["v_act"]), v0=num(t.speed_m_min / 60))))
+    out.append(("", tr(k + "adhesion_start"), tr(k + "adhesion_value", k=rec(r["k_sp"]))))
     if "k_sb" in r:
-        out.append(("", "Запас сцепления при торможении", f"kсц = {shown(r['k_sb'])}"))
+        out.append(("", tr(k + "adhesion_brake"), tr(k + "adhesion_value", k=rec(r["k_sb"]))))
     return out
 
 
 def draw(project, number: int, count: int) -> Sheet:
     t = project.crane.crane.trolley
-    sheet = Sheet.a1(project.task.document, title=TITLE, code=code(project, number), number=number, count=count)
+    sheet = Sheet.a1(project.task.document, title=tr("crane.sheet.trolley_title"), code=code(project, number), number=number, count=count)
     fr = sheet.frame
     top = sheet.extra_rect.y0 - CLEAR_MM
     gauge, base = 340.0, 300.0
@@ -63,13 +62,13 @@ def draw(project, number: int, count: int) -> Sheet:
     tw, th = cs.table_size(table, widths)
     x0 = fr.x1 - CLEAR_MM - tw
     trect = Rect(x0, sheet.title_rect.y1 + 10.0, x0 + tw, sheet.title_rect.y1 + 10.0 + th)
-    cs.draw_table(sheet, "trolley_table", trect, "Техническая характеристика механизма передвижения тележки",
+    cs.draw_table(sheet, "trolley_table", trect, tr("crane.sheet.trolley_table"),
                   table, widths)
     k_rect = Rect(fr.x0 + CLEAR_MM, fr.y0 + CLEAR_MM, trect.x0 - 8.0, top)
     view = sheet.place_view("trolley_drive", k_rect, Transform(SCALE, (0.0, 0.0),
                                                                (k_rect.x0 + SCALE * (gauge / 2 + 20.0),
                                                                 k_rect.center[1] - 10.0)))
-    view.title("Кинематическая схема механизма передвижения тележки")
+    view.title(tr("crane.sheet.trolley_view"))
     sheet.set_scale(Sheet.NO_SCALE)            # schemes are drawn without scale (ГОСТ 2.701)
     anch = cs.draw_trolley_drive(view, t.driven_wheels, t.wheels, gauge, base)
     for key, n, (dx, dy) in (("motor", 1, (-10.0, 40.0)), ("brake", 2, (0.0, 50.0)), ("coupling", 3, (-10.0, 70.0)),
@@ -77,6 +76,5 @@ def draw(project, number: int, count: int) -> Sheet:
                              ("idle_wheel", 6, (25.0, 15.0))):
         p = anch[key]
         cs.callout(view, p, (p[0] + dx, p[1] + dy), n)
-    view.text((0.0, -base / 2 - 45.0), f"Колея {plain_number(t.gauge_m)} м, база {plain_number(t.wheel_base_m)} м "
-              "(схема без масштаба)", 3.5, "center")
+    view.text((0.0, -base / 2 - 45.0), tr("crane.sheet.gauge_base", gauge=num(t.gauge_m), base=num(t.wheel_base_m)), 3.5, "center")
     return sheet

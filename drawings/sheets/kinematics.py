@@ -142,7 +142,8 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     for name, plan, title in plan_views:
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
     if arrangement.small is not None:
-        kp.place_small_plans(sheet, arrangement.small, keys, arrangement.cols, arrangement.rects["plans_all"])
+        kp.place_small_plans(sheet, arrangement.small, keys, arrangement.cols, arrangement.rects["plans_all"],
+                             small_plan_letters(project))
     return sheet
 
 
@@ -324,6 +325,18 @@ def add_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float
     view = sheet.add_view("scheme", w, h, preferred="top-left")
     view.transform = Transform(k, (b[0], b[1]), (view.rect.x0 + left, view.rect.y0 + bottom))
     return view
+
+
+def small_plan_letters(project: Project) -> set[str]:
+    """The letters of the small velocity plans: the pole and the images of the moving points (a, b,
+    c, …; a₃ of a slotted link) — the points a teacher reads on them. The images of the fixed
+    points are the pole itself, and the centres of mass are left to the analysed positions' plans
+    (their velocities in every position: the note's table «Скорости центров масс»): a small plan
+    lettered with every s_k too is a pile of letters (issue 12, the shaper's 12 plans)."""
+    plan = project.plans[0]
+    fixed = {g.lower() for g in project.linkage.ground}
+    centres = {f"s{k}" for k in project.kinematics.coms}
+    return {k for k in plan.points if k == kp.pole(plan) or (k not in fixed and k not in centres)}
 
 
 def small_plans(project: Project, crank_mm: float) -> list[Plan]:

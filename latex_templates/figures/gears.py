@@ -59,45 +59,39 @@ def blocking_contour_figure(pair):
     return fig
 
 
-#: The note's figure of the meshing: a window of sheet 4's scene round the pole — the drawn teeth
-#: and a margin for the designations (a share of their width) — reduced to at most this size on
-#: the page (mm); letter heights (page mm).
-NOTE_MESH_W = 140.0          # 0.85 of the text block, as the figure macro includes it
-NOTE_MESH_MAX_H = 100.0      # under the macro's height limit (0.7 of the text height)
-NOTE_MESH_MARGIN = 0.22
-NOTE_POINT_H = 3.5
-NOTE_MARK_H = 2.9
 #: The zones' colours (the note's legend): two pairs, one pair in contact.
 ZONE_COLOURS = {2: "#1f77b4", 1: "#d62728"}
 
 
 def meshing_frame(pic) -> tuple[float, float, float, float]:
-    """The note's window of the meshing picture round the pole (real mm): the drawn teeth and a
-    margin for the designations."""
-    x0, y0, x1, y1 = pic.view
-    pad = NOTE_MESH_MARGIN * (x1 - x0)
-    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+    """The note's window of the meshing picture round the pole (real mm): the scene's detail
+    (:func:`reportgen.scenes.meshing.detail_frame`)."""
+    from reportgen.scenes.meshing import detail_frame
+    return detail_frame(pic)
 
 
 def meshing_reduction(ms) -> float:
-    """Page mm per scene mm of the note's window (at most 1: the sheet's scale)."""
-    x0, y0, x1, y1 = meshing_frame(ms.pic)
-    k = ms.scale.factor
-    return min(1.0, NOTE_MESH_W / ((x1 - x0) * k), NOTE_MESH_MAX_H / ((y1 - y0) * k))
+    """Page mm per scene mm of the note's window (at most 1: the sheet's scale), the scene's
+    :func:`reportgen.scenes.meshing.detail_reduction`."""
+    from reportgen.scenes.meshing import detail_reduction
+    return detail_reduction(ms.pic, ms.scale)
 
 
 @keyed_plot()
-def meshing_figure(pair, ms):
+def meshing_figure(_pair, ms):
     """The meshing picture round the pole: a window of sheet 4's scene
     (:class:`reportgen.scenes.meshing.MeshingScene`, the same teeth, circles, lines and points in
     the sheet's mm), reduced by :func:`meshing_reduction` (the caption says so and names the
     sheet's scale); the zones of one and two pairs coloured, and the designations of sheet 4
-    (r, rb, rw, ra, rf of each wheel, s, p, αw, the points, the dimension ab) placed by
-    :func:`reportgen.scenes.meshing_marks.place_marks` — the sheet's rule at the note's letter
-    size. ``fig.scene`` is the scene, ``fig.reportgen_reduction`` the reduction."""
+    (r, rb, rw, ra, rf of each wheel, s, p, αw, the points, the dimension ab) where the scene
+    placed them for both (``ms.marks``, :func:`reportgen.scenes.meshing.meshing_marks`: the same
+    places and sides as on sheet 4), at the note's letter sizes; the sheet's marks outside the
+    window are left out. ``fig.scene`` is the scene, ``fig.reportgen_reduction`` the reduction,
+    ``fig.reportgen_marks`` the marks drawn."""
+    from dataclasses import replace
+
     from matplotlib.lines import Line2D
 
-    from reportgen.scenes.meshing_marks import place_marks
     from reportgen.scenes.scene import Circle, Polyline, Segment
 
     from .scene import PENS
@@ -105,10 +99,8 @@ def meshing_figure(pair, ms):
     scene, k = ms.scene, ms.scale.factor
     r = meshing_reduction(ms)
     room = meshing_frame(ms.pic)                        # real mm
-    kn = k * r                                          # page mm per real mm
-    inner = (room[0] + 2 / kn, room[1] + 2 / kn, room[2] - 2 / kn, room[3] - 2 / kn)
-    legend = (room[0], room[3] - 24 / kn, room[0] + 62 / kn, room[3])       # upper left
-    marks = place_marks(pair, ms.pic, kn, inner, point_h=NOTE_POINT_H, mark_h=NOTE_MARK_H, keep_out=(legend,))
+    marks = replace(ms.marks, marks=tuple(m for m in ms.marks.marks if m.page_h > 0),
+                    dimensions=tuple(d for d in ms.marks.dimensions if d.detail))
     x0, y0, x1, y1 = (v * k for v in room)              # scene mm
     w_mm, h_mm = (x1 - x0) * r, (y1 - y0) * r
     fig = new_figure(w_mm / 10.0, h_mm / 10.0)
@@ -147,6 +139,8 @@ def _draw_marks(ax, marks, unit: float = 1.0) -> None:
     """The designations of :class:`reportgen.scenes.meshing_marks.MeshingMarks` (real mm, drawn
     ×``unit`` on axes in scene mm) with matplotlib: leaders, texts in their boxes (TeX spelling),
     arcs of s and p with end ticks, the arc of αw, the dimension ab with its arrows and text."""
+    from reportgen.scenes.meshing import DETAIL_DIM_H
+
     from .labels import names
     k = marks.k
     pt_per_mm = 72.0 / 25.4
@@ -169,7 +163,7 @@ def _draw_marks(ax, marks, unit: float = 1.0) -> None:
             lx, ly = zip(*(u(p) for p in m.leader))
             ax.plot(lx, ly, color="k", lw=0.4, zorder=5)
         cx, cy = u(m.centre)
-        t = ax.text(cx, cy, f"${m.tex}$", fontsize=m.height * pt_per_mm * 0.95, ha="center", va="center",
+        t = ax.text(cx, cy, f"${m.tex}$", fontsize=m.page_h * pt_per_mm * 0.95, ha="center", va="center",
                     zorder=6)
         names(t, *((u(p) for p in m.leader) if m.leader else (u(m.anchor),)))
     for d in marks.dimensions:
@@ -189,7 +183,7 @@ def _draw_marks(ax, marks, unit: float = 1.0) -> None:
         if ang > 90.0 or ang <= -90.0:
             ang += 180.0
         ax.text((min(bx) + max(bx)) / 2 * unit, (min(by) + max(by)) / 2 * unit, d.text,
-                fontsize=3.2 * pt_per_mm, rotation=ang, rotation_mode="anchor", ha="center", va="center")
+                fontsize=DETAIL_DIM_H * pt_per_mm, rotation=ang, rotation_mode="anchor", ha="center", va="center")
 
 
 @keyed_plot()

@@ -67,11 +67,46 @@ def where_word(strings: Strings, mechanism: str, key: str) -> str:
     raise NameLookupError("«где» words (crane.where.<key> in strings/ru/crane.toml)", key)
 
 
+_INDEX = re.compile(r"^(.*?)([0-9]+)$")
+
+
+def symbol_in(strings: Strings, mechanism: str, key: str, latex: str) -> str:
+    """The symbol of the quantity ``key`` in the note's language.
+
+    The solver writes the course's Russian symbols (``D_{\\text{бл}}``), which Russian prints as
+    they are. Ukrainian and English give each quantity its own symbol in the catalogue table
+    ``crane_symbols`` (docs/languages.md: one Russian subscript stands for several words — «т» is
+    тележка, тормоз and тихоходный — so a table of subscripts cannot translate them):
+    ``crane_symbols.<mechanism>.<key>``, then ``crane_symbols.<key>``; a table there is keyed by the
+    Russian symbol (one key, two formulas: ``h_dr`` is h₁ under ПБ 10-382-00 and e_б under the 1969
+    rules); an indexed key (``J_c2``) takes ``crane_symbols.J_c#`` with ``#`` the index the Russian
+    symbol shows. A missing symbol in uk/en is a :class:`MissingString`.
+    """
+    if not strings.has("crane_symbols"):
+        return latex
+    for k in (f"crane_symbols.{mechanism}.{key}", f"crane_symbols.{key}"):
+        if strings.has(k):
+            value = strings.raw(k)
+            if isinstance(value, dict):
+                if latex not in value:
+                    strings.raw(f"{k}.{latex}")        # raises MissingString naming the symbol
+                value = value[latex]
+            return str(value)
+    m = _INDEX.match(key)
+    if m and strings.has(f"crane_symbols.{m.group(1)}#"):
+        shown_index = m.group(2) if re.search(m.group(2) + r"\W*$", latex) else ""
+        return str(strings.raw(f"crane_symbols.{m.group(1)}#")).replace("#", shown_index)
+    strings.raw(f"crane_symbols.{key}")                # raises MissingString
+    return latex
+
+
 def localize(rec: CalcRecord, strings: Strings, mechanism: str) -> CalcRecord:
-    """The record with the catalogue's meanings for itself and each of its variables."""
-    variables = tuple(replace(v, meaning=Markup(where_word(strings, mechanism, v.meaning or v.name)))
+    """The record with the catalogue's meanings and symbols for itself and each of its variables."""
+    variables = tuple(replace(v, latex=symbol_in(strings, mechanism, v.meaning or v.name, v.latex),
+                              meaning=Markup(where_word(strings, mechanism, v.meaning or v.name)))
                       for v in rec.variables)
-    return replace(rec, variables=variables, meaning=Markup(where_word(strings, mechanism, rec.meaning)))
+    return replace(rec, variables=variables, symbol=symbol_in(strings, mechanism, rec.meaning, rec.symbol),
+                   meaning=Markup(where_word(strings, mechanism, rec.meaning)))
 
 
 def m(value: float, digits: int = 4) -> str:
@@ -119,7 +154,7 @@ class Blocks:
         c = next((c for c in self.calc.checks if c.key == key), None)
         if c is None:
             return
-        self.items.append(("text", check_sentence(c, self.calc, self.s)))
+        self.items.append(("text", check_sentence(c, self.calc, self.s, self.mech)))
 
     def table(self, caption, header, rows) -> None:
         self.items.append(("table", {"caption": caption, "header": header, "rows": rows}))
@@ -137,14 +172,16 @@ CHECK_SYMBOLS = {
 }
 
 
-def _symbol(calc, key: str | None) -> str:
+def _symbol(calc, key: str | None, strings: Strings | None = None, mechanism: str = "") -> str:
     if key is None:
         return ""
     if key in calc.records:
-        return calc.records[key].symbol
-    if key in calc.vars:
-        return calc.vars[key].latex
-    return ""
+        latex = calc.records[key].symbol
+    elif key in calc.vars:
+        latex = calc.vars[key].latex
+    else:
+        return ""
+    return symbol_in(strings, mechanism, key, latex) if strings is not None else latex
 
 
 def _as_printed(calc, key: str | None, value: float) -> str:
@@ -156,13 +193,13 @@ def _as_printed(calc, key: str | None, value: float) -> str:
     return m(value)
 
 
-def check_sentence(c, calc, strings: Strings) -> Markup:
+def check_sentence(c, calc, strings: Strings, mechanism: str = "") -> Markup:
     sym_a, sym_b = CHECK_SYMBOLS.get(c.key, (None, None))
     if c.key.startswith("coupling"):
         sym_a, sym_b = f"T_c{c.key[len('coupling'):]}", "T_c"
     rel = r"\ge" if c.relation == "≥" else r"\le"
-    a = _symbol(calc, sym_a)
-    b = _symbol(calc, sym_b)
+    a = _symbol(calc, sym_a, strings, mechanism)
+    b = _symbol(calc, sym_b, strings, mechanism)
     value = ("|" + a + "|" if c.key == "speed" and a else a)
     left = f"{value} = {_as_printed(calc, sym_a, c.value)}" if value else m(c.value)
     right = f"{b} = {_as_printed(calc, sym_b, c.limit)}" if b else m(c.limit)

@@ -8,7 +8,7 @@ from markupsafe import Markup
 from reportgen.crane import crane_code
 
 from ..note import NoteBuilder, Section
-from .crane_common import fmt, strings_of
+from .crane_common import fmt, strings_of, symbol_in
 
 
 
@@ -18,19 +18,22 @@ def assignment_section(project) -> Section:
     cr = project.task.crane
     h, t = cr.hoist, cr.trolley
     words = s.get("crane.assignment")
+    # (symbol, its quantity key in crane_symbols, words key, value, unit)
     data = [
-        ("$Q$", "capacity", h.capacity_t, "т"),
-        ("$m_{\\text{п}}$", "hook_mass", h.hook_mass_kg, "кг"),
-        ("$H$", "height", h.lifting_height_m, "м"),
-        ("$v_{\\text{п}}$", "lifting_speed", h.lifting_speed_m_min, "м/мин"),
-        ("$v_{\\text{т}}$", "trolley_speed", t.speed_m_min, "м/мин"),
-        ("$m_{\\text{т}}$", "trolley_mass", t.mass_t, "т"),
-        ("$L$", "span", cr.span_m, "м"),
-        ("$b_{\\text{т}}$", "wheel_base", t.wheel_base_m, "м"),
-        ("$k_{\\text{т}}$", "gauge", t.gauge_m, "м"),
-        ("$u_{\\text{п}}$", "ratio", h.polyspast.ratio, ""),
+        ("Q", "Q", "capacity", h.capacity_t, "т"),
+        ("m_{\\text{п}}", "m_h", "hook_mass", h.hook_mass_kg, "кг"),
+        ("H", "H", "height", h.lifting_height_m, "м"),
+        ("v_{\\text{п}}", "hoist.v", "lifting_speed", h.lifting_speed_m_min, "м/мин"),
+        ("v_{\\text{т}}", "trolley.v", "trolley_speed", t.speed_m_min, "м/мин"),
+        ("m_{\\text{т}}", "m_t", "trolley_mass", t.mass_t, "т"),
+        ("L", "L", "span", cr.span_m, "м"),
+        ("b_{\\text{т}}", "b_t", "wheel_base", t.wheel_base_m, "м"),
+        ("k_{\\text{т}}", "k_t", "gauge", t.gauge_m, "м"),
+        ("u_{\\text{п}}", "u_p", "ratio", h.polyspast.ratio, ""),
     ]
-    data = [(Markup(sym), getattr(words, key), value, unit) for sym, key, value, unit in data]
+    rows = [(Markup("$" + symbol_in(s, *_split(qkey), sym) + "$"), getattr(words, key), value,
+             Markup(s.math_word(unit)) if unit else unit)
+            for sym, qkey, key, value, unit in data]
     items = [("rope", h.rope.designation), ("hoist_motor", h.motor.designation),
              ("hoist_reducer", h.reducer.designation), ("hoist_brake", h.brake.designation)]
     items += [("hoist_coupling", c.designation) for c in h.couplings]
@@ -42,10 +45,16 @@ def assignment_section(project) -> Section:
     classes = (fmt(s.get("crane.assignment_text.classes"), use=cr.use_class, load=cr.load_class or "—")
                if cr.use_class else Markup(""))
     intro = fmt(s.get("crane.assignment_text.intro"), group=cr.group, classes=classes, g=cr.g)
-    ctx = {"crane": cr, "data": data, "items": items, "intro": intro,
+    ctx = {"crane": cr, "data": rows, "items": items, "intro": intro,
            "rules": project.crane.rules}
     return Section(key="assignment", title=s.get("headings.assignment"), template="crane_assignment.tex.j2",
                    context=ctx)
+
+
+def _split(qkey: str) -> tuple[str, str]:
+    """``"hoist.v"`` → (mechanism, key); ``"Q"`` → ("", key)."""
+    mechanism, _, key = qkey.rpartition(".")
+    return mechanism, key
 
 
 def note_builder(project) -> NoteBuilder:
@@ -53,7 +62,8 @@ def note_builder(project) -> NoteBuilder:
     s = strings_of(project)
     sections, _ = compose(project, s)
     intro: list = []
-    note = NoteBuilder(project.task.document, designation=f"{crane_code(project.task.document)}.000 ПЗ", introduction=intro,
+    note = NoteBuilder(project.task.document, designation=crane_code(project.task.document, str(s.get("crane.sheet.default_code")))
+                       + str(s.get("designation.note_suffix")), introduction=intro,
                        conclusions=[c for sec in sections for c in sec.conclusions],
                        assignment=assignment_section(project), strings=s)
     for sec in sections:

@@ -6,9 +6,12 @@ from __future__ import annotations
 from markupsafe import Markup
 
 from . import PartContent
+from ..render import escape_latex
 from .crane_common import Blocks, failed_names, fmt, strings_of, summary
 
 NEEDS = ("crane",)
+#: The regimes of the 1969 rules (reportgen.crane.rules.REGIME) → their catalogue keys (crane.regimes).
+REGIME_KEYS = {"Л": "light", "С": "medium", "Т": "heavy", "ВТ": "very_heavy"}
 
 
 def available(project) -> bool:
@@ -25,7 +28,7 @@ def blocks(project) -> Blocks:
     hc = calc.hoist
     b.sub("rope")
     if r.rules == "1969":
-        b.text("rules_1969", group=r.group, regime=r.regime, k=r.rope_factor, e=r.block_ratio, kt=r.brake_factor)
+        b.text("rules_1969", group=r.group, regime=s.get(f"crane.regimes.{REGIME_KEYS[r.regime]}"), k=r.rope_factor, e=r.block_ratio, kt=r.brake_factor)
     else:
         b.text("rules_pb", group=r.group, iso=r.iso_class, k=r.rope_factor, e=r.block_ratio, h1=r.drum_ratio,
                kt=r.brake_factor)
@@ -161,7 +164,10 @@ def couplings(b: Blocks, items) -> None:
     b.text("coupling_intro")
     b.rec("T_c")
     for i, c in enumerate(items, start=1):
-        b.text("coupling_item", designation=c.designation, t=c.rated_torque, j=c.inertia)
+        kind = str(b.s.get("crane.text.coupling_kind"))
+        # «Муфта зубчатая …» typed by the student is not preceded by a second «Муфта»
+        lead = Markup("") if c.designation.lower().startswith(kind.lower()) else Markup(escape_latex(kind) + " ")
+        b.text("coupling_item", kind=lead, designation=c.designation, t=c.rated_torque, j=c.inertia)
         b.check(f"coupling{i}")
 
 

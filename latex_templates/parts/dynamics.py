@@ -261,7 +261,8 @@ def scale_records(scenes: DynamicsScenes) -> dict[str, CalcRecord | Var]:
 
 
 def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) -> dict[str, CalcRecord | Var]:
-    """ψmax, ψmin by the course's formula, KL measured on the Wittenbauer scene and J_fly from it."""
+    """ψmax, ψmin by the course's formula, KL as sheet 3 dimensions it (read to its 0,1 mm: the
+    replica's ``KL_read_mm``) and J_fly from that printed value."""
     from .gear_pair import places
     common = dict(mu_J=sc["mu_J"], mu_E=sc["mu_E"])
 
@@ -272,7 +273,7 @@ def tangent_records(scenes: DynamicsScenes, sc: dict, omega: Var, delta: Var) ->
                       digits=places(probe.value, ANGLE_DECIMALS), **common)
     psi_max = angle(r"\psi_{\max}", "degrees(atan(mu_J * (1 + delta) * omega1**2 / (2 * mu_E)))", tr("dynamics.m50"))
     psi_min = angle(r"\psi_{\min}", "degrees(atan(mu_J * (1 - delta) * omega1**2 / (2 * mu_E)))", tr("dynamics.m51"))
-    KL = Var("KL", "KL", scenes.wittenbauer.values["KL_mm"], "мм", Tex(tr("dynamics.m24")))
+    KL = Var("KL", "KL", scenes.wittenbauer.values["KL_read_mm"], "мм", Tex(tr("dynamics.m24")))
     J_gr = record(r"J_\text{м}^\text{гр}", "KL * mu_E / (omega1**2 * delta)", "кг·м²", KL, omega, delta,
                   mu_E=sc["mu_E"], meaning=tr("dynamics.m25"))
     return {"psi_max": psi_max, "psi_min": psi_min, "KL": KL, "J_gr": J_gr}

@@ -267,9 +267,9 @@ def _power_check(project, ks, lever) -> dict:
     the lever's graphical value from it."""
     from reportgen.control.analysis import control_work_of
     cw = control_work_of(project, ks.phi_deg)
-    Mg = Var("M_g", "M_{\\text{у}}^{\\text{Ж}}", lever["M"].value, "Н·м", "уравновешивающий момент по рычагу")
-    Me = Var("M_e", "M_{\\text{у}}^{N}", cw.M_y_power, "Н·м", "уравновешивающий момент по балансу мощностей")
-    delta = record("\\delta_M", "100 * (M_g - M_e) / M_e", "%", Mg, Me, meaning="отклонение графического значения")
+    Mg = Var("M_g", "M_{\\text{у}}^{\\text{Ж}}", lever["M"].value, "Н·м", str(tr("control.note.where.M_lever")))
+    Me = Var("M_e", "M_{\\text{у}}^{N}", cw.M_y_power, "Н·м", str(tr("control.note.where.M_power")))
+    delta = record("\\delta_M", "100 * (M_g - M_e) / M_e", "%", Mg, Me, meaning=str(tr("control.note.where.delta")))
     return {"M_exact": cw.M_y_power, "P_exact": cw.M_y_power / cw.l_AB, "delta": delta,
             "M_lever_exact": cw.M_y, "dev_exact": cw.deviation_percent, "l_AB": cw.l_AB}
 

@@ -37,10 +37,11 @@ class CraneCalc:
 CRANE_CODE = "ГПМ.КП.00.00"
 
 
-def crane_code(document) -> str:
-    """[document] code, or ``CRANE_CODE`` if the task left it at the ТММ default."""
+def crane_code(document, default: str = CRANE_CODE) -> str:
+    """[document] code, or ``default`` (the language's letters, ``CRANE_CODE`` in Russian) if the
+    task left it at the ТММ default."""
     from ..task import Document
-    return CRANE_CODE if document.code == Document().code else document.code
+    return default if document.code == Document().code else document.code
 
 
 def crane_calc(crane: Crane) -> CraneCalc:

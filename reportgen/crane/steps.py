@@ -77,17 +77,18 @@ def decimals_digits(value: float, decimals: int) -> int:
     return max(1, math.floor(math.log10(abs(value))) + 1) + decimals
 
 
-def plain_number(value: float, digits: int = 4) -> str:
+def plain_number(value: float, digits: int = 4, mark: str = ",") -> str:
     """The number as the note prints it (same rounding, :func:`reportgen.calc.format_decimal`) in
-    plain text for the terminal and the sheets: ``1130,5``, ``2 061 922``, ``0,9657``."""
+    plain text for the terminal and the sheets: ``1130,5``, ``2 061 922``, ``0,9657``; ``mark`` is
+    the decimal mark of the sheet's language (``.`` in English)."""
     text = format_decimal(value, digits)
-    text = text.replace("{,}", ",").replace("\\,", " ").replace(" \\cdot 10^", "·10^")
+    text = text.replace("{,}", mark).replace("\\,", " ").replace(" \\cdot 10^", "·10^")
     return text.replace("{", "").replace("}", "").replace("-", "−")
 
 
-def shown(rec: CalcRecord) -> str:
-    """A record's result exactly as the note prints it, in plain text."""
-    return plain_number(rec.value, rec.digits)
+def shown(rec: CalcRecord, mark: str = ",") -> str:
+    """A record's result exactly as the note prints it, in plain text (``mark``: the decimal mark)."""
+    return plain_number(rec.value, rec.digits, mark)
 
 
 def _expr_names(expr: str) -> list[str]:

@@ -30,10 +30,14 @@ from ..scenes.dynamics import J_BEYOND_MM
 from ..scenes.scales import PLAN_SERIES, round_up
 from .cycle import TWO_PI, Cycle, moment_and_inertia
 from ..geometry import readonly as _ro
+from ..numbers import decimal_text
 from ..tolerances import RTOL_EQUAL, RTOL_ROUNDOFF
 
 #: Reading accuracy of a length measured on the sheet, mm.
 READING_MM = 0.5
+#: KL is dimensioned on sheet 3 to this many decimals (0,1 mm) and read as printed: the note's
+#: formula for J_fly and the replica's J_fly use that value (one quantity, one rounding).
+KL_DECIMALS = 1
 #: Mantissas of the scale factors (ГОСТ 2.302-like round values; 10 closes the decade).
 NICE = (*PLAN_SERIES, 10.0)
 #: Enlargements allowed from the work diagram to the ΔE diagram (μE = μA / k).
@@ -57,7 +61,9 @@ class GraphicalReplica:
     theta: the positions (rad, from position 0, the last = 2π); x: their abscissae;
     M_mm: M_red at the positions; mid_x, mid_mm: the middle ordinates used for the chords;
     a_mm: the work of the loads A_red by chords; drive_mm: A_drive; e_mm: ΔE at μE; j_mm: J_red;
-    K_mm, L_mm: intercepts on the ΔE axis; KL_mm; index_K, index_L: the tangent positions.
+    K_mm, L_mm: intercepts on the ΔE axis; KL_mm (as constructed); index_K, index_L: the tangent
+    positions; KL_read_mm: KL as sheet 3 dimensions it and the student reads it (KL_DECIMALS);
+    J_fly = KL_read·μE / (ω_m²·δ).
     """
     mu_phi: float
     mu_M: float
@@ -84,6 +90,7 @@ class GraphicalReplica:
     index_L: int
     J_fly: float
     accuracy: float               # estimated drawing accuracy of J_fly, kg·m²
+    KL_read_mm: float             # KL as dimensioned on sheet 3 and read, mm
 
 
 def work_scale(mu_M: float, mu_phi: float, H: float) -> float:
@@ -208,6 +215,9 @@ def graphical_replica(cycle: Cycle, delta: float, positions: int = 12, *, layout
     wm = cycle.omega_m
     # Chords and polygon err as h²: Richardson's estimate of the error at h is 4/3·|J(h) − J(h/2)|.
     accuracy = 4.0 / 3.0 * abs(c["J_fly"] - c2["J_fly"]) + READING_MM * c["mu_E"] / (wm * wm * delta)
+    # the student reads KL off the sheet as it is dimensioned there, and J_fly follows from that
+    kl_read = float(decimal_text(c["KL_mm"], KL_DECIMALS))
+    c["J_fly"] = flywheel_from_KL(kl_read, c["mu_E"], wm, delta)
     arrays = ("theta", "x", "M_mm", "mid_x", "mid_mm", "a_mm", "drive_mm", "e_mm", "j_mm")
     fields_: dict[str, Any] = {k: (_ro(v) if k in arrays else v) for k, v in c.items()}
-    return GraphicalReplica(**fields_, accuracy=accuracy)
+    return GraphicalReplica(**fields_, accuracy=accuracy, KL_read_mm=kl_read)

@@ -116,6 +116,7 @@ def dynamics_block(r: DynamicsResult) -> dict[str, Any]:
                       "rotation_deg": np.degrees(g.theta), "x_mm": g.x, "M_mm": g.M_mm,
                       "mid_x_mm": g.mid_x, "mid_mm": g.mid_mm, "a_mm": g.a_mm, "drive_mm": g.drive_mm,
                       "e_mm": g.e_mm, "j_mm": g.j_mm, "K_mm": g.K_mm, "L_mm": g.L_mm, "KL_mm": g.KL_mm,
+                      "KL_read_mm": g.KL_read_mm,
                       "index_K": g.index_K, "index_L": g.index_L, "J_flywheel": g.J_fly,
                       "accuracy": g.accuracy},
         "comparison": [{"method": c.method, "J_flywheel": c.J_fly, "difference": c.difference,

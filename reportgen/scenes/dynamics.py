@@ -182,7 +182,8 @@ def j_length(g) -> float:
 
 def wittenbauer_scene(g, names, omega_m: float, delta: float) -> Scene:
     """ΔE(J), the tangents at ψmax, ψmin, K, L and the segment KL on the ΔE axis; values: K_mm,
-    L_mm, KL_mm (measured) and J_fly = KL·μE/(ω_m²·δ) read back from them."""
+    L_mm, KL_mm (as constructed), KL_read_mm (as dimensioned and read: the replica's
+    ``KL_read_mm``) and J_fly = KL_read·μE/(ω_m²·δ) read back from it."""
     j, e = np.asarray(g.j_mm), np.asarray(g.e_mm)
     x_len = j_length(g)
     t_max, t_min = math.tan(math.radians(g.psi_max_deg)), math.tan(math.radians(g.psi_min_deg))
@@ -208,8 +209,9 @@ def wittenbauer_scene(g, names, omega_m: float, delta: float) -> Scene:
     labels += [Label(n, f"position:{n}", (float(p), float(q)), "number")
                for p, q, n in zip(j[:-1], e[:-1], names[:-1]) if n.isdigit()]
     KL = float(g.K_mm - g.L_mm)
-    J_fly = KL * g.mu_E / (omega_m * omega_m * delta)
-    values = {"K_mm": float(g.K_mm), "L_mm": float(g.L_mm), "KL_mm": KL, "J_fly": J_fly,
+    KL_read = float(g.KL_read_mm)
+    J_fly = KL_read * g.mu_E / (omega_m * omega_m * delta)
+    values = {"K_mm": float(g.K_mm), "L_mm": float(g.L_mm), "KL_mm": KL, "KL_read_mm": KL_read, "J_fly": J_fly,
               "psi_max_deg": float(g.psi_max_deg), "psi_min_deg": float(g.psi_min_deg),
               "index_K": float(g.index_K), "index_L": float(g.index_L), "j_length": x_len}
     return Scene("wittenbauer", (Scale(MU_E, g.mu_E, "Дж/мм"), Scale(MU_J, g.mu_J, "кг·м²/мм")), tuple(ents),

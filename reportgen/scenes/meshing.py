@@ -6,8 +6,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from shapely.geometry import Polygon
+
 from ..gears.meshing import GOST_SCALES, MeshingPicture, meshing_picture
-from .meshing_marks import MeshingMarks
+from .meshing_marks import ZONE_OFFSET_MM, MeshingMarks
 from .scene import Scene
 
 #: The view of the meshing picture on the left of sheet 4, sheet mm: the whole height of the
@@ -67,11 +69,94 @@ def label_room(pair, pic: MeshingPicture, scale: DrawingScale) -> tuple[float, f
     return (cx - hw, cy - hh, cx + hw, cy + hh)
 
 
+#: The note's figure is a detail of this scene round the pole: the drawn teeth and a margin for
+#: the designations (a share of their width), reduced to at most DETAIL_W × DETAIL_MAX_H page mm
+#: (the text block's 0.85 as the figure macro includes it; under the macro's height limit).
+DETAIL_W = 140.0
+DETAIL_MAX_H = 100.0
+DETAIL_MARGIN = 0.22
+#: The letter heights the note writes in that detail (page mm): the points, the designations, the
+#: dimension ab's text; the note's legend takes the detail's upper left corner (page mm).
+DETAIL_POINT_H = 3.5
+DETAIL_MARK_H = 2.9
+DETAIL_DIM_H = 3.2
+DETAIL_LEGEND = (62.0, 24.0)
+#: The page mm kept free along the detail's edges.
+DETAIL_EDGE = 2.0
+#: The sheet writes a designation placed for the note at the largest of these ГОСТ 2.304 sizes
+#: that its box holds, at least the sheet's own size, at most POINT_MAX_H for the points' letters
+#: and MARK_MAX_H for the other designations (sheet mm).
+GOST_HEIGHTS = (3.5, 5.0, 7.0)
+POINT_MAX_H = 5.0
+MARK_MAX_H = 5.0
+
+
+def detail_frame(pic: MeshingPicture) -> tuple[float, float, float, float]:
+    """The note's window of the meshing picture round the pole (real mm): the drawn teeth and a
+    margin for the designations."""
+    x0, y0, x1, y1 = pic.view
+    pad = DETAIL_MARGIN * (x1 - x0)
+    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+
+
+def detail_reduction(pic: MeshingPicture, scale: DrawingScale) -> float:
+    """Page mm per scene mm of the note's window (at most 1: the sheet's scale)."""
+    x0, y0, x1, y1 = detail_frame(pic)
+    k = scale.factor
+    return min(1.0, DETAIL_W / ((x1 - x0) * k), DETAIL_MAX_H / ((y1 - y0) * k))
+
+
+def _sheet_height(reserved: float, least: float, most: float) -> float:
+    """The sheet's letter height for a text whose box is ``reserved`` sheet mm high."""
+    fits = [h for h in GOST_HEIGHTS if least <= h <= min(most, max(reserved, least))]
+    return max(fits) if fits else least
+
+
 def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
-    """The designations of the picture at the sheet's scale (the note draws the same ones)."""
-    from .meshing_marks import place_marks
+    """The designations of the picture, placed once for both drawings of the scene (issue 12: the
+    note placed its own, and the dimension ab came out on the other side from sheet 4's).
+
+    First everything the note's detail shows (:func:`detail_frame`), placed in that window at the
+    note's letter sizes on its reduced page (``k·r`` page mm per real mm,
+    :func:`detail_reduction`) and never smaller than the sheet's letters reduced — so each box
+    holds the note's text and, within it, the sheet's; then, at the sheet's scale and sizes in the
+    sheet's view, the points outside that window, clear of the first. The dimension aw (the
+    sheet's only) is placed before both, and both keep clear of it.
+    Each mark carries the sheet's letter height (``height``) and the note's (``page_h``, 0 for a
+    mark of the sheet only); the positions are in real mm, the same for both."""
+    from dataclasses import replace
+
+    from .meshing_marks import DIM_H, MARK_H, POINT_H, place_aw, place_marks
     scale = scale if scale is not None else meshing_scale(pair, pic)
-    return place_marks(pair, pic, scale.factor, label_room(pair, pic, scale))
+    k = scale.factor
+    r = detail_reduction(pic, scale)
+    kn = k * r                                              # page mm per real mm
+    fx0, fy0, fx1, fy1 = detail_frame(pic)
+    room = label_room(pair, pic, scale)
+    sx0, sy0, sx1, sy1 = room
+    e = DETAIL_EDGE / kn
+    inner = (max(fx0 + e, sx0), max(fy0 + e, sy0), min(fx1 - e, sx1), min(fy1 - e, sy1))
+    legend = (fx0, fy1 - DETAIL_LEGEND[1] / kn, fx0 + DETAIL_LEGEND[0] / kn, fy1)
+    # the dimension aw (the sheet's only) first, right of the line of centres: the rest keeps clear
+    aw = place_aw(pair, pic, k, room, zone_k=k)
+    aw_keep: tuple[tuple[float, float, float, float], ...] = ()
+    if aw is not None:
+        bx0, by0, bx1, by1 = Polygon(aw.box).bounds
+        aw_keep = ((float(bx0), float(by0), float(bx1), float(by1)),)
+    point_h, mark_h = max(DETAIL_POINT_H, POINT_H * r), max(DETAIL_MARK_H, MARK_H * r)
+    dim_h = max(DETAIL_DIM_H, DIM_H * r)
+    detail = place_marks(pair, pic, kn, inner, point_h=point_h, mark_h=mark_h, dim_h=dim_h,
+                         keep_out=(legend, *aw_keep), zone_k=k, skip=frozenset({"aw"}))
+    marks = []
+    for m in detail.marks:
+        letter = m.name in pic.points
+        sheet_h = _sheet_height(m.height / r, POINT_H if letter else MARK_H, POINT_MAX_H if letter else MARK_MAX_H)
+        marks.append(replace(m, height=sheet_h,
+                             page_h=DETAIL_POINT_H if letter else DETAIL_MARK_H))
+    detail = replace(detail, marks=tuple(marks),
+                     dimensions=tuple(replace(d, detail=True) for d in detail.dimensions))
+    full = place_marks(pair, pic, k, room, zone_k=k, given=detail, keep_out=aw_keep, skip=frozenset({"aw"}))
+    return full if aw is None else replace(full, dimensions=full.dimensions + (aw,))
 
 
 def ab_on_sheet(pic: MeshingPicture, scale: DrawingScale) -> float:
@@ -83,16 +168,13 @@ def ab_on_sheet(pic: MeshingPicture, scale: DrawingScale) -> float:
 CIRCLE_KINDS = {"pitch": "axis", "base": "thin", "working": "hidden", "tip": "thin", "root": "thin"}
 #: The radius of the dots at the named points, paper mm.
 DOT_MM = 0.8
-#: The zones of one and two pairs in contact are drawn this far beside ab (paper mm).
-ZONE_OFFSET_MM = 6.0
 
 
 @dataclass(frozen=True)
 class MeshingScene:
     """The meshing picture of sheet 4 as one scene: ``scene`` in paper mm at the sheet's scale
     (real mm × ``scale.factor``, the origin at O1), built from ``pic``; the note's figure is a
-    window of it. ``marks`` are the designations as the sheet places them (the note places the
-    same names at its own letter size, :func:`reportgen.scenes.meshing_marks.place_marks`)."""
+    window of it. ``marks`` are the designations, placed once for both (:func:`meshing_marks`)."""
     pic: MeshingPicture
     scale: DrawingScale
     scene: Scene
@@ -159,10 +241,10 @@ def meshing_scene(pair, pic: MeshingPicture | None = None) -> MeshingScene:
             t = 0.4 * ZONE_OFFSET_MM
             ents.append(Segment(f"{ident}:tick{j}", (e[0] - nx * t, e[1] - ny * t), (e[0] + nx * t, e[1] + ny * t),
                                 "thin"))
-        mid = ((p[0] + q[0]) / 2 + nx * 0.9 * ZONE_OFFSET_MM, (p[1] + q[1]) / 2 + ny * 0.9 * ZONE_OFFSET_MM)
-        labels.append(Label("II" if z.pairs >= 2 else "I", ident, mid, "zone"))
     for name in ("O1", "O2", "P", "N1", "N2", "a", "b"):
         ents.append(Circle(f"point:{name}", mm(pic.points[name]), DOT_MM, "contour"))
+    for ident, text, c in marks.zones:       # placed with the designations: none touches them
+        labels.append(Label(text, ident, mm(c), "zone"))
     for m in marks.marks:
         labels.append(Label(m.tex, f"mark:{m.name}", mm(m.anchor), "mark"))
     return MeshingScene(pic, scale, Scene("meshing", (Scale("k_l", k, "", scale.label),), tuple(ents),

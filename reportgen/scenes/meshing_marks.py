@@ -18,7 +18,7 @@ better. Everything is in the gear-pair frame, real mm (:mod:`reportgen.gears.mes
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
@@ -39,6 +39,13 @@ MARK_H = 3.5
 DIM_H = 3.5
 #: Clearance kept between a text and a tooth outline, sheet mm.
 CLEAR = 1.0
+#: Clearance kept between two texts (and a text and another's leader), paper mm of the placement:
+#: no two designations touch (issue 12: «II» touched «αw»).
+TEXT_GAP = 1.0
+#: The zones of one and two pairs in contact are drawn this far beside ab (sheet mm), their
+#: numerals «I», «II» ZONE_H high (sheet mm) beyond them, at 0.9·ZONE_OFFSET_MM from the zone's line.
+ZONE_OFFSET_MM = 6.0
+ZONE_H = 3.5
 
 
 @dataclass(frozen=True)
@@ -55,6 +62,10 @@ class Mark:
     box: tuple[float, float, float, float]
     height: float                  # sheet mm
     word: bool = False
+    #: the letter height on the note's page (page mm) where the note's figure shows this mark (it
+    #: was placed at the note's letter size: :func:`reportgen.scenes.meshing.meshing_marks`); 0:
+    #: a mark of the sheet only (a point or a dimension outside the note's window)
+    page_h: float = 0.0
 
     @property
     def centre(self) -> Point:
@@ -104,6 +115,8 @@ class PlacedDimension:
     value: float
     text: str
     box: tuple[Point, ...]
+    #: the note's figure shows it too (placed in the note's window)
+    detail: bool = False
 
 
 @dataclass(frozen=True)
@@ -116,11 +129,22 @@ class MeshingMarks:
     angle: AngleMark
     dimensions: tuple[PlacedDimension, ...]
     arcs_window: tuple[float, float, float, float]
+    #: the numerals of the zones of one and two pairs in contact: (ident, text, centre real mm),
+    #: :func:`zone_numerals` (the sheet writes them ZONE_H high)
+    zones: tuple[tuple[str, str, Point], ...] = ()
 
     def boxes(self) -> list[tuple[str, Polygon]]:
         """Every text box (real mm): the marks' and the dimensions' texts."""
         out = [(m.name, box(*m.box)) for m in self.marks]
         out += [(d.name, Polygon(d.box)) for d in self.dimensions]
+        return out
+
+    def zone_boxes(self, k_sheet: float) -> list[tuple[str, Polygon]]:
+        """The zones' numerals' boxes (real mm) as the sheet writes them at ``k_sheet``."""
+        out = []
+        for ident, text, c in self.zones:
+            w, h = (v / k_sheet for v in text_size(text, ZONE_H))
+            out.append((ident, _box_at(c, w, h)))
         return out
 
 
@@ -147,6 +171,27 @@ def arcs_window(pair, pic: MeshingPicture) -> tuple[float, float, float, float]:
     return (vx0 - 2 * m, vy0 - 3 * m, vx1 + 2 * m, vy1 + 3 * m)
 
 
+def zone_numerals(pic: MeshingPicture, k_sheet: float) -> tuple[tuple[str, str, Point], ...]:
+    """The numerals «I», «II» of the zones of one and two pairs in contact (ident, text, centre in
+    real mm): beside the middle of each zone's line (drawn ZONE_OFFSET_MM to the lower right of ab
+    on the sheet at ``k_sheet``), 0.9·ZONE_OFFSET_MM beyond it."""
+    n1, n2 = pic.points["N1"], pic.points["N2"]
+    L = math.dist(n1, n2)
+    nx, ny = (n2[1] - n1[1]) / L, -(n2[0] - n1[0]) / L          # to the lower right of N1N2
+    d = 1.9 * ZONE_OFFSET_MM / k_sheet
+    out = []
+    for i, z in enumerate(pic.zones):
+        if z.pairs == 0:
+            continue
+        c = ((z.start[0] + z.end[0]) / 2 + nx * d, (z.start[1] + z.end[1]) / 2 + ny * d)
+        out.append((f"zone{min(z.pairs, 2)}:{i}", "II" if z.pairs >= 2 else "I", (float(c[0]), float(c[1]))))
+    return tuple(out)
+
+
+def _box_at(c: Point, w: float, h: float) -> Polygon:
+    return box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+
+
 class _Placer:
     """Greedy placement against hard obstacles (teeth, placed texts) and soft ones (drawn lines)."""
 
@@ -159,16 +204,20 @@ class _Placer:
         self.room = room
         self.placed: list[Polygon] = []
 
-    def free(self, poly: Polygon, leader: LineString | None = None) -> bool:
+    def free(self, poly: Polygon, leader: LineString | None = None, whole: LineString | None = None) -> bool:
+        """``poly`` (a text's box) and ``leader`` clear of the teeth, the room's edge and what is
+        placed; ``whole``: the leader with the part near its own point that may cross the teeth
+        (``leader`` is the rest), which must still cross no other text or leader."""
         if not self.room.contains(poly):
             return False
         if self.teeth.intersects(poly):
             return False
         if leader is not None and leader.length > 0 and self.teeth.intersects(leader):
             return False
-        gap = 0.8 / self.k
+        gap = TEXT_GAP / self.k
+        line = whole if whole is not None else leader
         return not any(poly.intersects(p.buffer(gap)) for p in self.placed) and not (
-            leader is not None and any(leader.intersects(p) for p in self.placed))
+            line is not None and any(line.intersects(p) for p in self.placed))
 
     def crossings(self, poly) -> int:
         if self.tree is None:
@@ -184,19 +233,16 @@ def _bounds(poly) -> tuple[float, float, float, float]:
     return (float(x0), float(y0), float(x1), float(y1))
 
 
-def _box_at(c: Point, w: float, h: float) -> Polygon:
-    return box(c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
-
-
 def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: float,
             prefer_deg: float, own_radius: float = 0.0) -> Mark:
-    """A letter beside its point: 16 directions from ``prefer_deg``, three distances; where none
-    is free, on a leader that may cross the teeth within ``own_radius`` of the point."""
+    """A letter beside its point: 16 directions from ``prefer_deg``, two distances (within half a
+    letter of the point: farther, a letter is not read as its point's); where none is free, on a
+    leader that may cross the teeth within ``own_radius`` of the point."""
     k = placer.k
     w, h = (v / k for v in text_size(text, height))
     best = None
     order = [prefer_deg + s * i * 22.5 for i in range(9) for s in ((1, -1) if i else (1,))][:16]
-    for dist in (1.5 / k, (1.5 + height) / k, (1.5 + 1.5 * height) / k):
+    for dist in (1.5 / k, (1.5 + 0.5 * height) / k):
         for ang in order:
             ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
             t = min((w / 2) / abs(ux) if abs(ux) > ABS_ZERO else math.inf,
@@ -216,7 +262,7 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
         dirs = [prefer_deg + s_ * i * 22.5 for i in range(9) for s_ in ((1, -1) if i else (1,))][:16]
         return _on_leader(placer, name, text, tex, [p], dirs, height,
                           lengths=(8.0, 12.0, 17.0, 23.0, 30.0, 40.0),
-                          own=SPoint(p).buffer(own_radius) if own_radius else None)
+                          own=SPoint(p).buffer(own_radius) if own_radius else None, strict=True)
     placer.take(best[1])
     return Mark(name, text, tex, (float(p[0]), float(p[1])), (), _bounds(best[1]),
                 height)
@@ -224,11 +270,13 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
 
 def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Point],
                directions: list[float], height: float, word: bool = False,
-               lengths: tuple[float, ...] = (7.0, 11.0, 16.0, 22.0, 30.0), own=None) -> Mark:
+               lengths: tuple[float, ...] = (7.0, 11.0, 16.0, 22.0, 30.0), own=None, strict: bool = False) -> Mark:
     """A designation on a leader: from one of ``anchors`` (in order of preference) a slanted line of
     one of ``lengths`` (sheet mm) in one of ``directions`` (degrees), then a shelf under the text.
     The first free candidate with the fewest crossed lines wins (ties: the earlier). ``own``: the
-    region (a tooth, the teeth round the pole) the leader may cross to reach its anchor."""
+    region (a tooth, the teeth round the pole) the leader may cross to reach its anchor; ``strict``:
+    there too it crosses no other text or leader (a point's letter: two letters' leaders crossing
+    near their points swap them for a reader)."""
     k = placer.k
     w, h = (v / k for v in text_size(text, height))
     best = None
@@ -244,11 +292,12 @@ def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Po
                 leader = LineString([anchor, elbow, end])
                 # the leader's first mm touches its own line: test the rest
                 probe = LineString([(anchor[0] + ux * 1.2 / k, anchor[1] + uy * 1.2 / k), elbow, end])
+                whole = probe if strict else None
                 if own is not None:
                     probe = probe.difference(own)
                     if probe.is_empty:
                         probe = None
-                if not placer.free(poly, probe):
+                if not placer.free(poly, probe, whole):
                     continue
                 score = placer.crossings(poly) * 3 + (placer.crossings(probe) if probe is not None else 0)
                 if best is None or score < best[0]:
@@ -275,20 +324,47 @@ def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Po
                 _bounds(poly), height, word)
 
 
-def _dim_box(p1: Point, p2: Point, offset: float, k: float, text: str) -> Polygon:
+def _aw_offsets(pic: MeshingPicture, aw_box, room, k: float) -> list[float]:
+    """Offsets (paper mm) to try for the dimension aw: right of the line of centres, beyond the
+    teeth and the arcs where the room allows, then nearer."""
+    teeth_right = max(float(np.max(t[:, 0])) for t in pic.teeth1 + pic.teeth2)
+    far = room[2] * k - 8.0
+    near = teeth_right * k + 10.0
+    start = min(max(aw_box[2] * k + 10.0, near), far)
+    cands = [start + v for v in np.arange(0.0, far - start + MM_ROUNDOFF, 6.0)]
+    cands += [start - v for v in np.arange(6.0, start - near + MM_ROUNDOFF, 6.0)]
+    return [-float(v) for v in cands] or [-near]
+
+
+def place_aw(pair, pic: MeshingPicture, k: float, room: tuple[float, float, float, float],
+             zone_k: float | None = None) -> PlacedDimension | None:
+    """The dimension aw (O1O2) at scale ``k`` in ``room`` (real mm), clear of the teeth and the
+    zones only: placed before the designations, which keep clear of it (None when O1 or O2 is
+    outside the room)."""
+    inside = box(*room)
+    if not (inside.contains(SPoint(pic.points["O1"])) and inside.contains(SPoint(pic.points["O2"]))):
+        return None
+    marks = place_marks(pair, pic, k, room, zone_k=zone_k,
+                        skip=frozenset(("P", "a", "b", "N1", "N2", "O1", "O2", "ab")),
+                        given=MeshingMarks(k=k, marks=(), arcs=(), angle=AngleMark(pic.points["P"], 0.0, 0.0, 0.0),
+                                           dimensions=(), arcs_window=arcs_window(pair, pic)))
+    return next(d for d in marks.dimensions if d.name == "aw")
+
+
+def _dim_box(p1: Point, p2: Point, offset: float, k: float, text: str, height: float = DIM_H) -> Polygon:
     """The text box of an aligned dimension (as Canvas.dimension draws it: the text 2.5 mm beyond
     the dimension line, along it), real mm."""
     d = math.dist(p1, p2)
     ux, uy = (p2[0] - p1[0]) / d, (p2[1] - p1[1]) / d
     nx, ny = -uy, ux
     c = ((p1[0] + p2[0]) / 2 + nx * (offset + 2.5) / k, (p1[1] + p2[1]) / 2 + ny * (offset + 2.5) / k)
-    w, h = (v / k for v in text_size(text, DIM_H))
+    w, h = (v / k for v in text_size(text, height))
     corners = [(-w / 2, -h / 2), (w / 2, -h / 2), (w / 2, h / 2), (-w / 2, h / 2)]
     return Polygon([(c[0] + ux * a + nx * b, c[1] + uy * a + ny * b) for a, b in corners]).buffer(0.5 / k)
 
 
 def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
-               offsets: list[float], prefer_clear: bool = False) -> PlacedDimension:
+               offsets: list[float], prefer_clear: bool = False, height: float = DIM_H) -> PlacedDimension:
     """The first offset (sheet mm) at which the text, the dimension line and its extension lines
     cross no tooth and no placed text; ``prefer_clear``: among those, the first whose text crosses
     no drawn line (the arcs), else the one crossing fewest."""
@@ -299,7 +375,7 @@ def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
     # the dimension line (thin extension lines may cross a tooth, as on a drawn sheet); 3rd: the text
     best: tuple[int, float, Polygon] | None = None
     for off in offsets:
-        poly = _dim_box(p1, p2, off, k, text)
+        poly = _dim_box(p1, p2, off, k, text, height)
         if not placer.free(poly):
             continue
         q1 = (p1[0] + nx * off / k, p1[1] + ny * off / k)
@@ -319,7 +395,7 @@ def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
             break
     if best is None:          # no free place for the text: the first offset (a test reports it)
         off = offsets[0]
-        best = (10**6, off, _dim_box(p1, p2, off, k, text))
+        best = (10**6, off, _dim_box(p1, p2, off, k, text, height))
     chosen = (best[1], best[2])
     placer.take(chosen[1])
     return PlacedDimension(name, (float(p1[0]), float(p1[1])), (float(p2[0]), float(p2[1])),
@@ -347,15 +423,24 @@ def _circle_anchors(centre: Point, r: float, window: Polygon, teeth: Polygon, ge
 
 def place_marks(pair, pic: MeshingPicture, k: float,
                 room: tuple[float, float, float, float] | None = None, *,
-                point_h: float = POINT_H, mark_h: float = MARK_H,
-                keep_out: tuple[tuple[float, float, float, float], ...] = ()) -> MeshingMarks:
+                point_h: float = POINT_H, mark_h: float = MARK_H, dim_h: float = DIM_H,
+                keep_out: tuple[tuple[float, float, float, float], ...] = (),
+                zone_k: float | None = None, given: MeshingMarks | None = None,
+                skip: frozenset[str] = frozenset()) -> MeshingMarks:
     """Every designation of the meshing picture at scale ``k`` (paper mm per real mm) inside
     ``room`` (real mm; default: the picture's bounds with the centres, widened by 60 paper mm);
-    letters ``point_h`` and designations ``mark_h`` paper mm high. Sheet 4 places them at its
-    scale in its view; the note's figure, a detail of the same picture round the pole, at its
-    own scale in its frame (points and the dimension aw outside it are left out); ``keep_out``
-    boxes (real mm) hold other things (a legend, a scale bar)."""
+    letters ``point_h``, designations ``mark_h`` and the dimensions' texts ``dim_h`` paper mm
+    high; ``keep_out`` boxes (real mm) hold other things (a legend, a scale bar). The zones of
+    one and two pairs and their numerals (drawn at ``zone_k``, the sheet's scale; default ``k``)
+    are kept clear.
+
+    ``given``: designations placed already (the note's window, at the note's letter size:
+    :func:`reportgen.scenes.meshing.meshing_marks`); only what they lack is placed (the points
+    and the dimension aw outside that window), clear of them, and the result holds both, at the
+    scale ``k`` (the given dimensions' offsets converted to it). ``skip``: names not to place
+    (placed apart: the dimension aw, :func:`place_aw`)."""
     g = pair.geometry
+    zone_k = zone_k if zone_k is not None else k
     teeth = teeth_polygons(pic)
     aw_box = arcs_window(pair, pic)
     window = box(*aw_box)
@@ -373,42 +458,56 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     lines.append(LineString([n1, n2]))
     lines.append(LineString(pic.segments["tangent"]))
     lines.append(LineString([(0.0, room[1]), (0.0, room[3])]))
-    # the zones of single and double contact are drawn 6 mm beside ab, their numerals beyond
+    # the zones of single and double contact are drawn ZONE_OFFSET_MM beside ab, their numerals
+    # beyond: a band no designation enters, the numerals' boxes kept TEXT_GAP clear
     pa, pb_ = pic.points["a"], pic.points["b"]
     L = math.dist(n1, n2)
     zn = ((n2[1] - n1[1]) / L, -(n2[0] - n1[0]) / L)           # to the lower right of N1N2
-    zone_band = Polygon([(pa[0] + zn[0] * d / k, pa[1] + zn[1] * d / k) for d in (3.0, 11.0)]
-                        + [(pb_[0] + zn[0] * d / k, pb_[1] + zn[1] * d / k) for d in (11.0, 3.0)])
+    zone_band = Polygon([(pa[0] + zn[0] * d / zone_k, pa[1] + zn[1] * d / zone_k) for d in (3.0, 11.0)]
+                        + [(pb_[0] + zn[0] * d / zone_k, pb_[1] + zn[1] * d / zone_k) for d in (11.0, 3.0)])
     placer = _Placer(k, teeth + [zone_band], lines, box(*room))
+    numerals = zone_numerals(pic, zone_k)
+    result = MeshingMarks(k=k, marks=(), arcs=(), angle=AngleMark(P, 0.0, 0.0, 0.0), dimensions=(),
+                          arcs_window=aw_box, zones=numerals)
+    for _, poly in result.zone_boxes(zone_k):
+        placer.take(poly)
     for kb in keep_out:
         placer.take(box(*kb))
+    done: set[str] = set()
+    marks: list[Mark] = []
+    dims: list[PlacedDimension] = []
+    if given is not None:
+        for m in given.marks:
+            placer.take(box(*m.box))
+            if m.leader:
+                placer.take(LineString(m.leader).buffer(0.3 / k))
+        for d in given.dimensions:
+            placer.take(Polygon(d.box))
+        done = {m.name for m in given.marks} | {d.name for d in given.dimensions}
+        marks = list(given.marks)
+        dims = [replace(d, offset_mm=d.offset_mm * k / given.k) for d in given.dimensions]
     # the common tangent and N1N2 cross the teeth near P; the line of action matters more
     teeth_u = unary_union(teeth)
     # 1. the letters of the points
-    marks: list[Mark] = []
     prefer = {"O1": 0, "O2": 0, "P": -60, "N1": 200, "N2": 20, "a": 150, "b": -30}
     inside = box(*room)
     for name in ("P", "a", "b", "N1", "N2", "O1", "O2"):
         pt = pic.points[name]
-        if not inside.contains(SPoint(pt)):
+        if name in done or name in skip or not inside.contains(SPoint(pt)):
             continue
         marks.append(_beside(placer, name, name, f"{name[0]}_{{{name[1:]}}}" if len(name) > 1 else name,
                              pt, point_h, prefer[name], own_radius=2.4 * g.m))
     # 2. the dimensions: ab beside the line of action, aw right of the line of centres
-    ab_text = plain(pic.ab_drawn, 3).replace(".", ",")
-    offs = [s * v for v in (12.0, 16.0, 21.0, 27.0, 34.0, 42.0, 52.0, 64.0, 78.0) for s in (-1.0, 1.0)]
-    dims = [_dimension(placer, "ab", pic.points["a"], pic.points["b"], ab_text, offs)]
-    # aw: right of the line of centres, beyond the teeth and the arcs where the room allows
-    teeth_right = max(float(np.max(t[:, 0])) for t in pic.teeth1 + pic.teeth2)
-    far = room[2] * k - 8.0
-    near = teeth_right * k + 10.0
-    start = min(max(aw_box[2] * k + 10.0, near), far)
-    cands = [start + v for v in np.arange(0.0, far - start + MM_ROUNDOFF, 6.0)]
-    cands += [start - v for v in np.arange(6.0, start - near + MM_ROUNDOFF, 6.0)]
-    aw_text = plain(g.aw, 3).replace(".", ",")
-    if inside.contains(SPoint(pic.points["O1"])) and inside.contains(SPoint(pic.points["O2"])):
-        dims.append(_dimension(placer, "aw", pic.points["O1"], pic.points["O2"], aw_text,
-                               [-float(v) for v in cands] or [-near], prefer_clear=True))
+    if "ab" not in done and "ab" not in skip:
+        ab_text = plain(pic.ab_drawn, 3).replace(".", ",")
+        offs = [s * v for v in (12.0, 16.0, 21.0, 27.0, 34.0, 42.0, 52.0, 64.0, 78.0) for s in (-1.0, 1.0)]
+        dims.append(_dimension(placer, "ab", pic.points["a"], pic.points["b"], ab_text, offs, height=dim_h))
+    if "aw" not in done and "aw" not in skip and inside.contains(SPoint(pic.points["O1"])) \
+            and inside.contains(SPoint(pic.points["O2"])):
+        dims.append(_dimension(placer, "aw", pic.points["O1"], pic.points["O2"], plain(g.aw, 3).replace(".", ","),
+                               _aw_offsets(pic, aw_box, room, k), prefer_clear=True, height=dim_h))
+    if given is not None:         # the circles, s, p and αw are the given ones
+        return replace(given, k=k, marks=tuple(marks), dimensions=tuple(dims), zones=numerals)
     # 3. the circles: gear 1 (below) on the left, leaders down-left; gear 2 (above) on the right
     order = {"tip": 0, "root": 1, "pitch": 2, "working": 3, "base": 4}
     for c in sorted(pic.circles, key=lambda c: (c.gear, order[c.kind])):
@@ -459,4 +558,4 @@ def place_marks(pair, pic: MeshingPicture, k: float,
                             mark_h, lengths=(10.0, 16.0, 24.0, 34.0, 46.0, 60.0, 75.0, 90.0),
                             own=SPoint(P).buffer(max(ang_r + 2.0 / k, 2.4 * g.m))))
     return MeshingMarks(k=k, marks=tuple(marks), arcs=tuple(arcs), angle=angle,
-                        dimensions=tuple(dims), arcs_window=aw_box)
+                        dimensions=tuple(dims), arcs_window=aw_box, zones=numerals)

@@ -14,8 +14,9 @@ from latex_templates.render import (LANGUAGES, MissingString, Strings, make_envi
 
 ROOT = Path(__file__).resolve().parents[2]
 STRINGS = ROOT / "latex_templates" / "strings"
-#: Tables only the non-Russian catalogues have (Russian notation is the canonical one).
-NOTATION = ("subscripts", "units", "format")
+#: Tables only the non-Russian catalogues have (Russian notation is the canonical one; the crane's
+#: symbols per quantity, ``crane_symbols``, replace the solver's Russian ones).
+NOTATION = ("subscripts", "units", "format", "crane_symbols")
 
 
 def _keys(table, prefix=""):
@@ -33,14 +34,30 @@ def _catalogue(lang: str) -> dict:
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
 def test_same_keys_in_every_language(lang):
-    # the crane and control-work documents are Russian only so far (docs/languages.md; the loader
-    # refuses another language for them): their areas are not compared
-    from reportgen.taskfile import RUSSIAN_ONLY_KINDS
-    skip = tuple(k.split("-")[0] + "." for k in RUSSIAN_ONLY_KINDS)
-    ru = {k for k in _keys(_catalogue("ru")) if not k.startswith(skip)}
-    other = {k for k in _keys(_catalogue(lang)) if not k.startswith(skip)}
+    """Every key of every area, the crane's (``crane.``) and the control work's (``control.``) too."""
+    ru = set(_keys(_catalogue("ru")))
+    other = set(_keys(_catalogue(lang)))
     assert not ru - other, f"missing in {lang}: {sorted(ru - other)[:20]}"
     assert not other - ru, f"only in {lang}: {sorted(other - ru)[:20]}"
+    for area in ("crane.", "control."):
+        assert any(k.startswith(area) for k in other), area      # the areas are really compared
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_lists_have_the_russian_length(lang):
+    """A list (a table's header, the references, the introduction's paragraphs) has as many items
+    as the Russian one: a header with a column less would shift the sheet's table."""
+    def lists(node, prefix=""):
+        for k, v in node.items():
+            if isinstance(v, dict):
+                yield from lists(v, f"{prefix}{k}.")
+            elif isinstance(v, list):
+                yield prefix + k, len(v)
+    ru = dict(lists(_catalogue("ru")))
+    other = dict(lists(_catalogue(lang)))
+    bad = {k: (n, other.get(k)) for k, n in ru.items()
+           if k in other and other[k] != n and not k.startswith(("words.", "crane.note.references", "references"))}
+    assert not bad, bad
 
 
 def test_plural_forms_per_language():
@@ -66,12 +83,9 @@ def _referenced_keys() -> set[str]:
 def test_every_key_the_code_names_exists_in_every_language():
     keys = _referenced_keys()
     assert len(keys) > 300, len(keys)           # the scan sees the code's keys
-    from reportgen.taskfile import RUSSIAN_ONLY_KINDS   # their words are in ru only (docs/languages.md)
-    ru_only = tuple(k.split("-")[0] + "." for k in RUSSIAN_ONLY_KINDS)
+    assert any(k.startswith("crane.") for k in keys) and any(k.startswith("control.") for k in keys)
     for lang in LANGUAGES:
         s = Strings(lang)
-        if lang != "ru":
-            keys = {k for k in keys if not k.startswith(ru_only)}
         missing = sorted(k for k in keys if not s.has(k))
         assert not missing, f"{lang}: {missing[:20]}"
 
@@ -156,6 +170,12 @@ def test_ukrainian_catalogue_has_no_russian_letters():
     are mapped by the subscripts table; the cited Russian book is the one exception)."""
     for path in sorted((STRINGS / "uk").glob("*.toml")) + [STRINGS / "uk.toml"]:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
+        # the crane's bibliography cites the Russian books it follows (Казак, ПБ 10-382-00) in their
+        # original language, as ДСТУ 8302 asks: each such item is a citation with its year
+        cited = data.get("crane", {}).get("note", {}).pop("references", {}).get("items", [])
+        for item in cited:
+            if re.search("[ыэъёЫЭЪЁ]", item):
+                assert re.search(r"(19|20)\d\d|--\d\d\.", item), item
         text = repr(data)
         text = text.replace("Артоболевский", "")
         assert not re.search("[ыэъёЫЭЪЁ]", text), path.name
@@ -174,17 +194,14 @@ def test_english_catalogue_has_cyrillic_only_in_symbols():
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
-def test_russian_only_documents_refuse_another_language(lang):
-    """A crane note in uk/en would print Russian under another language's name: refused instead."""
-    import tomllib
-
-    from reportgen.errors import TaskError
+@pytest.mark.parametrize("example", ["crane-hoist", "control-work"])
+def test_crane_and_control_work_accept_every_language(lang, example):
+    """The crane note and the control work are translated (they were refused in uk/en while their
+    words existed only in Russian)."""
     from reportgen.taskfile import parse_task
-    data = tomllib.loads((ROOT / "examples" / "crane-hoist" / "task.toml").read_text(encoding="utf-8"))
+    data = tomllib.loads((ROOT / "examples" / example / "task.toml").read_text(encoding="utf-8"))
     data.setdefault("document", {})["language"] = lang
-    with pytest.raises(TaskError) as err:
-        parse_task(data)
-    assert err.value.path == "document.language"
+    assert parse_task(data).document.language == lang
 
 
 # A display (a calculation record, a displayed equation) ends its sentence: the where-list after it
@@ -239,3 +256,37 @@ def test_the_display_check_sees_a_lower_case_continuation():
     assert _sentence_after_display("en", "\\VAR{eq(r.x)}\n\\BLOCK{endif}\nwhich on the scheme is\n")
     assert not _sentence_after_display("ru", "\\VAR{m.calc(e.h)}\nНа~схеме это плечо\n")
     assert not _sentence_after_display("uk", "\\VAR{m.calc(e.h)}\nде $x$~--- ...\n")
+
+
+@pytest.mark.parametrize("rules", ["1969", "PB-10-382-00"])
+def test_every_crane_quantity_has_a_symbol_in_uk_and_en(rules):
+    """Under both sets of rules, every quantity the crane solver prints has its Ukrainian and English
+    symbol (crane_symbols); in English no Cyrillic is left, in Ukrainian no ы/э/ъ/ё; two different
+    quantities of one mechanism never share a symbol unless the Russian one is shared too."""
+    import re as _re
+
+    from latex_templates.parts.crane_common import symbol_in
+    from reportgen.project import Project
+    from reportgen.taskfile import parse_task
+    text = (ROOT / "examples" / "crane-hoist" / "task.toml").read_text(encoding="utf-8")
+    text = _re.sub(r'(?m)^rules = "[^"]*"', f'rules = "{rules}"', text)
+    crane = Project(parse_task(tomllib.loads(text))).crane
+    assert crane.rules.rules == rules
+    for lang in ("uk", "en"):
+        s = Strings(lang)
+        for mech in ("hoist", "trolley"):
+            calc = getattr(crane, mech)
+            quantities = {**{k: v.latex for k, v in calc.vars.items()},
+                          **{k: r.symbol for k, r in calc.records.items()}}
+            shown: dict[str, tuple[str, str]] = {}
+            for key, ru in quantities.items():
+                sym = symbol_in(s, mech, key, ru)
+                localized = s.localize_latex("$" + sym + "$")
+                if lang == "en":
+                    assert not _re.search("[\u0400-\u04FF]", localized), (mech, key, localized)
+                else:
+                    assert not _re.search("[ыэъёЫЭЪЁ]", localized), (mech, key, localized)
+                if sym in shown and shown[sym][1] != ru:
+                    pytest.fail(f"{lang} {mech}: {key} and {shown[sym][0]} are both {sym}")
+                shown[sym] = (key, ru)
+    assert symbol_in(Strings("ru"), "hoist", "D_bl", "D_{\\text{бл}}") == "D_{\\text{бл}}"   # Russian as solved

@@ -44,18 +44,28 @@ def _number(s: str) -> float:
 
 
 def test_wittenbauer_KL_in_note_is_the_sheets_dimension(built):
+    """One quantity, one rounding (issue 12: sheet 3 printed KL = 39,3 while the note's formula for
+    J_гр used 39,337): KL read back from sheet 3's DIMENSION text is the KL the note prints, in its
+    text and in the substitution of J_гр, and J_гр follows from that printed value."""
     project, content, doc = built
     c = content.context
     scene = content.figures["dyn_wittenbauer"].scene
-    KL_note = c["tg"]["KL"].value
-    assert KL_note == scene.values["KL_mm"]
     K, L = scene.entity("point:K"), scene.entity("point:L")
-    assert math.dist(K.c, L.c) == pytest.approx(KL_note, abs=1e-9)         # drawn, not only stated
-    dims = list(doc.modelspace().query("DIMENSION"))
-    measured = [d.get_measurement() for d in dims]
-    assert any(abs(m - KL_note) < 1e-6 for m in measured), (KL_note, measured)
-    # the flywheel of the graphical method: the note's record from KL is results.json's
-    assert c["tg"]["J_gr"].value == pytest.approx(scene.values["J_fly"], rel=1e-12)
+    assert math.dist(K.c, L.c) == pytest.approx(scene.values["KL_mm"], abs=1e-9)     # drawn, not only stated
+    dims = [d for d in doc.modelspace().query("DIMENSION")
+            if abs(d.get_measurement() - scene.values["KL_mm"]) < 1e-6]
+    assert len(dims) == 1, "the dimension KL is not on sheet 3"
+    printed = dims[0].dxf.text
+    KL_sheet = _number(printed)
+    KL_note = c["tg"]["KL"].value
+    assert KL_note == KL_sheet, (KL_note, printed)
+    J_gr = c["tg"]["J_gr"]
+    assert printed.replace(",", "{,}") in J_gr.substituted_latex(), (printed, J_gr.substituted_latex())
+    # the flywheel of the graphical method follows from the printed KL and is results.json's
+    mu_E = scene.scale("μE").value
+    omega, delta = project.dynamics.omega_m, project.dynamics.delta_target
+    assert J_gr.value == pytest.approx(KL_sheet * mu_E / (omega * omega * delta), rel=1e-12)
+    assert J_gr.value == pytest.approx(scene.values["J_fly"], rel=1e-12)
     assert scene.values["J_fly"] == pytest.approx(project.dynamics.graphical.J_fly, rel=1e-12)
 
 

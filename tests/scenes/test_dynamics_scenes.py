@@ -9,6 +9,9 @@ from pathlib import Path
 
 import pytest
 
+from reportgen.dynamics.graphical import KL_DECIMALS
+from reportgen.numbers import decimal_text
+
 from reportgen.project import Project
 from reportgen.scenes.dynamics import MU_E, MU_OMEGA
 from reportgen.scenes.scene import Polyline, Segment
@@ -48,7 +51,10 @@ def test_flywheel_read_back_from_KL(project):
     w = project.scenes.dynamics.wittenbauer
     KL = w.entity("KL")
     assert isinstance(KL, Segment)
-    J = KL.length * w.scale(MU_E).value / (res.omega_m ** 2 * res.delta_target)
+    # KL is read off the drawing to its dimension's 0,1 mm, and J follows from the value read
+    read = float(decimal_text(KL.length, KL_DECIMALS))
+    assert w.values["KL_read_mm"] == read == res.graphical.KL_read_mm
+    J = read * w.scale(MU_E).value / (res.omega_m ** 2 * res.delta_target)
     assert J == pytest.approx(res.graphical.J_fly, rel=1e-12)
     assert w.values["J_fly"] == pytest.approx(J, rel=1e-12)
 

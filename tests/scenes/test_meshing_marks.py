@@ -16,7 +16,7 @@ from reportgen.gears.meshing import meshing_picture
 from reportgen.gears.pair import solve_gear_pair
 from reportgen.project import Project
 from reportgen.scenes.meshing import label_room, meshing_marks, meshing_scale
-from reportgen.scenes.meshing_marks import CHAR_WIDTH, teeth_polygons
+from reportgen.scenes.meshing_marks import CHAR_WIDTH, TEXT_GAP, teeth_polygons
 from reportgen.taskfile import load_task
 from scene_readback import assert_marks_clear
 
@@ -50,11 +50,18 @@ def _check(pair):
             assert math.dist(m.leader[0], m.anchor) < 1e-9
             x0, y0, x1, y1 = m.box
             end = m.leader[-1]
-            assert x0 - 1e-6 <= end[0] <= x1 + 1e-6 and abs(end[1] - y0) < 1.0 / marks.k
+            # the shelf under the text (the box is the note's text, placed at its reduced page size)
+            assert x0 - 1e-6 <= end[0] <= x1 + 1e-6 and abs(end[1] - y0) < 0.25 * (y1 - y0)
         else:
             assert box(*m.box).distance(Polygon([(m.anchor[0] - 1e-6, m.anchor[1]),
                                                  (m.anchor[0] + 1e-6, m.anchor[1]),
                                                  (m.anchor[0], m.anchor[1] + 1e-6)])) < 12.0 / marks.k
+    # no two texts touch on the sheet: a gap of TEXT_GAP mm at least, the zones' numerals included
+    k = marks.k
+    named = boxes + marks.zone_boxes(k)
+    for i, (n1, b1) in enumerate(named):
+        for n2, b2 in named[i + 1:]:
+            assert b1.distance(b2) * k >= TEXT_GAP - 1e-9, f"{n1} touches {n2} ({b1.distance(b2) * k:.2f} mm)"
     return marks
 
 
@@ -147,3 +154,81 @@ def test_note_figure_marks_clear_of_teeth(name):
     room = box(*meshing_frame(pic))
     teeth = teeth_polygons(pic)
     assert_marks_clear(marks.boxes(), room, teeth)
+
+
+# -- sheet 4 at the corners of the blocking contour (issue 12) -----------------------------------
+
+#: Two texts of sheet 4 closer than this (sheet mm, read back from the DXF) touch for a reader.
+SHEET_GAP_MM = 1.0
+
+
+def contour_corners(z1: int, z2: int, eps_min: float, n: int = 41) -> list[tuple[float, float]]:
+    """The feasible shifts of the pair z1/z2 farthest in eight directions of the (x1, x2) plane (the
+    corners of its blocking contour: the pairs at the limits of every check), to 0,01."""
+    import numpy as np
+
+    from reportgen.gears.shifts import blocking_contour
+    bc = blocking_contour(z1, z2, n=n, eps_min=eps_min)
+    X1, X2 = np.meshgrid(bc.x1, bc.x2, indexing="ij")
+    pts = np.stack([X1[bc.feasible], X2[bc.feasible]], axis=1)
+    out: list[tuple[float, float]] = []
+    for d in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1), (1, -1), (-1, 1)):
+        i = int(np.argmax(pts @ np.asarray(d, dtype=float)))
+        p = (round(float(pts[i, 0]), 2), round(float(pts[i, 1]), 2))
+        if p not in out:
+            out.append(p)
+    return out
+
+
+def _corner_cases():
+    out = []
+    for name in GEAR_EXAMPLES:
+        task = load_task(str(ROOT / "examples" / name / "task.toml"))
+        if name.endswith(("-en", "-uk")):         # the same pairs in another language
+            continue
+        g = task.gears
+        for x1, x2 in contour_corners(g.z1, g.z2, g.eps_min):
+            out.append(pytest.param(name, x1, x2, id=f"{name}-{x1}-{x2}"))
+    return out
+
+
+def sheet4_text_gaps(project, tmp_path) -> list[str]:
+    """Pairs of texts of sheet 4 (read back from its DXF: the meshing picture, the sliding diagram,
+    the reducer; the title block's and the tables' cells left out) closer than SHEET_GAP_MM."""
+    import ezdxf
+
+    from drawings.sheets import gears as gear_sheet
+    from reportgen.commands.pipeline import draw_sheet
+    from labels.readback import sheet_texts
+
+    sheet = draw_sheet(project, gear_sheet, 4, 4)
+    sheet.save(tmp_path / "s4.dxf")
+    views = [v.rect.polygon() for name, v in sheet.views.items() if name in ("meshing", "sliding")]
+    texts = [t for t in sheet_texts(ezdxf.readfile(tmp_path / "s4.dxf")) if any(t.box.intersects(v) for v in views)]
+    found = []
+    for i, a in enumerate(texts):
+        for b in texts[i + 1:]:
+            d = a.box.distance(b.box)
+            if d < SHEET_GAP_MM:
+                found.append(f"«{a.text}» / «{b.text}»: {d:.2f} mm")
+    return found
+
+
+@pytest.mark.parametrize("name,x1,x2", _corner_cases())
+def test_sheet4_texts_apart_at_contour_corners(name, x1, x2, tmp_path):
+    """Sheet 4 of a pair at a corner of its blocking contour: no two texts of the meshing picture
+    and the sliding diagram touch (issue 12: «II» touched «αw», «a» touched the axis name «λ»; a
+    pair with a at N1 stopped the sheet with a bare StopIteration)."""
+    from dataclasses import replace
+
+    task = load_task(str(ROOT / "examples" / name / "task.toml"))
+    project = Project(replace(task, gears=replace(task.gears, x1=x1, x2=x2)))
+    found = sheet4_text_gaps(project, tmp_path)
+    assert not found, "\n".join(found)
+
+
+@pytest.mark.parametrize("name", GEAR_EXAMPLES)
+def test_sheet4_texts_apart(name, tmp_path):
+    project = Project(load_task(str(ROOT / "examples" / name / "task.toml")))
+    found = sheet4_text_gaps(project, tmp_path)
+    assert not found, "\n".join(found)

@@ -12,7 +12,7 @@ import re
 
 import numpy as np
 import pytest
-from shapely.geometry import box
+from shapely.geometry import Point, box
 
 from drawings.sheets import gears as sheet4
 from latex_templates.parts import gear_pair as part
@@ -80,7 +80,7 @@ def test_meshing_note_designations_legible_and_clear(built):
     project, content, _ = built
     fig, _ = _scene(content)
     marks = fig.reportgen_marks
-    assert min(m.height for m in marks.marks) >= 2.5          # page mm: legible at the note's reduction
+    assert min(m.page_h for m in marks.marks) >= 2.5          # page mm: legible at the note's reduction
     names = {m.name for m in marks.marks}
     assert {f"{n}{i}" for n in ("r", "rb", "rw", "ra", "rf") for i in (1, 2)} | {"s1", "s2", "p", "alpha_w"} <= names
     teeth = teeth_polygons(project.scenes.meshing.pic)
@@ -88,3 +88,78 @@ def test_meshing_note_designations_legible_and_clear(built):
     k = project.scenes.meshing.scale.factor
     room = box(xlim[0] / k, ylim[0] / k, xlim[1] / k, ylim[1] / k)
     assert_marks_clear(marks.boxes(), room, teeth)
+
+
+def _note_texts(fig, k: float) -> dict[str, list]:
+    """The note figure's texts: their string → [(centre, box)] in real mm (the axes are scene mm)."""
+    from shapely.geometry import box as sbox
+    ax = fig.axes[0]
+    renderer = fig.canvas.get_renderer()
+    inv = ax.transData.inverted()
+    out: dict[str, list] = {}
+    for t in ax.texts:
+        bb = t.get_window_extent(renderer)
+        (x0, y0), (x1, y1) = inv.transform((bb.x0, bb.y0)), inv.transform((bb.x1, bb.y1))
+        b = sbox(x0 / k, y0 / k, x1 / k, y1 / k)
+        out.setdefault(t.get_text(), []).append(((b.centroid.x, b.centroid.y), b))
+    return out
+
+
+def _sheet_texts(drawn, doc) -> dict[str, list]:
+    """Sheet 4's texts inside the meshing view: their string → [centre] in real mm."""
+    from labels.readback import mtext_box, text_box
+    view = drawn.views["meshing"]
+    tr_ = view.transform
+    rect = view.rect.polygon()
+
+    def real(p):
+        return ((p[0] - tr_.at[0]) / tr_.scale + tr_.origin[0], (p[1] - tr_.at[1]) / tr_.scale + tr_.origin[1])
+    out: dict[str, list] = {}
+    msp = doc.modelspace()
+    for e in msp.query("TEXT"):
+        b = text_box(e)
+        if b.intersects(rect):
+            out.setdefault(e.plain_text(), []).append(real((b.centroid.x, b.centroid.y)))
+    for d in msp.query("DIMENSION"):
+        for v in d.virtual_entities():
+            if v.dxftype() == "MTEXT":
+                b = mtext_box(v)
+                if b.intersects(rect):
+                    out.setdefault(v.plain_text(), []).append(real((b.centroid.x, b.centroid.y)))
+    return out
+
+
+def test_designations_at_the_same_places_in_note_and_sheet(built, request, tmp_path):
+    """Issue 12: the note's figure placed its designations itself, at its own letter size, and the
+    dimension «30,618» came out on the other side of ab from sheet 4's. Read back: every designation
+    the note's figure draws is on sheet 4 at the same place relative to the picture (the sheet's
+    text inside the note's text box, real mm, with a millimetre of the sheet to spare), and the
+    dimension ab's text is on the same side of ab in both."""
+    from scene_readback import drawn_sheet
+    project, content, doc = built
+    fig, _ = _scene(content)
+    ms = project.scenes.meshing
+    k = ms.scale.factor
+    drawn, _ = drawn_sheet(request.node.callspec.params["built"], sheet4, 4, tmp_path)
+    note, sheet = _note_texts(fig, k), _sheet_texts(drawn, doc)
+    from drawings.words import tr
+    checked = 0
+    for m in fig.reportgen_marks.marks:            # what the note's figure draws
+        spelt = tr(f"marks.sheet4.{m.text}") if m.word else m.text
+        ((c, b),) = note[f"${m.tex}$"]
+        places = sheet.get(spelt, [])
+        assert places, f"«{spelt}» is in the note's figure, not on sheet 4"
+        near = min(places, key=lambda p: math.dist(p, c))
+        assert b.buffer(1.0 / k).contains(Point(near)), (
+            f"«{spelt}»: the note draws it at {c}, sheet 4 at {near} (real mm)")
+        checked += 1
+    assert checked >= 14
+    pa, pb = ms.pic.points["a"], ms.pic.points["b"]
+
+    def side(p) -> float:
+        return math.copysign(1.0, (pb[0] - pa[0]) * (p[1] - pa[1]) - (pb[1] - pa[1]) * (p[0] - pa[0]))
+    ab = next(d for d in fig.reportgen_marks.dimensions if d.name == "ab")
+    ((c_note, _),) = note[ab.text]
+    on_sheet = [p for p in sheet.get(ab.text, [])]
+    assert len(on_sheet) == 1, f"the dimension ab «{ab.text}» on sheet 4: {on_sheet}"
+    assert side(on_sheet[0]) == side(c_note), f"«{ab.text}» on the other side of ab in the note and on sheet 4"

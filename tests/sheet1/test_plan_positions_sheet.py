@@ -139,9 +139,10 @@ def test_small_plans_letters_legible_apart_and_at_their_points(built):
                if inside(e.dxf.vtx0.x, e.dxf.vtx0.y)]
     leaders = [(tuple(np.array(e.dxf.start)[:2]), tuple(np.array(e.dxf.end)[:2]))
                for e in msp.query("LINE[layer=='thin']") if inside(e.dxf.start.x, e.dxf.start.y)]
-    boxes = [(n, b) for n, b in sheet.annotations.boxes if n.startswith("plans_all:") and b.centroid.within(rect.polygon())]
-    # the plan letters (not the cells' numbers, the title or the μv caption)
-    letters = [(n, b) for n, b in boxes if re.fullmatch(r"plans_all: «(?!\d+»)[a-zπ_0-9, ]+»", n)]
+    boxes = [(n, b) for n, b in sheet.annotations.boxes if n.startswith("plans_all") and b.centroid.within(rect.polygon())]
+    # the plan letters (not the cells' numbers, the title or the μv caption); each cell is a canvas
+    # of its own, «plans_all/<position>»
+    letters = [(n, b) for n, b in boxes if re.fullmatch(r"plans_all/\d+: «(?!\d+»)[a-zπ_0-9, ]+»", n)]
     assert len(letters) >= len(project.phi), len(letters)
     for k, (n, b) in enumerate(boxes):
         for m, c in boxes[k + 1:]:
@@ -150,7 +151,8 @@ def test_small_plans_letters_legible_apart_and_at_their_points(built):
         near = min(b.exterior.distance(Point(p)) for p in points)
         if near <= kp.SMALL_NEAR_MM + 1e-6:
             continue
-        led = any(min(b.exterior.distance(Point(q)) for q in (s, e)) < 1e-3 and
-                  min(math.dist(p, s if b.exterior.distance(Point(e)) < 1e-3 else e) for p in points) < 1e-3
+        # a leader from the letters (inside the label's box) to the point
+        led = any(min(b.distance(Point(q)) for q in (s, e)) < 1e-3 and
+                  min(math.dist(p, s if b.distance(Point(e)) < b.distance(Point(s)) else e) for p in points) < 1e-3
                   for s, e in leaders)
         assert led, (n, near)
