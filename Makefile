@@ -9,7 +9,7 @@ DEB_PACKAGES := texlive-latex-recommended texlive-lang-cyrillic texlive-xetex \
 	fonts-osifont
 DEMO_OUT ?= demo
 
-.PHONY: demo test check generated system venv bench clean review
+.PHONY: demo test check generated system venv compiled bench clean review
 
 # Debian packages: TeX Live for the note, poppler for checking it, LibreCAD for checking the sheets,
 # osifont (ISO 3098 lettering) for the sheets' previews.
@@ -30,7 +30,15 @@ $(VENV)/.installed: pyproject.toml
 	$(PY) -m pip install -q -e '.[test]'
 	touch $@
 
-venv: $(VENV)/.installed
+# What an installation compiles once (docs/build.md «Compiled at install time»): the Python modules'
+# bytecode (read even where PYTHONDONTWRITEBYTECODE keeps Python from writing it) and the note's Jinja
+# templates and catalogue snippets (latex_templates/precompiled.py). Run again after an edit: what
+# changed is compiled by each build otherwise, never used stale.
+compiled: $(VENV)/.installed
+	$(PY) -m compileall -q reportgen latex_templates drawings
+	$(PY) -m latex_templates.precompiled
+
+venv: $(VENV)/.installed compiled
 
 # The example note and sheets of the press mechanism.
 demo: system venv

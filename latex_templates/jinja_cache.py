@@ -11,6 +11,8 @@ compiled again; an unwritable folder is skipped.
 
 Only a build that uses the cache (``reportgen build`` without ``--no-cache``, ``REPORTGEN_CACHE``
 not ``off``) reads or writes it: :func:`active` sets the folder for the duration of the build.
+Before it, every compilation looks in the package's own code compiled at install time
+(:mod:`latex_templates.precompiled`), cache or not.
 """
 from __future__ import annotations
 
@@ -53,17 +55,38 @@ def _signature(env: Any) -> str:
                  env.finalize is not None, sorted(env.extensions)))
 
 
+def code_key(env: Any, source: str, name: str | None, filename: str | None, defer_init: bool) -> str:
+    """What Jinja's code of ``source`` depends on, as one SHA-256: the environment's syntax options
+    and the versions (:func:`_signature`), the name, the file name, ``defer_init`` and the source."""
+    return hashlib.sha256("\0".join((_signature(env), repr(name), repr(filename), repr(defer_init),
+                                      source)).encode()).hexdigest()
+
+
+def compile_fresh(env: Any, source: str, name: str | None, filename: str | None,
+                  defer_init: bool = False) -> Any:
+    """Jinja's own compilation of ``source`` (past :func:`use_cache`'s lookups)."""
+    compile_now = getattr(env, "reportgen_compile", env.compile)
+    return compile_now(source, name, filename, False, defer_init)
+
+
 def use_cache(env: Any) -> Any:
-    """Let ``env`` compile through the cache while a build has one :func:`active`; returns ``env``."""
+    """Let ``env`` compile through the package's precompiled code (:mod:`.precompiled`) and, while a
+    build has one :func:`active`, the cache; returns ``env``."""
+    from . import precompiled
+
     compile_now = env.compile
 
     def compile(source: Any, name: str | None = None, filename: str | None = None, raw: bool = False,
                 defer_init: bool = False) -> Any:
         root = _ROOT
-        if root is None or raw or not isinstance(source, str):
+        if raw or not isinstance(source, str):
             return compile_now(source, name, filename, raw, defer_init)
-        key = hashlib.sha256("\0".join((_signature(env), repr(name), repr(filename), repr(defer_init),
-                                        source)).encode()).hexdigest()
+        key = code_key(env, source, name, filename, defer_init)
+        code = precompiled.lookup(key)
+        if code is not None:
+            return code
+        if root is None:
+            return compile_now(source, name, filename, raw, defer_init)
         folder = root / "jinja"
         entry = folder / f"{key}.code"
         try:
@@ -74,6 +97,7 @@ def use_cache(env: Any) -> Any:
         _store(folder, entry, code)
         return code
 
+    env.reportgen_compile = compile_now
     env.compile = compile
     return env
 

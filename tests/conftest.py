@@ -39,6 +39,7 @@ SLOW_TESTS = (
     "tests/scenes/test_note_sheet_same.py::test_plan_segments_equal_in_note_and_sheet",
     "tests/scenes/test_numbering.py::test_same_angle_same_number",
     "tests/speed/test_pipeline.py::test_the_sheets_run_in_parallel_with_the_note",
+    "tests/speed/test_pipeline.py::test_the_sheets_process_lists_and_imports_the_sheets_itself",
     "tests/speed/test_latex_passes.py::test_the_early_first_pass_writes_the_pdf_latexmk_writes",
     "tests/speed/test_dxf_hash_seed.py::test_sheet_dxf_is_the_same_under_different_hash_seeds",
     "tests/gears_presentation/test_gears_presentation.py::test_section_renders_and_every_record_reevaluates",

@@ -194,18 +194,67 @@ class FigureQueue:
         """Measure each figure's page and write an empty PDF of that size at its target, for a
         first LaTeX pass while the figures are saved (:mod:`latex_templates.passes`); the measured
         tight boxes are kept, so saving does not compute them again."""
-        from ..passes import placeholder_pdf
-
         for i, (fig, target) in enumerate(self.items):
             if isinstance(fig, KeptFigure):     # the kept PDF itself, when it is still there
                 if self.cache is not None and self.cache.copy_figure(fig.reportgen_key, target):
                     continue
                 fig = fig.make()
                 self.items[i] = (fig, target)
-            box = None
-            if not getattr(fig, "reportgen_exact", False):
-                box = self.boxes[id(fig)] = tight_box(fig)
-            target.write_bytes(placeholder_pdf(*page_size_pt(fig, box)))
+            self._placeholder(fig, target)
+
+    def _placeholder(self, fig: Any, target: Path) -> None:
+        from ..passes import placeholder_pdf
+
+        box = None
+        if not getattr(fig, "reportgen_exact", False):
+            box = self.boxes[id(fig)] = tight_box(fig)
+        target.write_bytes(placeholder_pdf(*page_size_pt(fig, box)))
+
+    def start_split(self, fork: Callable[[Callable[[Callable[[], None]], Any]], Any],
+                    cache: Any = None) -> "SplitSave":
+        """What :meth:`write_placeholders` then :meth:`save` do, over two processes from the start:
+        ``fork(work)`` runs ``work(ready)`` in a second process, which measures its share's pages,
+        writes their placeholders, calls ``ready()`` and saves its share, while this process
+        measures the other share's pages and writes theirs. Returns when every placeholder is
+        written (a figure the cache keeps: its real PDF); :meth:`SplitSave.finish` saves this
+        process's share and joins the other. The same files as the two calls (the measuring was
+        the build's critical path, ≈ 0.45 s on the press, in one process)."""
+        items, self.items = self.items, []
+        keys = {id(fig): content_key(fig) for fig, _ in items} if cache is not None else {}
+        todo = []
+        for fig, target in items:
+            if isinstance(fig, KeptFigure):     # the kept PDF itself, when it is still there
+                if cache is not None and cache.restore_figure(fig.reportgen_key, target):
+                    continue
+                fig = fig.make()
+            else:
+                key = keys.get(id(fig))
+                if key and cache.restore_figure(key, target):
+                    _release(fig)
+                    continue
+            todo.append((fig, target))
+        if len(todo) < 2:
+            for fig, target in todo:
+                self._placeholder(fig, target)
+            return SplitSave(self, todo, [], None, cache)
+        mine, theirs = FigureQueue(todo).shares(2)
+        _import_pdf_saving()          # once, before the fork: not in each process after it
+
+        def work(ready: Callable[[], None]) -> int:
+            for fig, target in theirs:
+                self._placeholder(fig, target)
+            ready()
+            return _save_all(theirs, self.boxes)
+
+        child = fork(work)
+        try:
+            for fig, target in mine:
+                self._placeholder(fig, target)
+            child.wait_ready()
+        except BaseException:
+            child.kill()
+            raise
+        return SplitSave(self, mine, theirs, child, cache)
 
     def __len__(self) -> int:
         return len(self.items)
@@ -257,6 +306,7 @@ class FigureQueue:
             return
         queue = FigureQueue(items)
         mine, theirs = queue.shares(2)
+        _import_pdf_saving()
         child = fork(lambda: _save_all(theirs, boxes))
         try:
             _save_all(mine, boxes)
@@ -266,6 +316,58 @@ class FigureQueue:
         child.join()
         for fig, _ in theirs:        # saved by the other process: forget them here too
             _release(fig)
+
+
+@dataclass
+class SplitSave:
+    """The figures of :meth:`FigureQueue.start_split` with their placeholders written: this
+    process's share to save (:meth:`finish`), the other share saved by ``child``."""
+    queue: FigureQueue
+    mine: list[tuple[Any, Path]]
+    theirs: list[tuple[Any, Path]]
+    child: Any
+    cache: Any = None
+
+    def finish(self) -> None:
+        """Save this process's share, join the other process and keep each keyed figure saved."""
+        try:
+            _save_all(self.mine, self.queue.boxes)
+        except BaseException:
+            self.cancel()
+            raise
+        if self.child is not None:
+            self.child.join()
+            self.child = None
+        for fig, _ in self.theirs:       # saved by the other process: forget them here too
+            _release(fig)
+        if self.cache is not None:
+            for fig, target in self.mine + self.theirs:
+                key = content_key(fig)
+                if key and target.is_file():
+                    self.cache.store_figure(key, target, figure_sizes(fig))
+
+    def cancel(self) -> None:
+        """Stop the other process (the build failed elsewhere)."""
+        if self.child is not None:
+            self.child.kill()
+            self.child = None
+
+
+#: The font tables matplotlib's PDF backend subsets (fontTools imports a table's module when it
+#: first reads one).
+_FONT_TABLES = ("GDEF", "GPOS", "GSUB", "OS/2", "cmap", "cvt ", "fpgm", "gasp", "glyf", "head", "hhea", "hmtx",
+                "kern", "loca", "maxp", "name", "post", "prep")
+
+
+def _import_pdf_saving() -> None:
+    """Import what saving a PDF imports (matplotlib's PDF backend, fontTools' subsetter and its font
+    tables, ≈ 150 modules, ≈ 0.1 s of CPU) in this process, so that processes forked from it to
+    save figures inherit them instead of each importing them."""
+    import matplotlib.backends.backend_pdf  # noqa: F401
+    from fontTools import ttLib
+
+    for tag in _FONT_TABLES:
+        ttLib.getTableClass(tag)
 
 
 class _SubsetFont:

@@ -112,11 +112,17 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     with timeline.stage("solve"):
         results = build_results(project)
     task = project.task
-    todo = _sheet_list(project) if sheets else []
-    if todo and parallel_possible():
-        _shared_imports()
-        _shared_stages(project, todo)
-    child = _Child.start(project, tmp, todo, cache) if todo and parallel_possible() else None
+    child = None
+    todo: list[tuple[str, Any]] = []
+    if sheets and parallel_possible():
+        # forked before the main process imports matplotlib, ezdxf only in the sheets' process: it
+        # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
+        with timeline.stage("before the sheets' fork"):
+            _shared_imports(project)
+            _shared_stages(project)
+            child = _Child.start(project, tmp, None, cache)
+    elif sheets:
+        todo = _sheet_list(project)
     pending = None
     try:
         if (task.mechanism is not None or task.gears is not None or task.planetary is not None
@@ -155,22 +161,25 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     return results
 
 
-def _shared_imports() -> None:
-    """Load what both the note and the sheets use (matplotlib with the note's style, shapely, Jinja
-    and the catalogues) before the sheets' process is forked: the child inherits it instead of
-    importing it a second time (≈ 0.5 s of CPU); the note would import it next anyway."""
+def _shared_imports(project: Any) -> None:
+    """Load what both the note and the sheets use (shapely, Jinja, the strings catalogue of the
+    task's language) before the sheets' process is forked: the child inherits it instead of loading
+    it a second time; the note would load it next anyway. What only one of them uses is loaded by
+    that one after the fork, beside the other: matplotlib (≈ 0.3 s) by the note, ezdxf and the
+    sheet modules (≈ 0.25 s) by the sheets (tests/speed/test_pipeline.py)."""
     import shapely.geometry  # noqa: F401
 
-    import latex_templates.figures  # noqa: F401
-    import latex_templates.render  # noqa: F401
+    from latex_templates.render import Strings
+    Strings(project.task.document.language or "ru")
 
 
-def _shared_stages(project: Any, todo: list[tuple[str, Any]]) -> None:
+def _shared_stages(project: Any) -> None:
     """Compute before the fork the costly stages that both the note and a sheet read, so that the
     two processes do not each compute them: the meshing picture with its designations placed
-    (≈ 0.2 s of CPU; section 4 and the gears' sheet). The note reads it anyway, so the main process
-    does no more than it would; the cheaper scenes are left to whichever process reads them."""
-    if project.task.gears is not None and any(stem.endswith("-gears") for stem, _ in todo):
+    (≈ 0.2 s of CPU; section 4 and the gears' sheet, both made whenever the task has a gear pair).
+    The note reads it anyway, so the main process does no more than it would; the cheaper scenes
+    are left to whichever process reads them."""
+    if project.task.gears is not None and getattr(project.task, "kind", "") != "crane":
         _ = project.scenes.meshing
 
 
@@ -190,24 +199,36 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     auxiliary files of the task's last build restored from the cache and every figure of its
     placeholder's page box, that first pass is often the only one. Returned with report.tex,
     else None."""
+    with timeline.stage("note: imports"):          # matplotlib, the parts (beside the sheets' own)
+        _note_imports(project)
     from latex_templates.figures.saving import queued
     from latex_templates.passes import media_box
 
     with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline)
     pending = None
+    split = None
     boxes: dict[Path, bytes | None] = {}
     try:
         if early and len(figures):
             _restore_latex(tex, cache)
+            targets = [target for _, target in figures.items]
             pending = _start_passes(tex)        # pass 1 reads its preamble meanwhile
             with timeline.stage("note: figure sizes"):
-                figures.write_placeholders()
-            boxes = {target: media_box(target) for _, target in figures.items}
+                if parallel_possible():      # measured in two processes, each then saves its share
+                    split = figures.start_split(_fork_figures_ready, cache)
+                else:
+                    figures.write_placeholders()
+            boxes = {target: media_box(target) for target in targets}
             pending.placeholders_ready()
         with timeline.stage("note: figures"):
-            figures.save(fork=_fork_figures if parallel_possible() else None, cache=cache)
+            if split is not None:
+                split.finish()
+            else:
+                figures.save(fork=_fork_figures if parallel_possible() else None, cache=cache)
     except BaseException:
+        if split is not None:
+            split.cancel()
         if pending is not None:
             pending.cancel()
         raise
@@ -215,6 +236,18 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
         pending.figures_ready(same_boxes=all(box is not None and media_box(target) == box
                                              for target, box in boxes.items()))
     return tex, pending
+
+
+def _note_imports(project: Any) -> None:
+    """What the note's sections import — matplotlib with the note's style (≈ 0.35 s of CPU), the
+    part modules of the document's sections, as ``compose`` would next — named as a stage of its
+    own in the build's timeline."""
+    import latex_templates.figures.saving  # noqa: F401
+    from latex_templates.compose import DOCUMENT_SECTIONS, SECTIONS, part_module
+
+    for _, parts in DOCUMENT_SECTIONS.get(getattr(project.task, "kind", "course-project"), SECTIONS):
+        for name in parts:
+            part_module(name)
 
 
 def _restore_latex(tex: Path, cache: Any) -> None:
@@ -236,6 +269,10 @@ def _start_passes(tex: Path) -> Any:
 
 def _fork_figures(work: Any) -> "_Child":
     return _Child.fork(work, "note's figures")
+
+
+def _fork_figures_ready(work: Any) -> "_Child":
+    return _Child.fork(work, "note's figures", ready=True)
 
 
 def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
@@ -341,28 +378,32 @@ class _Child:
     the note's figures) and sends back its result, or the exception that stopped it (re-raised in
     the parent with its class and fields)."""
 
-    def __init__(self, pid: int, fd: int, stage: str = "sheets") -> None:
+    def __init__(self, pid: int, fd: int, stage: str = "sheets", ready_fd: int | None = None) -> None:
         self.pid = pid
         self.fd = fd
         self.stage = stage
+        self.ready_fd = ready_fd
 
     @classmethod
-    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]], cache: Any) -> "_Child":
-        """Draw the sheets in a child process."""
-        (tmp / "sheets").mkdir(exist_ok=True)
+    def start(cls, project: Any, tmp: Path, todo: list[tuple[str, Any]] | None, cache: Any) -> "_Child":
+        """Draw the sheets in a child process (``todo`` None: the sheets the task has, listed there)."""
 
         def work() -> list[Span]:
             # the sheets are off the critical path (solve → note → LaTeX): let the scheduler give
             # the note's processes and xelatex the processors first, the sheets the time left over
             _lower_priority(SHEETS_NICENESS)
-            return list(draw_sheets(project, tmp, todo, cache))
+            sheets = _sheet_list(project) if todo is None else todo
+            return list(draw_sheets(project, tmp, sheets, cache)) if sheets else []
 
         return cls.fork(work, "sheets")
 
     @classmethod
-    def fork(cls, work: Any, stage: str = "sheets") -> "_Child":
-        """Run ``work()`` in a forked child; :meth:`join` returns its (picklable) result."""
+    def fork(cls, work: Any, stage: str = "sheets", *, ready: bool = False) -> "_Child":
+        """Run ``work()`` in a forked child; :meth:`join` returns its (picklable) result. With
+        ``ready``, ``work(ready)`` gets a function to call when the parent may go on
+        (:meth:`wait_ready` returns then, or when the child ends without calling it)."""
         r, w = os.pipe()
+        ready_r, ready_w = os.pipe() if ready else (None, None)
         sys.stdout.flush()
         sys.stderr.flush()
         pid = os.fork()
@@ -372,7 +413,12 @@ class _Child:
             try:
                 signal.signal(signal.SIGINT, signal.SIG_DFL)
                 try:
-                    payload: tuple[str, Any] = ("ok", work())
+                    if ready_w is not None:
+                        assert ready_r is not None
+                        os.close(ready_r)
+                        payload: tuple[str, Any] = ("ok", work(lambda: _say_ready(ready_w)))
+                    else:
+                        payload = ("ok", work())
                 except BaseException as exc:  # noqa: BLE001 - everything goes back to the parent
                     payload = ("error", _portable(exc))
                 data = pickle.dumps(payload)
@@ -383,9 +429,22 @@ class _Child:
             finally:
                 os._exit(status)
         os.close(w)
-        return cls(pid, r, stage)
+        if ready_w is not None:
+            os.close(ready_w)
+        return cls(pid, r, stage, ready_r)
+
+    def wait_ready(self) -> None:
+        """Wait until the child calls ``ready()`` (see :meth:`fork`) or ends; an error it ended
+        with is raised by :meth:`join`."""
+        if self.ready_fd is not None:
+            try:
+                os.read(self.ready_fd, 1)
+            finally:
+                os.close(self.ready_fd)
+                self.ready_fd = None
 
     def join(self) -> Any:
+        self.wait_ready()
         with os.fdopen(self.fd, "rb") as f:
             data = f.read()
         _, status = os.waitpid(self.pid, 0)
@@ -405,11 +464,23 @@ class _Child:
                 os.waitpid(self.pid, 0)
             except (ProcessLookupError, ChildProcessError):
                 pass
-            try:
-                os.close(self.fd)
-            except OSError:
-                pass
+            for fd in (self.fd, self.ready_fd):
+                try:
+                    if fd is not None:
+                        os.close(fd)
+                except OSError:
+                    pass
+            self.ready_fd = None
             self.pid = 0
+
+
+def _say_ready(fd: int) -> None:
+    """The child's ``ready()``: one byte to the parent's :meth:`_Child.wait_ready`, once."""
+    try:
+        os.write(fd, b"1")
+        os.close(fd)
+    except OSError:
+        pass
 
 
 def _lower_priority(increment: int) -> None:

@@ -101,3 +101,37 @@ def test_a_kept_figure_is_not_made_and_is_made_when_its_pdf_is_gone(tmp_path):
     q.add(kept, third)
     q.save(cache=cache)
     assert third.read_bytes() == first.read_bytes() and cache.figures_reused == 1
+
+
+def test_a_split_save_copies_kept_figures_counts_them_and_keeps_the_new_ones(tmp_path):
+    """FigureQueue.start_split (the build's measuring in two processes) with the cache: a kept
+    figure is copied and counted as save() counts it, a new one saved (by either process) and kept,
+    the same bytes as saving them one by one."""
+    from latex_templates.figures.saving import KeptFigure, queued
+    from latex_templates.figures.scene import scene_figure
+    from reportgen.commands import pipeline
+
+    cache = BuildCache(tmp_path / "cache", b"task", tmp_path / "task.toml", "options")
+    with queued(cache) as q:
+        first = scene_figure(scene())
+    q.add(first, tmp_path / "a0.pdf")
+    q.save(cache=cache)
+    with queued(cache) as q:
+        kept = scene_figure(scene())
+        new = [scene_figure(scene(20.0 + 5 * i, f"n{i}")) for i in range(3)]
+    assert isinstance(kept, KeptFigure) and not any(isinstance(f, KeptFigure) for f in new)
+    q.add(kept, tmp_path / "b0.pdf")
+    for i, fig in enumerate(new):
+        q.add(fig, tmp_path / f"b{i + 1}.pdf")
+    q.start_split(pipeline._fork_figures_ready, cache).finish()
+    assert (tmp_path / "b0.pdf").read_bytes() == (tmp_path / "a0.pdf").read_bytes()
+    assert (cache.figures_reused, cache.figures_saved) == (1, 1 + 3)
+    with queued(cache) as q:                        # the new ones are kept now: the same bytes again
+        again = [scene_figure(scene(20.0 + 5 * i, f"n{i}")) for i in range(3)]
+    assert all(isinstance(f, KeptFigure) for f in again)
+    for i, fig in enumerate(again):
+        q.add(fig, tmp_path / f"c{i + 1}.pdf")
+    q.start_split(pipeline._fork_figures_ready, cache).finish()
+    for i in range(3):
+        assert (tmp_path / f"c{i + 1}.pdf").read_bytes() == (tmp_path / f"b{i + 1}.pdf").read_bytes()
+    assert cache.figures_reused == 1 + 3

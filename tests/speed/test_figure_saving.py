@@ -113,3 +113,41 @@ def test_a_font_subset_made_once_writes_the_bytes_of_one_made_anew(tmp_path, mon
     assert plain_count > 0 and first_count == plain_count and len(made) == 2 * plain_count
     assert (tmp_path / "again.pdf").read_bytes() == (tmp_path / "first.pdf").read_bytes() \
         == (tmp_path / "plain.pdf").read_bytes()
+
+
+def test_split_writes_every_placeholder_first_then_the_bytes_of_one_by_one_saving(tmp_path):
+    """start_split (the build's cold path): when it returns, every figure has a placeholder of its
+    page (its box is the saved figure's), and finish() leaves the bytes of saving one by one."""
+    from latex_templates.passes import media_box
+
+    seq, par = tmp_path / "seq", tmp_path / "par"
+    seq.mkdir()
+    par.mkdir()
+    for i, fig in enumerate(_figures(5)):
+        save_pdf(fig, seq / f"f{i}.pdf")
+    queue = FigureQueue()
+    for i, fig in enumerate(_figures(5)):
+        queue.add(fig, par / f"f{i}.pdf")
+    split = queue.start_split(pipeline._fork_figures_ready)
+    assert split.mine and split.theirs
+    placeholders = {p.name: media_box(p) for p in par.iterdir()}
+    assert len(placeholders) == 5 and all(box is not None for box in placeholders.values())
+    split.finish()
+    for name, box in placeholders.items():
+        assert (seq / name).read_bytes() == (par / name).read_bytes(), name
+        assert media_box(par / name) == box, name
+
+
+@pytest.mark.parametrize("position", [0, 3])
+def test_an_error_in_a_split_comes_back_with_its_class_and_fields(tmp_path, position):
+    """Before the other process is ready (measuring) or after (saving): the build's error either way."""
+    queue = FigureQueue()
+    for i, fig in enumerate(_figures(4)):
+        queue.add(fig, tmp_path / f"f{i}.pdf")
+    broken = _Broken()
+    broken.get_tightbbox = broken.savefig        # type: ignore[attr-defined]  # fails when measured too
+    queue.items.insert(position, (broken, tmp_path / "broken.pdf"))
+    with pytest.raises(InternalError) as info:
+        queue.start_split(pipeline._fork_figures_ready).finish()
+    assert info.value.what == "figure saving"
+    assert "made up for the test" in info.value.detail

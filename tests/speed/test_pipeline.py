@@ -120,3 +120,30 @@ def test_watch_reports_a_bad_task_and_ends_cleanly_on_ctrl_c(tmp_path, capsys):
     assert watch(_args(task, tmp_path / "out"), fake_build, poll=0.01) == 0
     out = capsys.readouterr().out
     assert "error: a: made up" in out and "stopped watching" in out
+
+
+PROBE_MAIN_IMPORTS = """
+import json, sys
+from pathlib import Path
+from reportgen.commands import build as build_cmd, pipeline
+pipeline._note = lambda *_, **__: (None, None)       # the sheets only: what the main process imports for them
+build_cmd.build(sys.argv[1], Path(sys.argv[2]), quiet=True, pdf=False)
+print(json.dumps({"ezdxf": "ezdxf" in sys.modules, "sheets": "drawings.sheets" in sys.modules,
+                  "dxf": len(list(Path(sys.argv[2], "sheets").glob("*.dxf")))}))
+"""
+
+
+def test_the_sheets_process_lists_and_imports_the_sheets_itself(tmp_path):
+    """The sheets' process is forked before the note's imports: ezdxf and the sheet modules are
+    imported there, never by the main process (they were, to list the sheets, on the critical path)."""
+    import json
+    import os
+    import subprocess
+    import sys
+
+    env = dict(os.environ, REPORTGEN_JOBS="2")
+    out = subprocess.run([sys.executable, "-c", PROBE_MAIN_IMPORTS, str(PRESS), str(tmp_path / "out")],
+                         capture_output=True, text=True, cwd=tmp_path, env=env, timeout=600)
+    assert out.returncode == 0, out.stderr
+    report = json.loads(out.stdout.strip().splitlines()[-1])
+    assert report == {"ezdxf": False, "sheets": False, "dxf": 4}

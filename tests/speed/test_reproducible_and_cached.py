@@ -189,4 +189,10 @@ def test_a_changed_language_reuses_nothing_that_has_words(builds):
 
 
 def test_the_cache_holds_only_its_own_folders(builds):
-    assert sorted(p.name for p in builds["cache"].iterdir()) == ["builds", "figures", "jinja", "previews", "sheets", "tex"]
+    """jinja/ only where a template or snippet was not in the install-time store (latex_templates/precompiled.py)."""
+    from latex_templates.precompiled import STORE
+
+    folders = sorted(p.name for p in builds["cache"].iterdir())
+    assert [f for f in folders if f != "jinja"] == ["builds", "figures", "previews", "sheets", "tex"]
+    if not STORE.is_file():            # every template compiled by the build, and kept
+        assert "jinja" in folders

@@ -89,6 +89,7 @@ def critical_path_table(task_path: Path, quick: bool) -> Table:
     t.notes.append("the critical path is main (solve → note's sections → figure sizes → figures) → xdvipdfmx, with LaTeX's "
                    "passes beside the figures (on the critical path when they end later); the sheets overlap the note and LaTeX")
     t.notes.append(_load_note())
+    t.notes.append(_compiled_note())
     if not pdf:
         t.notes.append("LaTeX not run (" + ("--quick" if quick else "latexmk not found") + ")")
     return t
@@ -146,7 +147,28 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
     t.notes.append("cold: `--no-cache`, nothing read from or written to the cache (compiled templates, previews, "
                    "LaTeX's aux files); warm and incremental: the cache as a student's second build has it")
     t.notes.append(_load_note())
+    t.notes.append(_compiled_note())
     return t
+
+
+def _compiled_note() -> str:
+    """Whether the install-time compilation (``make compiled``: the modules' bytecode, the Jinja
+    store of latex_templates/precompiled.py) was there: without it each process compiles them."""
+    import importlib.util
+
+    from latex_templates.precompiled import STORE
+
+    def fresh(module: str) -> bool:
+        spec = importlib.util.find_spec(module)
+        if spec is None or spec.origin is None:
+            return False
+        cached = Path(importlib.util.cache_from_source(spec.origin))
+        return cached.is_file() and cached.stat().st_mtime >= Path(spec.origin).stat().st_mtime
+
+    code = all(fresh(m) for m in ("reportgen.project", "latex_templates.note", "drawings.sheet"))
+    return ("compiled at install time (`make compiled`, docs/build.md): modules' bytecode "
+            f"{'there' if code else 'NOT there (each process compiles its modules)'}, Jinja store "
+            f"{'there' if STORE.is_file() else 'NOT there (each build compiles the templates)'}")
 
 
 def _load_note() -> str:
