@@ -14,10 +14,10 @@ import shapely
 from shapely.geometry import LineString, Point, Polygon
 
 from drawings.sheets import available_sheets
+from drawings.scenes.kinematics_scheme import scene_links
 from drawings.sheets import kinematics as sheet1
 from reportgen.commands.pipeline import draw_sheet
 from reportgen.project import Project
-from reportgen.scenes.scene import Polyline, Segment
 from reportgen.taskfile import load_task
 
 from labels.readback import TOUCH_MM, sheet_texts
@@ -169,21 +169,7 @@ def scheme_links(project, sheet) -> list:
     if abs(scene.scale().value * k - 1.0) > 1e-9:
         scene = project.scenes.positions_at(k, "")
 
-    def at(p):
-        return view.transform((p[0] / k, p[1] / k))
-    out = []
-    for e in scene.entities:
-        if isinstance(e, Segment) and ":link" in e.id:
-            a, b = at(e.a), at(e.b)
-            d = math.dist(a, b)
-            if d > e.trim[0] + e.trim[1]:
-                u = ((b[0] - a[0]) / d, (b[1] - a[1]) / d)
-                out.append(LineString([(a[0] + u[0] * e.trim[0], a[1] + u[1] * e.trim[0]),
-                                       (b[0] - u[0] * e.trim[1], b[1] - u[1] * e.trim[1])]))
-        elif isinstance(e, Polyline) and ":block" in e.id:
-            pts = [at(p) for p in e.points]
-            out.append(LineString(pts + ([pts[0]] if e.closed else [])))
-    return out
+    return list(scene_links(view, scene, k).geoms)   # the lines the placer avoids; the texts are read from the DXF
 
 
 def scheme_label_findings(project, sheet, doc) -> list[str]:
