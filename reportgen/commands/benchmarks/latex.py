@@ -18,6 +18,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from reportgen.errors import BuildError
+
 from .tables import Table, sec
 
 #: A document with nothing in it: the time xelatex takes to start and load its format.
@@ -36,7 +38,7 @@ def _best(cmd: list[str], cwd: Path, env: dict[str, str], repeat: int) -> tuple[
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = min(cpu, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
         if r.returncode != 0:
-            raise RuntimeError(f"{cmd[0]} stopped with status {r.returncode}")
+            raise BuildError("bench: LaTeX pass", f"{cmd[0]} stopped with status {r.returncode}")
     return wall, cpu
 
 
