@@ -350,6 +350,14 @@ def _count(ctx: Any, n: float, key: str) -> Tex:
 
 
 @jinja2.pass_context
+def _ratio(ctx: Any, text: str) -> Tex:
+    """A scale's ratio text («2,5:1», «1:2.5» — the core writes either mark) with the note's decimal
+    mark: «2,5:1» in ru/uk, «2.5:1» in en."""
+    mark = "," if ctx["s"].raw("format.decimal") == "{,}" else "."
+    return Tex(str(text).replace(",", mark).replace(".", mark))
+
+
+@jinja2.pass_context
 def _unit_in_context(ctx: Any, unit: str) -> Tex:
     """A unit in running text, in the note's language (``м/с`` → ``m/s``)."""
     strings = ctx.get("s")
@@ -600,6 +608,7 @@ def make_environment(template_dirs: Sequence[Path | str] = ()) -> jinja2.Environ
         tex=tex, escape_latex=escape_latex, unit=_unit_in_context, plural=_plural, count=_count,
         e=escape_latex, escape=escape_latex, forceescape=escape_latex, join=_join, replace=_replace,
         unit_math=lambda u: Tex(unit_latex(u)),
+        ratio=_ratio,
     )
     env.globals.update(tex=tex, calc_parts=calc_parts, cell=table_cell, math_text_letters=math_text_letters,
                        fallback_glyph_classes=fallback_glyph_classes, t=_t)

@@ -124,6 +124,10 @@ def test_english_note_has_no_cyrillic_outside_user_names(builds):
                  "contact ratio", "carrier", "planet", "contents", "introduction", "conclusions"):
         assert term in flat, term
     assert re.search(r"\b18\.45\b|\b0\.05\b", flat) and not re.search(r"\d,\d{2}\b", flat)  # decimal point
+    # no decimal comma anywhere, a scale's ratio included («2,5:1» was printed for the meshing's
+    # scale): only the Assur groups' links «II(2,3)» and lists «1,2» inside parentheses remain
+    rest = re.sub(r"\([\d,\s]+\)", "", flat)
+    assert not re.findall(r".{20}\d,\d.{10}", rest), re.findall(r".{20}\d,\d.{10}", rest)[:5]
 
 
 def test_english_sheets(builds):
