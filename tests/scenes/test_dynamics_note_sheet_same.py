@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from drawings.sheets import dynamics as sheet3
+from latex_templates import numbers
 from latex_templates.parts import dynamics as part
 from reportgen.scenes.scene import Polyline, Segment
 from scene_readback import part_and_sheet, polyline_length
@@ -61,6 +62,11 @@ def test_wittenbauer_KL_in_note_is_the_sheets_dimension(built):
     assert KL_note == KL_sheet, (KL_note, printed)
     J_gr = c["tg"]["J_gr"]
     assert printed.replace(",", "{,}") in J_gr.substituted_latex(), (printed, J_gr.substituted_latex())
+    # the sentence «отрезок KL = … мм» prints it as the sheet does («80», not «80,0»: the shaper)
+    assert numbers.mnum(KL_note) == printed.replace(",", "{,}"), (numbers.mnum(KL_note), printed)
+    for lang in ("ru", "uk", "en"):
+        text = (ROOT / "latex_templates" / "strings" / lang / "dynamics.toml").read_text(encoding="utf-8")
+        assert "KL = \\VAR{c.tg.KL.value|mnum}" in text, lang
     # the flywheel of the graphical method follows from the printed KL and is results.json's
     mu_E = scene.scale("μE").value
     omega, delta = project.dynamics.omega_m, project.dynamics.delta_target
