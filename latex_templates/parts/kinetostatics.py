@@ -309,7 +309,7 @@ def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> 
         return None
     k2 = P.other(k3)
     C, A, n = frame[0].point[0], P.point[0], np.asarray(P.normal[0], float)
-    step = ks.graphical.arm_reading_mm
+    step = ks.graphical.reading_mm
     mu = mu_l.value
     repl = {x.link: x for x in ks.graphical.inertia}
     arrows: list = []
