@@ -140,7 +140,7 @@ def _details(polygon, first: int) -> list:
         names = [Tex(f"${sym(n)}$") for n in d.names]
         key = "polygons.detail" if len(names) > 1 else "polygons.detail_one"
         out.append(tr(key, names=Tex(", ".join(names)), mm=f"{LEGIBLE_MM:g}", letter=letters[d.index % len(letters)],
-                      ratio=d.ratio_text.replace(",", decimal_mark()), mu=d.scale))
+                      ratio=d.drawing_scale.text(decimal_mark()), mu=d.scale))
     return out
 
 
