@@ -257,3 +257,23 @@ def test_detail_letters_are_not_repeated_on_sheet_2(example, tmp_path):
     firsts = first_detail_indices(polygons)
     indices = [d.index for p, f in zip(polygons, firsts) for d in polygon_details(p, first=f)]
     assert indices == list(range(count))
+
+
+#: The slider's inertia force on the lever: it acts along the slider's guide, at the image of the
+#: slider's point, where the coupler's image (a link of the lever) runs nearly along it.
+SLIDER_INERTIA = {"press": "Fи5", "press-en": "Fи5", "shaper": "Fи5", "shaper-uk": "Fи5", "conveyor": "Fи5",
+                  "crank-slider": "Fи3"}
+
+
+@pytest.mark.parametrize("example", sorted(SLIDER_INERTIA))
+def test_lever_slider_inertia_is_not_hidden_in_a_link(example):
+    """The slider's inertia force is not drawn along the coupler's image (on main the press's and the
+    shaper's F_и5, the conveyor's F_и5 and the crank-slider's F_и3 lay 5–7 mm inside the thick line
+    d–b, f–e…: only a head showed, and the name went on a leader): where both its ways lie over a
+    drawn line, it slides along its line of action past F_пс, which acts on that line."""
+    project = _project(example)
+    sc = lever_scene(project.kinetostatics, project.linkage)
+    arrow = sc.entity(f"force:{SLIDER_INERTIA[example]}")
+    links = [e for e in sc.entities if isinstance(e, Segment) and e.kind == "contour"]
+    hidden = [(e.id, round(_over(arrow, e), 1)) for e in links if _over(arrow, e) > 3.0]
+    assert not hidden, hidden
