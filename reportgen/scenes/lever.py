@@ -63,12 +63,14 @@ def _along_line(img: np.ndarray, d: np.ndarray, arrows: list) -> list:
     arrows (``arrows``: (tail, head, weight)) already drawn on that line through ``img``: pulling from
     their far end, pushing into their near end, so that the arrows follow one another along the line
     (a force slides along its line of action without changing its moment about the pole); each
-    way's first point is the end where it meets the arrows it follows.
-    Empty when no drawn arrow lies on that line."""
+    way's first point is the end where it meets the arrows it follows. Only arrows that start or
+    end at ``img`` count: a force is never carried off to another point's arrows on its line.
+    Empty when no drawn arrow lies on that line at ``img``."""
     u = d / float(np.hypot(*d))
     n = np.array([-u[1], u[0]])
     ts = [float((q - img) @ u) for a, b, _ in arrows
           if abs(float((a - img) @ n)) < MM_EPS and abs(float((b - img) @ n)) < MM_EPS
+          and min(float(np.hypot(*(a - img))), float(np.hypot(*(b - img)))) < CROWD_MM
           for q in (a, b)]
     if not ts:
         return []
