@@ -63,19 +63,23 @@ def _along_line(img: np.ndarray, d: np.ndarray, arrows: list) -> list:
     arrows (``arrows``: (tail, head, weight)) already drawn on that line through ``img``: pulling from
     their far end, pushing into their near end, so that the arrows follow one another along the line
     (a force slides along its line of action without changing its moment about the pole); each
-    way's first point is the end where it meets the arrows it follows. Only arrows that start or
-    end at ``img`` count: a force is never carried off to another point's arrows on its line.
+    way's first point is the end where it meets the arrows it follows, never a head against a head.
+    Only arrows that start or end at ``img`` count: a force is never carried off to another point's
+    arrows on its line.
     Empty when no drawn arrow lies on that line at ``img``."""
     u = d / float(np.hypot(*d))
     n = np.array([-u[1], u[0]])
-    ts = [float((q - img) @ u) for a, b, _ in arrows
-          if abs(float((a - img) @ n)) < MM_EPS and abs(float((b - img) @ n)) < MM_EPS
-          and min(float(np.hypot(*(a - img))), float(np.hypot(*(b - img)))) < CROWD_MM
-          for q in (a, b)]
-    if not ts:
+    ends = [(float((q - img) @ u), k) for a, b, _ in arrows
+            if abs(float((a - img) @ n)) < MM_EPS and abs(float((b - img) @ n)) < MM_EPS
+            and min(float(np.hypot(*(a - img))), float(np.hypot(*(b - img)))) < CROWD_MM
+            for q, k in ((a, "tail"), (b, "head"))]
+    if not ends:
         return []
-    hi, lo = max(ts + [0.0]), min(ts + [0.0])
-    return [(img + hi * u, img + hi * u + d), (img + lo * u, img + lo * u - d)]
+    hi, lo = max(ends + [(0.0, "")]), min(ends + [(0.0, "")])
+    out = [(img + hi[0] * u, img + hi[0] * u + d)]
+    if lo[1] != "head":          # pushing into another arrow's head would set two heads together
+        out.append((img + lo[0] * u, img + lo[0] * u - d))
+    return out
 
 
 def _own_part(foot: np.ndarray, feet: list) -> np.ndarray:
