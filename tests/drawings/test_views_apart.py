@@ -97,11 +97,12 @@ def view_findings(sheet: Sheet, loose: tuple[str, ...] = LOOSE) -> list[str]:
 def test_no_view_draws_over_another(name, tmp_path):
     project = project_of(name, tmp_path)
     todo = available_sheets(project)
+    assert todo, name
     found = []
     for number, (stem, mod) in enumerate(todo, 1):
         sheet = draw_sheet(project, mod, number, len(todo))
         found += [f"{stem}: {f}" for f in view_findings(sheet)]
-    assert todo and not found, "\n".join(found)
+    assert not found, "\n".join(found)
 
 
 @pytest.mark.slow
