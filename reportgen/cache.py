@@ -246,20 +246,47 @@ class BuildCache:
         self._store_dir("builds", self.build_key, tmp)
 
     # -- LaTeX's auxiliary files ---------------------------------------------------------------
+    #: The preamble of the last build's note, kept in its ``tex/`` entry (not copied to the build).
+    TEX_PREAMBLE = ".reportgen-preamble"
+
     def restore_tex(self, build_dir: Path) -> bool:
         entry = self.root / "tex" / self.tex_key
         if not (entry / ".complete").is_file():
             return False
         try:
-            _copy_tree(entry, build_dir)
+            build_dir.mkdir(parents=True, exist_ok=True)
+            for item in entry.iterdir():
+                if item.is_dir():
+                    _copy_tree(item, build_dir / item.name)
+                elif item.name not in (".complete", self.TEX_PREAMBLE):
+                    shutil.copyfile(item, build_dir / item.name)
         except OSError:
             return False
-        (build_dir / ".complete").unlink(missing_ok=True)
         return True
 
-    def store_tex(self, build_dir: Path) -> None:
-        if build_dir.is_dir():
-            self._store_dir("tex", self.tex_key, build_dir, replace=True)
+    def tex_preamble(self) -> str | None:
+        """The preamble of the note whose auxiliary files :meth:`restore_tex` restores (through
+        its line ``\\begin{document}``), or None when the entry keeps none."""
+        entry = self.root / "tex" / self.tex_key
+        if not (entry / ".complete").is_file():
+            return None
+        try:
+            return (entry / self.TEX_PREAMBLE).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            return None
+
+    def store_tex(self, build_dir: Path, preamble: str | None = None) -> None:
+        """Keep LaTeX's working folder of this build (and ``preamble``, its note's preamble)."""
+        if not build_dir.is_dir():
+            return
+
+        def fill(part: Path) -> None:
+            _copy_tree(build_dir, part)
+            if preamble is not None:
+                (part / self.TEX_PREAMBLE).write_text(preamble, encoding="utf-8")
+
+        if _publish(self.root / "tex" / self.tex_key, fill):
+            _prune(self.root / "tex", KEEP["tex"])
 
     # -- sheet previews ------------------------------------------------------------------------
     def _preview_path(self, dxf: Path) -> Path:

@@ -109,27 +109,34 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     """Solve, write the note, the sheets and results.json into ``tmp``; return the results."""
     from ..results import build_results, dumps
 
-    with timeline.stage("solve"):
-        results = build_results(project)
-    task = project.task
+    early = pdf and latexmk == DEFAULT_LATEXMK
+    # a rebuild's first xelatex pass reads the last build's preamble while the task is solved and
+    # the note composed (it goes on into the body when the note's preamble is the same)
+    started = _start_split_latex(tmp, cache) if early and cache is not None else None
+    pending = started
     child = None
-    todo: list[tuple[str, Any]] = []
-    if sheets and parallel_possible():
-        # forked before the main process imports matplotlib, ezdxf only in the sheets' process: it
-        # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
-        with timeline.stage("before the sheets' fork"):
-            _shared_imports(project)
-            _shared_stages(project)
-            child = _Child.start(project, tmp, None, cache)
-    elif sheets:
-        todo = _sheet_list(project)
-    pending = None
     try:
+        with timeline.stage("solve"):
+            results = build_results(project)
+        task = project.task
+        todo: list[tuple[str, Any]] = []
+        if sheets and parallel_possible():
+            # forked before the main process imports matplotlib, ezdxf only in the sheets' process: it
+            # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
+            with timeline.stage("before the sheets' fork"):
+                _shared_imports(project)
+                _shared_stages(project)
+                child = _Child.start(project, tmp, None, cache)
+        elif sheets:
+            todo = _sheet_list(project)
         if (task.mechanism is not None or task.gears is not None or task.planetary is not None
                 or getattr(task, "crane", None) is not None):
-            tex, pending = _note(project, tmp, timeline, early=pdf and latexmk == DEFAULT_LATEXMK, cache=cache)
+            tex, pending = _note(project, tmp, timeline, early=early, cache=cache, started=started)
             if pdf and pending is None:
                 pending = _start_latex(tex, latexmk, cache)
+        elif pending is not None:           # no note to typeset
+            pending.cancel()
+            pending = None
         if todo and child is None:
             for span in draw_sheets(project, tmp, todo, cache, lane=MAIN):
                 timeline.add(span)
@@ -151,14 +158,39 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
             timeline.add(Span("note: LaTeX", LATEX, pending.started, end))
             timeline.spans.append(Span("wait for LaTeX", MAIN, t0, end))
             if cache is not None:
-                cache.store_tex(tex.parent / "latex-build")
+                cache.store_tex(tex.parent / "latex-build", _preamble(tex))
             pending = None
     finally:
         if child is not None:
             child.kill()
         if pending is not None:
             pending.cancel()
+        if started is not None:
+            started.cancel()        # stopped already unless the build failed while it waited
     return results
+
+
+def _start_split_latex(tmp: Path, cache: Any) -> Any:
+    """A rebuild's first xelatex pass, started on the preamble of the task's last build with that
+    build's auxiliary files (:func:`latex_templates.build.start_split_passes`); None when the cache
+    keeps no such build."""
+    from latex_templates.build import BUILD_DIR, start_split_passes
+
+    preamble = cache.tex_preamble()
+    if preamble is None or not cache.restore_tex(tmp / BUILD_DIR):
+        return None
+    return start_split_passes(tmp / "report.tex", preamble)
+
+
+def _preamble(tex: Path) -> str | None:
+    """The note's preamble through its line ``\\begin{document}`` (kept for the next rebuild)."""
+    from latex_templates.passes import split_note
+
+    try:
+        parts = split_note(tex.read_text(encoding="utf-8"))
+    except OSError:
+        return None
+    return parts[0] if parts is not None else None
 
 
 def _shared_imports(project: Any) -> None:
@@ -189,7 +221,7 @@ def _sheet_list(project: Any) -> list[tuple[str, Any]]:
 
 
 def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
-          cache: Any = None) -> tuple[Path, Any]:
+          cache: Any = None, started: Any = None) -> tuple[Path, Any]:
     """Compose the sections and write report.tex (once), then save the figures it refers to
     (split over two processes where there is a second processor).
 
@@ -197,8 +229,9 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     starts before the figures are saved, on placeholders of their sizes (a figure kept by the
     build cache: its PDF), and goes on once they are (:mod:`latex_templates.passes`); with the
     auxiliary files of the task's last build restored from the cache and every figure of its
-    placeholder's page box, that first pass is often the only one. Returned with report.tex,
-    else None."""
+    placeholder's page box, that first pass is often the only one. ``started``: that first pass
+    started already on the last build's preamble (:func:`_start_split_latex`), used when the
+    note's preamble is the same, else stopped. Returned with report.tex, else None."""
     with timeline.stage("note: imports"):          # matplotlib, the parts (beside the sheets' own)
         _note_imports(project)
     from latex_templates.figures.saving import queued
@@ -210,10 +243,16 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     split = None
     boxes: dict[Path, bytes | None] = {}
     try:
-        if early and len(figures):
-            _restore_latex(tex, cache)
+        if started is not None and early and started.note_written():
+            pending = started                   # pass 1 has read its preamble
+        elif started is not None:
+            started.cancel()                    # another preamble: a pass on this note (aux files restored)
+        if early and (len(figures) or pending is not None):
+            if pending is None:
+                if started is None:
+                    _restore_latex(tex, cache)
+                pending = _start_passes(tex)    # pass 1 reads its preamble meanwhile
             targets = [target for _, target in figures.items]
-            pending = _start_passes(tex)        # pass 1 reads its preamble meanwhile
             with timeline.stage("note: figure sizes"):
                 if parallel_possible():      # measured in two processes, each then saves its share
                     split = figures.start_split(_fork_figures_ready, cache)
