@@ -44,7 +44,7 @@ from pathlib import Path
 from typing import Callable, Mapping
 
 #: Newest entries kept of each kind.
-KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60}
+KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60, "sections": 60}
 #: Source files whose bytes make the code's fingerprint.
 _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
@@ -226,6 +226,8 @@ class BuildCache:
         self.tex_key = _digest("tex", str(task_path))
         self.figures_reused = 0     # figures copied from the cache in this build (the note's figures)
         self.figures_saved = 0      # figures saved and stored in this build
+        self.sections_reused = 0    # the note's sections whose text came from the cache
+        self.sections = 0           # the note's sections (composed or kept)
         self._read_digests: dict[tuple, str | None] = {}   # a sheet's read → its digest, this build
 
     # -- whole builds ------------------------------------------------------------------------
@@ -310,9 +312,9 @@ class BuildCache:
             return
         _prune(dst.parent, KEEP["previews"])
 
-    # -- whole sheets ---------------------------------------------------------------------------
-    def _sheet_base(self, identity: str) -> Path:
-        return self.root / "sheets" / _digest("sheet", self.code, identity)
+    # -- what is kept under what it read: whole sheets, the note's sections -------------------
+    def _variants_base(self, kind: str, identity: str) -> Path:
+        return self.root / kind / _digest(kind, self.code, identity)
 
     def _digest_of(self, project: object, read: tuple, mask: bool) -> str | None:
         from .read_trace import read_digest
@@ -326,8 +328,8 @@ class BuildCache:
         return self._read_digests[memo]
 
     def _variant(self, project: object, reads: list[tuple]) -> str | None:
-        """The name of the variant of a sheet whose ``reads`` have the values they have on
-        ``project`` (None when one of them cannot be digested)."""
+        """The name of the variant of a sheet (or section) whose ``reads`` have the values they
+        have on ``project`` (None when one of them cannot be digested)."""
         from .read_trace import masks_masses
 
         mask = masks_masses(reads)
@@ -337,17 +339,17 @@ class BuildCache:
         import json
         return _digest("variant", json.dumps(reads), *[d for d in digests if d is not None])
 
-    def restore_sheet(self, identity: str, project: object, files: dict[str, Path]) -> bool:
-        """Copy the files of the sheet ``identity`` (the sheet module, its number and count, the
-        language) drawn from a project whose every read value (:mod:`reportgen.read_trace`) equals
-        ``project``'s; ``files``: the kept file's name → where it goes. False when there is none."""
+    def find_variant(self, kind: str, identity: str, project: object) -> Path | None:
+        """The entry of ``kind`` (``sheets``, ``sections``) named ``identity`` that was made from a
+        project whose every read value (:mod:`reportgen.read_trace`) equals ``project``'s; None
+        when there is none. Its use is noted (the newest entries are kept)."""
         import json
 
-        base = self._sheet_base(identity)
+        base = self._variants_base(kind, identity)
         try:
             variants = [p for p in base.iterdir() if (p / ".complete").is_file()]
         except OSError:
-            return False
+            return None
         tried: set[str] = set()
         for entry in sorted(variants, key=lambda p: p.stat().st_mtime, reverse=True):
             try:
@@ -359,39 +361,80 @@ class BuildCache:
                 continue
             tried.add(name)
             found = base / name
-            if not (found / ".complete").is_file():
-                continue
-            try:
-                for kept, target in files.items():
-                    _copy_atomic(found / kept, target)
-            except OSError:
-                return False
-            _touch(found)
-            _touch(base)
-            return True
-        return False
+            if (found / ".complete").is_file():
+                _touch(found)
+                _touch(base)
+                return found
+        return None
 
-    def store_sheet(self, identity: str, project: object, reads: list[tuple], files: dict[str, Path]) -> None:
-        """Keep the sheet's ``files`` (name → the file made) under its reads' values on ``project``."""
+    def store_variant(self, kind: str, identity: str, project: object, reads: list[tuple],
+                      fill: Callable[[Path], None], *, replace: bool = False) -> None:
+        """Keep what ``fill(folder)`` writes as the entry of ``kind`` named ``identity`` under its
+        ``reads``' values on ``project`` (``replace``: over an entry of the same values)."""
         import json
 
         name = self._variant(project, reads)
         if name is None:
             return
-        base = self._sheet_base(identity)
+        base = self._variants_base(kind, identity)
         entry = base / name
-        if (entry / ".complete").is_file():
+        if (entry / ".complete").is_file() and not replace:
             return
 
+        def fill_all(part: Path) -> None:
+            fill(part)
+            (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
+
+        if not _publish(entry, fill_all):
+            return
+        _prune(base, 4)                       # a few variants of each (an edit undone is a hit)
+        _prune(base.parent, KEEP[kind])
+
+    def restore_sheet(self, identity: str, project: object, files: dict[str, Path]) -> bool:
+        """Copy the files of the sheet ``identity`` (the sheet module, its number and count, the
+        language) drawn from a project whose every read value (:mod:`reportgen.read_trace`) equals
+        ``project``'s; ``files``: the kept file's name → where it goes. False when there is none."""
+        found = self.find_variant("sheets", identity, project)
+        if found is None:
+            return False
+        try:
+            for kept, target in files.items():
+                _copy_atomic(found / kept, target)
+        except OSError:
+            return False
+        return True
+
+    def store_sheet(self, identity: str, project: object, reads: list[tuple], files: dict[str, Path]) -> None:
+        """Keep the sheet's ``files`` (name → the file made) under its reads' values on ``project``."""
         def fill(part: Path) -> None:
             for kept, made in files.items():
                 shutil.copyfile(made, part / kept)
-            (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
 
-        if not _publish(entry, fill):
-            return
-        _prune(base, 4)                       # a few variants of each sheet (an edit undone is a hit)
-        _prune(base.parent, KEEP["sheets"])
+        self.store_variant("sheets", identity, project, reads, fill)
+
+    def restore_section(self, identity: str, project: object) -> dict | None:
+        """What :meth:`store_section` kept of the note's section ``identity`` for a project whose
+        every read value equals ``project``'s; None when nothing."""
+        import json
+
+        found = self.find_variant("sections", identity, project)
+        if found is None:
+            return None
+        try:
+            data = json.loads((found / "section.json").read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return None
+        return data if isinstance(data, dict) else None
+
+    def store_section(self, identity: str, project: object, reads: list[tuple], data: dict) -> None:
+        """Keep ``data`` (JSON: the section as rendered, :mod:`reportgen.commands.note_cache`)
+        under its reads' values on ``project``, over what was kept for the same values."""
+        import json
+
+        def fill(part: Path) -> None:
+            (part / "section.json").write_text(json.dumps(data, ensure_ascii=False), encoding="utf-8")
+
+        self.store_variant("sections", identity, project, reads, fill, replace=True)
 
     # -- the note's figures --------------------------------------------------------------------
     def _figure_path(self, key: str) -> Path:

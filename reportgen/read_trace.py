@@ -71,13 +71,19 @@ class TracedNeeds(Needs):
 
 
 class _TracedTask:
-    """``project.task`` for a traced sheet: each section read is recorded."""
+    """``project.task`` for a traced sheet or note section: each section read is recorded;
+    ``task.has(section)`` as the section's presence only."""
 
     def __init__(self, task: Any, trace: Trace) -> None:
         self._task, self._trace = task, trace
 
     def __getattr__(self, name: str) -> Any:
         value = getattr(self._task, name)
+        if name == "has":                      # a section's presence, not its values
+            def has(section: str) -> bool:
+                self._trace.add(("task-has", section))
+                return bool(value(section))
+            return has
         self._trace.add(("task", name) if not callable(value) else OPAQUE)
         return value
 
@@ -108,6 +114,8 @@ def read_value(project: Any, read: tuple) -> Any:
         return getattr(project, read[1])
     if kind == "task":
         return getattr(project.task, read[1])
+    if kind == "task-has":
+        return project.task.has(read[1])
     if kind == "scenes":
         return getattr(project.scenes, read[1])
     if kind == "scenes-call":

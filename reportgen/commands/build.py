@@ -110,14 +110,15 @@ def _build_into(tmp: Path, project: Project, progress: "Timeline", store, *, qui
 
 def reuse_line(store, progress: "Timeline") -> str:
     """What a build with the cache took from it: «figures: N from the cache, M saved and kept;
-    sheets: K of S from the cache; xelatex passes: P»."""
+    sections: J of T from the cache; sheets: K of S from the cache; xelatex passes: P»."""
     from .pipeline import FROM_CACHE
 
     sheets = [s for s in progress.spans if s.name.startswith("sheet ")]
     reused = sum(s.name.endswith(FROM_CACHE) for s in sheets)
     passes = f"; xelatex passes: {progress.latex_passes}" if progress.latex_passes else ""
+    sections = f"sections: {store.sections_reused} of {store.sections} from the cache; " if store.sections else ""
     return (f"figures: {store.figures_reused} from the cache, {store.figures_saved} saved and kept; "
-            f"sheets: {reused} of {len(sheets)} from the cache{passes}")
+            f"{sections}sheets: {reused} of {len(sheets)} from the cache{passes}")
 
 
 def run(args: argparse.Namespace) -> int:

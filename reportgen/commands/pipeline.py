@@ -238,7 +238,7 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     from latex_templates.passes import media_box
 
     with queued(cache) as figures:
-        tex = _note_text(project, tmp, timeline)
+        tex = _note_text(project, tmp, timeline, cache, figures)
     pending = None
     split = None
     boxes: dict[Path, bytes | None] = {}
@@ -314,8 +314,10 @@ def _fork_figures_ready(work: Any) -> "_Child":
     return _Child.fork(work, "note's figures", ready=True)
 
 
-def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
-    """Compose the sections (their figures drawn, queued for saving) and write report.tex."""
+def _note_text(project: Any, tmp: Path, timeline: Timeline, cache: Any = None, queue: Any = None) -> Path:
+    """Compose the sections (their figures drawn, queued for saving) and write report.tex. With
+    the build cache, a section whose parts read what they read when it was kept is taken from it
+    (:mod:`.note_cache`)."""
     from latex_templates import NoteBuilder
     from latex_templates.assignment import assignment_section, introduction_paragraphs
     from latex_templates.compose import compose
@@ -327,14 +329,23 @@ def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
             return note_builder(project).render(tmp)
     with timeline.stage("note: sections"):
         strings = Strings(project.task.document.language or "ru")
-        sections, left_out = compose(project, strings)
-        note = NoteBuilder(project.task.document, designation=strings.designation(project.task.document),
-                           introduction=introduction_paragraphs(project, left_out),
-                           conclusions=[c for s in sections for c in s.conclusions],
-                           assignment=assignment_section(project))
+        kept = None
+        if cache is not None and queue is not None:
+            from .note_cache import CachingNoteBuilder, KeptSections
+            kept = KeptSections(cache, project, strings, queue)
+        sections, left_out = compose(project, strings, kept=kept)
+        options: dict[str, Any] = dict(designation=strings.designation(project.task.document),
+                                       introduction=introduction_paragraphs(project, left_out),
+                                       conclusions=[c for s in sections for c in s.conclusions],
+                                       assignment=assignment_section(project))
+        note = (NoteBuilder(project.task.document, **options) if kept is None
+                else CachingNoteBuilder(project.task.document, kept=kept, **options))
         for s in sections:
             note.add_section(s.section)
-        return note.render(tmp)
+        tex = note.render(tmp)
+        if kept is not None:
+            cache.sections_reused, cache.sections = len(kept.reused), len(sections)
+        return tex
 
 
 def _start_latex(tex: Path, latexmk: str, cache: Any) -> Any:
