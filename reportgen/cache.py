@@ -44,7 +44,8 @@ from pathlib import Path
 from typing import Callable, Mapping
 
 #: Newest entries kept of each kind.
-KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60, "sections": 60}
+KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60, "sections": 60,
+        "scenes": 60}
 #: Source files whose bytes make the code's fingerprint.
 _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
@@ -322,10 +323,88 @@ class BuildCache:
         memo = (read, mask)
         if memo not in self._read_digests:
             try:
-                self._read_digests[memo] = read_digest(project, read, mask_masses=mask)
+                found = self._scene_digest(project, read, mask) if read[0] == "scenes" else None
+                self._read_digests[memo] = found or read_digest(project, read, mask_masses=mask)
+                if read[0] == "scenes" and found is None:
+                    self._keep_scene_digest(project, read, mask, self._read_digests[memo])
             except Exception:  # noqa: BLE001 - a stage that fails now, or data without a canonical form: no hit
                 self._read_digests[memo] = None
         return self._read_digests[memo]
+
+    # -- a scene's digest kept under its inputs' ----------------------------------------------
+    _SCENE_INPUTS = ".inputs.json"     # in a scene's entry: what it reads (kept by pruning: a dot)
+
+    def _scene_entry(self, name: str) -> Path:
+        return self.root / "scenes" / _digest("scene-inputs", self.code, name)
+
+    def _scene_key(self, project: object, name: str, mask: bool, inputs: list[tuple]) -> str | None:
+        """The digest of the values of a scene's ``inputs`` on ``project`` (masses never left out:
+        a scene may draw them), with the mask its own digest is made with."""
+        import json
+
+        digests = [self._digest_of(project, r, False) for r in inputs]
+        if any(d is None for d in digests):
+            return None
+        return _digest("scene", json.dumps(inputs), str(mask), *[d for d in digests if d is not None])
+
+    def _scene_digest(self, project: object, read: tuple, mask: bool) -> str | None:
+        """The digest of the scene ``read`` names, kept under the digest of what it reads
+        (:func:`reportgen.read_trace.scene_inputs`), when the values it reads on ``project`` are
+        those it was kept under: the scene need not be made. None otherwise."""
+        import json
+
+        entry = self._scene_entry(read[1])
+        try:
+            inputs = [tuple(r) for r in json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))]
+        except (OSError, ValueError):
+            return None
+        key = self._scene_key(project, read[1], mask, inputs)
+        if key is None:
+            return None
+        try:
+            found = (entry / key).read_text(encoding="utf-8").strip()
+        except OSError:
+            return None
+        _touch(entry / key)
+        return found or None
+
+    def _keep_scene_digest(self, project: object, read: tuple, mask: bool, digest: str | None) -> None:
+        """Keep ``digest`` of the scene ``read`` names under the digest of its inputs (found once
+        per code: the scene made again on a recording view of the project)."""
+        import json
+
+        from .read_trace import scene_inputs
+
+        if digest is None or len(read) != 2:
+            return
+        entry = self._scene_entry(read[1])
+        try:
+            inputs = [tuple(r) for r in json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))]
+        except (OSError, ValueError):
+            found = scene_inputs(project, read[1])
+            if found is None:
+                return
+            inputs = found
+            try:
+                entry.mkdir(parents=True, exist_ok=True)
+                _write_atomic(entry / self._SCENE_INPUTS, json.dumps(inputs))
+            except OSError:
+                return
+        key = self._scene_key(project, read[1], mask, inputs)
+        if key is None:
+            return
+        try:
+            _write_atomic(entry / key, digest)
+        except OSError:
+            return
+        _prune(entry, 16)                     # a few values of each scene (an edit undone is a hit)
+        _touch(entry)
+        _prune(entry.parent, KEEP["scenes"])
+
+    def scene_kept(self, project: object, name: str) -> bool:
+        """Whether the digest of ``project.scenes.<name>`` is known without making it."""
+        return self._scene_digest(project, ("scenes", name), False) is not None \
+            or self._scene_digest(project, ("scenes", name), True) is not None
 
     def _variant(self, project: object, reads: list[tuple]) -> str | None:
         """The name of the variant of a sheet (or section) whose ``reads`` have the values they
@@ -548,6 +627,14 @@ def _copy_tree(src: Path, dst: Path) -> None:
             _copy_tree(item, target)
         else:
             shutil.copyfile(item, target)
+
+
+def _write_atomic(dst: Path, text: str) -> None:
+    """Write ``text`` to ``dst`` through a part file renamed into place."""
+    fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
+    with os.fdopen(fd, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(part, dst)
 
 
 def _copy_atomic(src: Path, dst: Path) -> None:

@@ -125,7 +125,7 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
             # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
             with timeline.stage("before the sheets' fork"):
                 _shared_imports(project)
-                _shared_stages(project)
+                _shared_stages(project, cache)
                 child = _Child.start(project, tmp, None, cache)
         elif sheets:
             todo = _sheet_list(project)
@@ -205,13 +205,17 @@ def _shared_imports(project: Any) -> None:
     Strings(project.task.document.language or "ru")
 
 
-def _shared_stages(project: Any) -> None:
+def _shared_stages(project: Any, cache: Any = None) -> None:
     """Compute before the fork the costly stages that both the note and a sheet read, so that the
     two processes do not each compute them: the meshing picture with its designations placed
     (≈ 0.2 s of CPU; section 4 and the gears' sheet, both made whenever the task has a gear pair).
     The note reads it anyway, so the main process does no more than it would; the cheaper scenes
-    are left to whichever process reads them."""
+    are left to whichever process reads them. Not when the build cache knows the picture's digest
+    from the gear pair's (:meth:`reportgen.cache.BuildCache.scene_kept`): then section 4 and sheet
+    4 are likely kept, and neither needs the picture."""
     if project.task.gears is not None and getattr(project.task, "kind", "") != "crane":
+        if cache is not None and cache.scene_kept(project, "meshing"):
+            return
         _ = project.scenes.meshing
 
 
