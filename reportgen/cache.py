@@ -337,7 +337,7 @@ class BuildCache:
     def _scene_entry(self, name: str) -> Path:
         return self.root / "scenes" / _digest("scene-inputs", self.code, name)
 
-    def _scene_key(self, project: object, name: str, mask: bool, inputs: list[tuple]) -> str | None:
+    def _scene_key(self, project: object, mask: bool, inputs: list[tuple]) -> str | None:
         """The digest of the values of a scene's ``inputs`` on ``project`` (masses never left out:
         a scene may draw them), with the mask its own digest is made with."""
         import json
@@ -358,7 +358,7 @@ class BuildCache:
             inputs = [tuple(r) for r in json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))]
         except (OSError, ValueError):
             return None
-        key = self._scene_key(project, read[1], mask, inputs)
+        key = self._scene_key(project, mask, inputs)
         if key is None:
             return None
         try:
@@ -390,7 +390,7 @@ class BuildCache:
                 _write_atomic(entry / self._SCENE_INPUTS, json.dumps(inputs))
             except OSError:
                 return
-        key = self._scene_key(project, read[1], mask, inputs)
+        key = self._scene_key(project, mask, inputs)
         if key is None:
             return
         try:

@@ -241,6 +241,8 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     from latex_templates.figures.saving import queued
     from latex_templates.passes import media_box
 
+    from . import subset_cache
+    subset_cache.use(cache)                        # before any figure is saved in this process
     with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline, cache, figures)
     pending = None
