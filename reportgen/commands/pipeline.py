@@ -58,6 +58,7 @@ class Timeline:
     origin: float = field(default_factory=time.perf_counter)
     current: str | None = None   # the main-lane stage running (named when it fails)
     latex_passes: int = 0        # xelatex passes the note took
+    latex_preamble_kept: bool = False   # pass 1 began on the last build's preamble (before the solve)
 
     @contextmanager
     def stage(self, name: str, lane: str = MAIN) -> Iterator[None]:
@@ -251,6 +252,7 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     try:
         if started is not None and early and started.note_written():
             pending = started                   # pass 1 has read its preamble
+            timeline.latex_preamble_kept = True
         elif started is not None:
             started.cancel()                    # another preamble: a pass on this note (aux files restored)
         if early and (len(figures) or pending is not None):

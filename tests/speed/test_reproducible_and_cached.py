@@ -17,6 +17,8 @@ ROOT = Path(__file__).resolve().parents[2]
 PRESS = ROOT / "examples" / "press" / "task.toml"
 
 pytestmark = pytest.mark.slow
+#: What the build says when LaTeX's first pass began on the last build's preamble (docs/build.md).
+KEPT_PREAMBLE = "(the first begun on the kept preamble)"
 
 
 def build(task: Path, out: Path, *, seed: str, cwd: Path, cache: Path | str, extra: tuple[str, ...] = ()):
@@ -100,15 +102,15 @@ def builds(tmp_path_factory):
     out["gear_stdout"] = r.stdout
     build(task, base / "gear-plain", seed="11", cwd=ROOT, cache="off")
     out["gear-plain"] = files(base / "gear-plain")
-    # the note's language changed (Ukrainian) in a copy: cached (every key names the language), then uncached
-    lang = work / "lang" / "task.toml"
-    lang.parent.mkdir()
+    # the note's language changed (Ukrainian) in the same file: cached (every key names the language;
+    # LaTeX's first pass, started on the last build's Russian preamble, is stopped and started on the
+    # note), then uncached
     assert text.count('language = "ru"') == 1
-    lang.write_text(text.replace('language = "ru"', 'language = "uk"'), encoding="utf-8")
-    r = build(lang, base / "lang-cached", seed="8", cwd=work, cache=cache)
+    task.write_text(task.read_text(encoding="utf-8").replace('language = "ru"', 'language = "uk"'), encoding="utf-8")
+    r = build(task, base / "lang-cached", seed="8", cwd=work, cache=cache)
     out["lang-cached"] = files(base / "lang-cached")
     out["lang_stdout"] = r.stdout
-    build(lang, base / "lang-plain", seed="9", cwd=ROOT, cache="off")
+    build(task, base / "lang-plain", seed="9", cwd=ROOT, cache="off")
     out["lang-plain"] = files(base / "lang-plain")
     out["cache"] = cache
     return out
@@ -137,6 +139,7 @@ def test_a_changed_number_rebuilt_with_the_cache_equals_an_uncached_build(builds
     # LaTeX starts from the aux files of the build before (the same task file): two passes where δ
     # moved the pages, one where it did not; rebuilt from its own aux files and kept figures, one
     assert re.search(r"xelatex passes: [12]\b", builds["changed_stdout"]), builds["changed_stdout"]
+    assert KEPT_PREAMBLE in builds["changed_stdout"]
     assert_same(builds["changed-plain"], builds["changed-again"])
     assert sheets_line(builds["again_stdout"]) == (4, 4)
     assert sections_line(builds["again_stdout"]) == (4, 4)
@@ -196,6 +199,7 @@ def test_a_changed_mass_reuses_the_figures_whose_scene_did_not_change(builds):
     # kinetostatics and dynamics composed again; LaTeX from the last build's aux files and preamble
     assert sections_line(builds["mass_stdout"]) == (2, 4)
     assert re.search(r"xelatex passes: [12]\b", builds["mass_stdout"]), builds["mass_stdout"]
+    assert KEPT_PREAMBLE in builds["mass_stdout"]
     for stem in ("sheet1-kinematics", "sheet4-gears"):
         assert f"{stem} (from the cache)" in builds["mass_stdout"]
     for stem in ("sheet2-kinetostatics", "sheet3-dynamics"):
@@ -210,6 +214,7 @@ def test_a_changed_gear_number_redoes_only_the_gears_section_and_sheet(builds):
     assert "sheet4-gears (from the cache)" not in builds["gear_stdout"]
     assert sections_line(builds["gear_stdout"]) == (3, 4)
     assert re.search(r"xelatex passes: [12]\b", builds["gear_stdout"]), builds["gear_stdout"]
+    assert KEPT_PREAMBLE in builds["gear_stdout"]
     # the figures of sections 1–3 are the mass build's bytes; the gear pair's meshing is drawn again
     same = [n for n in builds["gear-plain"] if n.startswith(("figures/linkage-", "figures/kinetostatics-",
                                                              "figures/dynamics-"))]
@@ -220,6 +225,8 @@ def test_a_changed_gear_number_redoes_only_the_gears_section_and_sheet(builds):
 def test_a_changed_language_reuses_nothing_that_has_words(builds):
     assert_same(builds["lang-plain"], builds["lang-cached"])
     assert sheets_line(builds["lang_stdout"]) == (0, 4)
+    assert sections_line(builds["lang_stdout"]) == (0, 4)
+    assert KEPT_PREAMBLE not in builds["lang_stdout"]      # another preamble: that pass stopped, one on the note
     reused, _ = figures_line(builds["lang_stdout"])
     same = [n for n in builds["lang-plain"] if n.startswith("figures/") and builds["lang-plain"][n] == builds["plain"].get(n)]
     assert reused <= len(same)          # a figure from the cache is one whose bytes the language does not change
@@ -230,6 +237,6 @@ def test_the_cache_holds_only_its_own_folders(builds):
     from latex_templates.precompiled import STORE
 
     folders = sorted(p.name for p in builds["cache"].iterdir())
-    assert [f for f in folders if f != "jinja"] == ["builds", "figures", "previews", "sheets", "tex"]
+    assert [f for f in folders if f != "jinja"] == ["builds", "figures", "previews", "scenes", "sections", "sheets", "subsets", "tex"]
     if not STORE.is_file():            # every template compiled by the build, and kept
         assert "jinja" in folders
