@@ -239,16 +239,19 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     note's preamble is the same, else stopped. Returned with report.tex, else None."""
     with timeline.stage("note: imports"):          # matplotlib, the parts (beside the sheets' own)
         _note_imports(project)
-    from latex_templates.figures.saving import queued
+    from latex_templates.figures.saving import KeptFigure, queued
     from latex_templates.passes import media_box
 
-    from . import subset_cache
-    subset_cache.use(cache)                        # before any figure is saved in this process
     with queued(cache) as figures:
         tex = _note_text(project, tmp, timeline, cache, figures)
     pending = None
     split = None
     boxes: dict[Path, bytes | None] = {}
+    from . import subset_cache
+    if cache is not None and any(not isinstance(fig, KeptFigure) for fig, _ in figures.items):
+        subset_cache.use(cache)                # a figure to save: its font subsets from the cache
+    else:
+        subset_cache.use(None)                 # (a process building again without the cache)
     try:
         if started is not None and early and started.note_written():
             pending = started                   # pass 1 has read its preamble
