@@ -355,9 +355,12 @@ class BuildCache:
 
         entry = self._scene_entry(read[1])
         try:
-            inputs = [tuple(r) for r in json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))]
+            found_inputs = json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))
         except (OSError, ValueError):
             return None
+        if not isinstance(found_inputs, list):       # a scene not kept by its inputs (opaque)
+            return None
+        inputs = [tuple(r) for r in found_inputs]
         key = self._scene_key(project, mask, inputs)
         if key is None:
             return None
@@ -379,17 +382,17 @@ class BuildCache:
             return
         entry = self._scene_entry(read[1])
         try:
-            inputs = [tuple(r) for r in json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))]
+            known = json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))
         except (OSError, ValueError):
-            found = scene_inputs(project, read[1])
-            if found is None:
-                return
-            inputs = found
-            try:
+            known = scene_inputs(project, read[1])
+            try:                       # null: not kept by its inputs (not tried again with this code)
                 entry.mkdir(parents=True, exist_ok=True)
-                _write_atomic(entry / self._SCENE_INPUTS, json.dumps(inputs))
+                _write_atomic(entry / self._SCENE_INPUTS, json.dumps(known))
             except OSError:
                 return
+        if not isinstance(known, list):
+            return
+        inputs = [tuple(r) for r in known]
         key = self._scene_key(project, mask, inputs)
         if key is None:
             return

@@ -45,10 +45,11 @@ class KeptSections:
         self.reused: list[str] = []
 
     def identity(self, key: str, names: tuple[str, ...]) -> str:
-        """What names a section besides what it reads: its key, its parts, the language and the
-        catalogue overlay (the code is added by the cache)."""
+        """What names a section besides what it reads: the kind of document, its key, its parts, the
+        language and the catalogue overlay (the code is added by the cache)."""
         overlay = getattr(self.strings, "_overlay", None) or ""
-        return "|".join(("section", key, ",".join(names), self.strings.language, str(overlay)))
+        kind = getattr(self.project.task, "kind", "")
+        return "|".join(("section", str(kind), key, ",".join(names), self.strings.language, str(overlay)))
 
     def view(self, key: str, name: str, mod: Any) -> Any:
         """The project as part ``name`` of section ``key`` reads it: its reads recorded."""
