@@ -212,6 +212,7 @@ _MARKED = (
     (("uk",), r"передаточн", "a russism: the note says «передавальне відношення», so «передавальне число»"),
     (("en",), r"Merzalov", "Мерцалов is Mertsalov in English"),
     (("en",), r"[«»]", "Russian guillemets in an English note"),
+    (("ru", "uk", "en"), r"--", "TeX's dash escaped and printed as hyphens («---» in the control work's ω/ε table)"),
 )
 #: in a control work only (one position: «the given position», not «position 0»)
 _MARKED_CONTROL = r"(?:положени[еяю]|положенн[яі]|position) 0\b"
