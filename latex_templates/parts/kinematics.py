@@ -144,7 +144,7 @@ def content(project) -> PartContent:
     rot_links = [k for k in moving if not _translates(lk, k)]
     omega_eps_rows = []
     if control:
-        sense = lambda x: tr("control.note.ccw" if x > 0 else "control.note.cw") if x != 0 else "---"  # noqa: E731
+        sense = lambda x: tr("control.note.ccw" if x > 0 else "control.note.cw") if x != 0 else Tex("---")  # noqa: E731
         for k in [d] + rot_links:
             w, e = float(kin.links[k].omega[i]), float(kin.links[k].epsilon[i])
             omega_eps_rows.append([k, abs(w), sense(w), abs(e), sense(e)])

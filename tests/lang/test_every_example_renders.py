@@ -104,5 +104,8 @@ def test_a_prismatic_pair_is_named_in_the_group_description(tmp_path):
     """Issue 12 (a teacher's mark): «внутренних D и внешних B, D» named D twice; the outer D is the
     slider's prismatic pair with the frame, and the note says so."""
     tex = _render("press", "ru", tmp_path)
-    assert "внутренних $D$ и~внешних $B$, $D$~(поступательная)" in tex
-    assert "внутренних $B$ и~внешних $A$, $C$;" in tex
+    assert "внутреннюю $D$ и~внешние $B$, $D$~(поступательную)" in tex
+    assert "внутреннюю $B$ и~внешние $A$, $C$;" in tex
+    # the count agrees with its noun (the review: «из звеньев 2, 3 и 3 кинематических пар» read
+    # as «links 2, 3 and 3»)
+    assert "состоит из~звеньев 2, 3\nи~имеет 3~кинематические пары:" in tex

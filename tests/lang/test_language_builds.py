@@ -138,6 +138,17 @@ def test_english_sheets(builds):
         assert word in joined, word
 
 
+@pytest.mark.xfail(strict=True, reason="a scale's ratio is formatted with a comma in the core "
+                   "(gost_scales.label's default, MeshingPicture.label) and printed as is by the sheets "
+                   "(title block, μl caption, scale table, sheet 4's title): «1:2,5», «2,5:1» on the "
+                   "English sheets; the note converts it (|ratio), the sheets do not")
+def test_english_sheets_print_the_decimal_point(builds):
+    """Every number on the English sheets has a decimal point, a scale's ratio included; only the
+    Assur groups' links «II(2,3)» keep their comma."""
+    texts = [re.sub(r"\([\d,\s]+\)", "", t) for t in _dxf_texts(builds["press-en"] / "sheets")]
+    assert not [t for t in texts if re.search(r"\d,\d", t)], [t for t in texts if re.search(r"\d,\d", t)][:5]
+
+
 def test_same_count_of_figures_tables_and_equations(builds):
     ru_shaper = _counts(_pdftext(builds["shaper"] / "report.pdf"), "Рисунок", "Таблица")
     uk_shaper = _counts(_pdftext(builds["shaper-uk"] / "report.pdf"), "Рисунок", "Таблиця")

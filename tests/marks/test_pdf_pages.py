@@ -199,3 +199,36 @@ def test_no_table_part_is_a_single_row(example, built):
     bad = [(n, rows) for n, rows in parts if n in broken and rows < 2]
     assert not bad, bad
     assert all(re.search(rf"{re.escape(continued)} {re.escape(n)}\b", text) for n in broken), broken
+
+
+#: Words a teacher marks in red, found by reading every example's note (the review of issue 12):
+#: (languages, pattern, what is wrong). The patterns are read on the flattened PDF text (hyphenation
+#: and line breaks undone).
+_MARKED = (
+    (("ru", "uk", "en"), r"\d\s*шт\.", "«(3 шт.)» is the language of a parts list, not of a sentence"),
+    (("ru", "uk", "en"), r"(?i)\b(\w{4,})\s+[«“\"]\1\b",
+     "a word repeated inside the quotes after it («механизм «Механизм пресса»»)"),
+    (("uk",), r"зневажлив", "«зневажливо мала» means «contemptuously small»: «нехтовно мала»"),
+    (("uk",), r"передаточн", "a russism: the note says «передавальне відношення», so «передавальне число»"),
+    (("en",), r"Merzalov", "Мерцалов is Mertsalov in English"),
+    (("en",), r"[«»]", "Russian guillemets in an English note"),
+    (("ru", "uk", "en"), r"--", "TeX's dash escaped and printed as hyphens («---» in the control work's ω/ε table)"),
+)
+#: in a control work only (one position: «the given position», not «position 0»)
+_MARKED_CONTROL = r"(?:положени[еяю]|положенн[яі]|position) 0\b"
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_word_a_teacher_marks(example, built):
+    flat = " ".join(re.sub(r"-\s*\n\s*", "", _pdftext(built(example) / "report.pdf")).split())
+    language = _words(example).language
+    bad = []
+    marked = [(p, why) for languages, p, why in _MARKED if language in languages]
+    kind = tomllib.loads((ROOT / "examples" / example / "task.toml").read_text(encoding="utf-8")
+                         ).get("document", {}).get("kind")
+    if kind == "control-work":
+        marked.append((_MARKED_CONTROL, "a control work has one position: «the given position»"))
+    for pattern, why in marked:
+        for m in re.finditer(pattern, flat):
+            bad.append((why, flat[max(0, m.start() - 40):m.end() + 20]))
+    assert not bad, bad[:5]
