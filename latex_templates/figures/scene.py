@@ -91,9 +91,16 @@ def fixed_text(lb: Label, scene: Scene | None = None) -> str:
     return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
 
 
+def _letters_list(tex: str) -> bool:
+    """Is ``tex`` a list of a plan's coincident letters (``π,o,c``: no spaces, no brackets)?"""
+    parts = tex.split(",")
+    return len(parts) > 1 and all(p and not any(ch in p for ch in " (){}[]") for p in parts)
+
+
 def _mathtext(tex: str) -> str:
-    """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
-    if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
+    """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain. A
+    list of coincident letters is set like any other (``π,o,c`` as «π, o, c», as ``a,s_{2}``)."""
+    if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()) or _letters_list(tex):
         tex = active().localize_latex(tex)      # the note's language: F_{\\text{и}1} → F_{\\text{i}1}
         tex = tex.replace("\\text{", "\\mathrm{")
         tex = tex.replace("'_{", "^{\\prime}_{")     # mathtext sets F'_{и2} as F′ then a lowered и2
