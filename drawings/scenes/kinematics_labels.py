@@ -248,9 +248,10 @@ def region_grid(p: Vec, region: Polygon, step: float = ANYWHERE_STEP_MM) -> list
     return sorted(pts, key=lambda q: (round(math.dist(q, p), 6), q))
 
 
-def _leader_crossings(canvas: Canvas, leader: BaseGeometry, end: Vec) -> int:
-    """How many drawn lines ``leader`` crosses on its way, its last ``LEADER_GAP_MM`` at ``end``
-    (the point or vector it names, where that point's own lines meet) left out."""
+def _leader_crossings(canvas: Canvas, leader: BaseGeometry) -> int:
+    """How many drawn lines ``leader`` (from the letters to what it names) crosses on its way, its
+    last ``LEADER_GAP_MM`` (at the point or vector it names, where that point's own lines meet)
+    left out."""
     from shapely.geometry import LineString
     (ax, ay), (bx, by) = list(leader.coords)
     d = math.dist((ax, ay), (bx, by))
@@ -314,7 +315,7 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
         found = free(c)
         if found is None:
             continue
-        n = _leader_crossings(canvas, LineString(found), found[1])
+        n = _leader_crossings(canvas, LineString(found))
         if n == 0:
             return draw(c, *found)
         if best is None or n < best[0]:
