@@ -30,7 +30,7 @@ def _hatched_view(tmp_path):
     y = p[1] - HATCH_HALF
     while y <= p[1] + HATCH_HALF:
         view.layout.add_line((p[0] - HATCH_HALF, y), (p[0] + HATCH_HALF, y))
-        view.annotations.add_obstacle(LineString([(p[0] - HATCH_HALF, y), (p[0] + HATCH_HALF, y)]), view.name)
+        view.annotations.add_obstacle(LineString([(p[0] - HATCH_HALF, y), (p[0] + HATCH_HALF, y)]))
         y += HATCH_STEP
     return sheet, view, p
 
