@@ -89,6 +89,10 @@ Label = Rich | tuple[Rich, ...]
 #: :func:`text_extent`) giving it, or None.
 Names: TypeAlias = "BaseGeometry | Callable[[BaseGeometry], BaseGeometry] | None"
 SEPARATOR = ", "
+#: What a separator takes on the sheet: the comma's own cell (ГОСТ type B, like the measuring font,
+#: gives a comma a letter's advance, most of it blank after the comma: the space a reader needs) —
+#: «π, o, c» five cells wide, not seven (issue 12: the shaper's pole letters found no room).
+SEPARATOR_ADVANCE = ","
 
 
 def _items(label: Label) -> tuple[Rich, ...]:
@@ -107,7 +111,7 @@ def size(label: Label, height: float) -> tuple[float, float, float]:
     items = _items(label)
     small = _smaller(height)
     w = sum(_one_width(r, height) for r in items)
-    w += style.text_width(SEPARATOR, height) * (len(items) - 1)
+    w += style.text_width(SEPARATOR_ADVANCE, height) * (len(items) - 1)
     depth = max(0.35 * height if any(r.sub for r in items) else 0.0,      # the separators' commas descend too
                 descent("".join(r.base for r in items) + (SEPARATOR if len(items) > 1 else ""), height))
     rise = max(0.0, 0.45 * height + small - height) if any(r.sup for r in items) else 0.0
@@ -140,7 +144,7 @@ def draw_rich(canvas: Canvas, center: Vec, label: Label, height: float,
         if k:
             canvas.text_mm((x, y0), SEPARATOR.strip(), height, register=False)
             handles.append(canvas.last_text_handle)
-            x += style.text_width(SEPARATOR, height)
+            x += style.text_width(SEPARATOR_ADVANCE, height)
         canvas.text_mm((x, y0), rich.base, height, register=False)
         handles.append(canvas.last_text_handle)
         xb = x + style.text_width(rich.base, height)
@@ -225,40 +229,98 @@ def spread_around(p: Vec, reach: float, step: float = 2.0) -> list[Vec]:
     return sorted(pts, key=lambda q: (round(math.dist(q, p), 6), q))
 
 
+#: A leader stops this short of the point (or the vector) it names when the lines it crosses are
+#: counted: the vectors that meet there are its own point's, not lines it crosses.
+LEADER_GAP_MM = 0.8
+#: The step (mm) of the grid over the whole region tried last (:func:`place_on_leader`, ``anywhere``).
+ANYWHERE_STEP_MM = 2.5
+
+
+def region_grid(p: Vec, region: Polygon, step: float = ANYWHERE_STEP_MM) -> list[Vec]:
+    """Candidate centres on a square grid of ``step`` mm through ``p`` over the bounds of
+    ``region``, nearest to ``p`` first: the last places a label on a leader is tried at, where
+    the rings round its point are all taken — a free spot anywhere in the view beats a crossed
+    label (issue 12: the shaper's «π, o, c» under a^r)."""
+    x0, y0, x1, y1 = region.bounds
+    i0, i1 = math.floor((x0 - p[0]) / step), math.ceil((x1 - p[0]) / step)
+    j0, j1 = math.floor((y0 - p[1]) / step), math.ceil((y1 - p[1]) / step)
+    pts = [(p[0] + i * step, p[1] + j * step) for i in range(i0, i1 + 1) for j in range(j0, j1 + 1) if i or j]
+    return sorted(pts, key=lambda q: (round(math.dist(q, p), 6), q))
+
+
+def _leader_crossings(canvas: Canvas, leader: BaseGeometry) -> int:
+    """How many drawn lines ``leader`` (from the letters to what it names) crosses on its way, its
+    last ``LEADER_GAP_MM`` (at the point or vector it names, where that point's own lines meet)
+    left out."""
+    from shapely.geometry import LineString
+    (ax, ay), (bx, by) = list(leader.coords)
+    d = math.dist((ax, ay), (bx, by))
+    if d <= LEADER_GAP_MM:
+        return 0
+    t = (d - LEADER_GAP_MM) / d
+    return canvas.annotations.crossings(LineString([(ax, ay), (ax + (bx - ax) * t, ay + (by - ay) * t)]))
+
+
 def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: Label, height: float,
                     inside: Polygon | None = None, names: BaseGeometry | None = None,
-                    to: BaseGeometry | None = None) -> Polygon | None:
+                    to: BaseGeometry | None = None, anywhere: bool = False) -> Polygon | None:
     """``label`` away from the point ``p`` (sheet mm) on a thin leader to it (or to the nearest point
     of ``to``, its vector): the first candidate centre whose box overlaps no text, crosses no drawn
     line and stays ``inside``, and whose leader crosses no text; the leader is drawn and kept as a
     line that later labels keep clear of. What the label names is the leader with ``names`` (its
-    vector). None where no candidate is free."""
+    vector). ``anywhere`` (with ``inside``): where no candidate is free, the nearest free spot of
+    the whole region (:func:`region_grid`) whose leader crosses the fewest drawn lines. None where
+    no spot is free."""
     from shapely.geometry import LineString, Point
     from shapely.ops import nearest_points
     boxes = [b for _, b in canvas.annotations.boxes]
     tree = shapely.STRtree(boxes) if boxes else None
-    for c in candidates:
+
+    def free(c: Vec) -> tuple[Vec, Vec] | None:
+        """The leader (foot at the letters, end at the point) of a label centred at ``c``, if its
+        box and its leader are free."""
         poly = rich_box(label, c, height)
         if inside is not None and not inside.contains(poly):
-            continue
+            return None
         if tree is not None and any(poly.intersection(boxes[j]).area > AREA_EPS_MM2 for j in tree.query(poly)):
-            continue
+            return None
         if canvas.annotations.crossings(poly):
-            continue
+            return None
         letters = text_extent(label, c, height)          # the leader touches a letter, not a gap
         q0, q1 = nearest_points(letters, Point(p) if to is None else to)
         foot, end = (q0.x, q0.y), (p if to is None else (q1.x, q1.y))
         if math.dist(foot, end) < MM_ROUNDOFF:
-            continue
+            return None
         leader = LineString([foot, end])
         if tree is not None and any(leader.intersects(boxes[j]) for j in tree.query(leader)):
-            continue
+            return None
+        return foot, end
+
+    def draw(c: Vec, foot: Vec, end: Vec) -> Polygon:
+        leader = LineString([foot, end])
         named = leader if names is None else leader.union(names)
         drawn = draw_rich(canvas, c, label, height, named)
         canvas.layout.add_line(foot, end, dxfattribs={"layer": "thin"})
         canvas.annotations.add_obstacle(leader)
         return drawn
-    return None
+
+    for c in candidates:
+        found = free(c)
+        if found is not None:
+            return draw(c, *found)
+    if not anywhere or inside is None:
+        return None
+    best: tuple[int, Vec, Vec, Vec] | None = None
+    for c in region_grid(p, inside):
+        found = free(c)
+        if found is None:
+            continue
+        n = _leader_crossings(canvas, LineString(found))
+        if n == 0:
+            return draw(c, *found)
+        if best is None or n < best[0]:
+            best = (n, c, *found)
+    return draw(best[1], best[2], best[3]) if best is not None else None
 
 
 def around(p: Vec, rich: Label, height: float, prefer_deg: float = 45.0,
@@ -329,7 +391,7 @@ def _extent_boxes(label: Label, center: Vec, height: float) -> list[tuple[float,
     for k, rich in enumerate(_items(label)):
         if k:
             piece(x, y0, SEPARATOR.strip(), height)
-            x += style.text_width(SEPARATOR, height)
+            x += style.text_width(SEPARATOR_ADVANCE, height)
         piece(x, y0, rich.base, height)
         xb = x + style.text_width(rich.base, height)
         if rich.sup:
@@ -368,8 +430,9 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
     """A point's letter: beside ``p`` (within LABEL_NEAR_MM, nearer to it than to the ``others``)
     where it overlaps no text and crosses no line, then crossing up to ``cross`` lines (0: a letter
     is never crossed by a line, issue 12); where no such spot is free, farther out (``far_gaps``) on
-    a thin leader from the point (the leader is part of what it names); else beside it, overlapping
-    the fewest. ``avoid``: see :func:`place_passes`."""
+    a thin leader from the point (the leader is part of what it names; with ``cross`` 0 anywhere in
+    ``inside``, :func:`place_on_leader`); else beside it, overlapping the fewest (with ``cross`` 0
+    only where the whole region has no free spot). ``avoid``: see :func:`place_passes`."""
     from shapely.geometry import LineString, Point
     from reportgen.tolerances import LABEL_NEAR_MM
     near = own_point(around(p, label, height, prefer_deg, gaps=(0.6, 1.5, 3.0, 4.5, 6.0)),
@@ -378,11 +441,14 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
                         names=Point(p), avoid=avoid, strict=cross == 0) if near else None
     if poly is not None:
         return poly
-    if cross == 0:
+    if cross == 0:                  # never crossed: on a leader, anywhere in the region if need be
         poly = place_on_leader(canvas, p, around(p, label, height, prefer_deg, gaps=(6.0, 8.0, 11.0, 14.0, 18.0))
-                               + spread_around(p, 30.0), label, height, inside)
+                               + spread_around(p, 30.0), label, height, inside, anywhere=True)
         if poly is not None:
             return poly
+        fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
+        return place_passes(canvas, [(fallback, 0), (fallback, 1)], label, height, inside, optional,
+                            names=Point(p), avoid=avoid)
     leader: list = []
 
     def named(letters: BaseGeometry):
@@ -393,6 +459,7 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
     poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named, avoid=avoid)
     if poly is not None:
         canvas.layout.add_line(leader[0], p, dxfattribs={"layer": "thin"})
+        canvas.annotations.add_obstacle(LineString([leader[0], p]))     # later labels keep off it
         return poly
     fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
     return place_passes(canvas, [(fallback, 0), (fallback, 1)], label, height, inside, optional,

@@ -25,7 +25,7 @@ from reportgen.scenes import positions
 from reportgen.scenes.positions import BLOCK_MM, SchemeData
 from reportgen.scenes.scales import GOST_SCALES, gost_scale  # noqa: F401  (re-exported for the sheet)
 from reportgen.scenes.scene import Polyline, Scene, Segment
-from reportgen.tolerances import ABS_ROUNDOFF, RTOL_EQUAL
+from reportgen.tolerances import ABS_ROUNDOFF, MM_ROUNDOFF, RTOL_EQUAL
 
 from ..words import tr
 #: Link numbers: radius of the circle, text height, mm.
@@ -366,6 +366,8 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
                 best = (score, c, foot)
             if score == (0, 0) or (best[0][0] == 0 and foot is not None):
                 break
+        if best is None or best[0][0] != 0:      # on the links wherever beside it: anywhere, on a leader
+            best = _link_number_anywhere(view, project, data, k, square, off_links) or best
         if best is None:
             continue
         _, c, foot = best
@@ -378,6 +380,53 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
         view.text_mm(c, str(k), h, "center", register=False, names=named)
         ann.add_box(f"{view.name}: «{k}»", Polygon([(c[0] - r, c[1] - r), (c[0] + r, c[1] - r),
                                                    (c[0] + r, c[1] + r), (c[0] - r, c[1] + r)]))
+
+
+def _link_number_anywhere(view: View, project: Project, data: SchemeData, k: int, square, off_links):
+    """Link ``k``'s number where no spot beside its link nor on a short leader keeps off every
+    position's links (a crank inside the fan of a slotted link's twelve positions): the nearest
+    spot of the scheme's view (:func:`drawings.scenes.kinematics_labels.region_grid`) whose circle
+    is off the links, over no text and crossed by no line, on a leader to the middle half of the
+    link that crosses no text and passes no joint, of the nearest ``ANYWHERE_SPOTS`` such spots the shortest for the
+    lines it crosses —
+    ((0, 0), centre, foot), or None where the view has no such spot."""
+    r = LINK_NUMBER_MM[0]
+    link = _link_lines(view, project, data, k)
+    if isinstance(link, MultiLineString):      # the leader meets the link's middle, not a joint it shares
+        link = MultiLineString([LineString([(a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t) for t in (0.25, 0.75)])
+                                for a, b in (tuple(g.coords) for g in link.geoms)])
+    mid = link.centroid
+    joints = [ShapelyPoint(view.transform(tuple(q))) for q in _pts(data.kin, data.analysed).values()]
+    ann = view.annotations
+    inside = _inside(view)
+    best: tuple[float, tuple[float, float], tuple[float, float]] | None = None
+    free = 0
+    for c in rl.region_grid((mid.x, mid.y), inside, step=2.0):
+        sq = square(c)
+        if not inside.contains(sq) or ann.hits_box(sq) or not off_links(sq) or ann.crossings(sq):
+            continue
+        q = nearest_points(link, ShapelyPoint(c))[0]
+        foot = (q.x, q.y)
+        if math.dist(c, foot) <= r + MM_ROUNDOFF:
+            continue
+        leader = LineString([_circle_edge(c, foot, r), foot])
+        if ann.hits_box(leader.buffer(0.2)) or any(j.distance(leader) < JOINT_CLEAR_MM for j in joints):
+            continue                             # a leader past a joint would name what meets there
+        n = ann.crossings(leader) - 1            # the leader meets its own link
+        cost = leader.length + LEADER_CROSSING_MM * n
+        if best is None or cost < best[0]:
+            best = (cost, c, foot)
+        free += 1
+        if free >= ANYWHERE_SPOTS:
+            break
+    return ((0, 0), best[1], best[2]) if best is not None else None
+
+
+#: Of the free spots anywhere in the scheme's view, the nearest this many are compared for the
+#: shortest leader, each line it crosses counted as ``LEADER_CROSSING_MM`` more of it.
+ANYWHERE_SPOTS, LEADER_CROSSING_MM = 60, 4.0
+#: Such a leader keeps this far (mm) from every joint of the analysed position.
+JOINT_CLEAR_MM = 2.5
 
 
 def _circle_edge(c: tuple[float, float], towards: tuple[float, float], r: float) -> tuple[float, float]:

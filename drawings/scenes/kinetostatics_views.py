@@ -302,7 +302,8 @@ def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tup
     is taken, farther out on a thin leader to the vector's middle (the leader is part of what ties
     it to its vector); else beside it, overlapping the fewest. ``uncrossed`` (sheet 2's views): a
     name beside its vector crossed by a line is taken only after a leader whose box and leader cross
-    nothing (issue 12: «Fур» on the lever crossed by the coupler's image)."""
+    nothing (issue 12: «Fур» on the lever crossed by the coupler's image), anywhere in ``inside``
+    if need be (:func:`drawings.scenes.kinematics_labels.place_on_leader`)."""
     line = LineString([a, b])
     passes = near_passes(a, b, rich, height, rivals)
     if uncrossed:
@@ -312,7 +313,8 @@ def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tup
         mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
         normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
         if rl.place_on_leader(view, mid, rl.around(mid, rich, height, normal, gaps=LEADER_GAPS_MM)
-                              + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line) is not None:
+                              + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line,
+                              anywhere=True) is not None:
             return
     if rl.place_passes(view, passes, rich, height, inside=inside, optional=True, names=line) is not None:
         return

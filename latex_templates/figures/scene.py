@@ -92,9 +92,16 @@ def fixed_text(lb: Label, scene: Scene | None = None) -> str:
     return f"{letter} ({gost_scales.Scale.parse(ratio).text(decimal_mark())})" if ratio else letter
 
 
+def _letters_list(tex: str) -> bool:
+    """Is ``tex`` a list of a plan's coincident letters (``π,o,c``: no spaces, no brackets)?"""
+    parts = tex.split(",")
+    return len(parts) > 1 and all(p and not any(ch in p for ch in " (){}[]") for p in parts)
+
+
 def _mathtext(tex: str) -> str:
-    """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain."""
-    if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()):
+    """A label's TeX (``a^{n}_{BA}``, ``S_{2}``) as matplotlib mathtext; plain words stay plain. A
+    list of coincident letters is set like any other (``π,o,c`` as «π, o, c», as ``a,s_{2}``)."""
+    if any(ch in tex for ch in "_^\\") or (tex.isalpha() and tex.isascii()) or _letters_list(tex):
         tex = active().localize_latex(tex)      # the note's language: F_{\\text{и}1} → F_{\\text{i}1}
         tex = tex.replace("\\text{", "\\mathrm{")
         tex = tex.replace("'_{", "^{\\prime}_{")     # mathtext sets F'_{и2} as F′ then a lowered и2
@@ -310,14 +317,16 @@ def _leader_end(lb: Label, box) -> tuple[tuple[float, float], tuple[float, float
 
 def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray, gap: float,
            lines: "_Segments | list | None" = None, others: list | None = None, rivals: list | None = None,
-           uncrossed: bool = False, leaders: list | None = None):
+           uncrossed: bool = False, leaders: list | None = None,
+           region: tuple[float, float, float, float] | None = None):
     """A box for ``lb`` beside its anchor that hits no placed box: around a point (away from the
     scene's middle first, nearest first, and nearer to it than to any of the ``others``), or
     beside the middle of a vector on either side; where every such box hits one, farther out on a
     leader. ``uncrossed`` (the scenes of :data:`OWN_VECTOR_SCENES`, issue 12): a box crossed by a
     line (or by a leader already drawn, ``leaders``) is taken only when no box beside the anchor
-    and none on a leader (whose leader crosses no placed box) is free. Returns (centre, box, on a
-    leader)."""
+    and none on a leader (whose leader crosses no placed box) is free — on a leader, the nearest
+    free spot of ``region`` (the scene's bounds, scene mm) widened by the label's size, beyond which
+    nothing is drawn: a free spot always exists. Returns (centre, box, on a leader)."""
     w, h = size
     point = lb.role != "vector" or lb.along is None
     cands: list[tuple[float, float]] = []
@@ -364,6 +373,8 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                        if 0 < math.hypot(i, j) * step <= reach),
                       key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q))
         passes.append((grid, True))
+        if region is not None:     # the last: anywhere round the drawing (issue 12: never a crossed name)
+            passes.append((_region_grid((px, py), region, w, h, step), True))
     first = None
     for group, leader in passes:
         best = None
@@ -395,6 +406,19 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
         return first
     c = cands[0]
     return c, (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2), lb.leader
+
+
+def _region_grid(p: tuple[float, float], region: tuple[float, float, float, float], w: float, h: float,
+                 step: float) -> list[tuple[float, float]]:
+    """Centres on a grid of ``step`` through ``p`` over ``region`` widened by a label's width ``w``
+    and height ``h`` on each side (boxes wholly outside the drawing are among them), nearest
+    first."""
+    x0, y0, x1, y1 = region[0] - w - step, region[1] - h - step, region[2] + w + step, region[3] + h + step
+    px, py = p
+    i0, i1 = math.floor((x0 - px) / step), math.ceil((x1 - px) / step)
+    j0, j1 = math.floor((y0 - py) / step), math.ceil((y1 - py) / step)
+    return sorted(((px + i * step, py + j * step) for i in range(i0, i1 + 1) for j in range(j0, j1 + 1) if i or j),
+                  key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q))
 
 
 def anchor_distance(lb: Label, b) -> float:
@@ -434,6 +458,7 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
         boxes.append(b)
         out.append((lb, c, PlacedLabel(lb.text, lb.anchor, b, 0.0, False)))
     uncrossed = scene.name.startswith(OWN_VECTOR_SCENES)
+    region = scene.bounds()
     leaders: list = []
     order = list(enumerate(scene.labels))
     if uncrossed:            # the points' letters first: a vector's name keeps clear of their leaders
@@ -442,7 +467,7 @@ def place_labels(scene: Scene, r: float, roles: tuple[str, ...],
         if lb.role not in roles or lb.role in FIXED_ROLES:
             continue
         size = sizes[i] if sizes is not None and i in sizes else _text_size(lb.text, h)
-        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others, rivals, uncrossed, leaders)
+        c, b, leader = _place(lb, size, boxes, centre, gap, lines, others, rivals, uncrossed, leaders, region)
         boxes.append(b)
         if leader:
             leaders.append(_leader_end(lb, b))

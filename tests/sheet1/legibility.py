@@ -23,8 +23,12 @@ from reportgen.taskfile import load_task
 from labels.readback import TOUCH_MM, sheet_texts
 
 ROOT = Path(__file__).resolve().parents[2]
-#: Every course example with a linkage (sheet 1), and a crank–rocker no example has.
-CASES = ("press", "shaper", "conveyor", "crank-slider", "class3", "press-en", "shaper-uk", "rocker")
+#: Every course example with a linkage (sheet 1), a crank–rocker and a shaper with a short crank
+#: (tests/data) that no example has.
+CASES = ("press", "shaper", "conveyor", "crank-slider", "class3", "press-en", "shaper-uk", "rocker",
+         "shaper-short-crank")
+#: The cases that are task files of tests/data (mechanisms no example has).
+DATA = ROOT / "tests" / "data"
 #: The smallest letter a teacher reads on an A1 sheet (ГОСТ 2.304 size 3,5).
 MIN_LETTER_MM = 3.5
 
@@ -46,7 +50,12 @@ def rocker_task(folder: Path) -> Path:
 
 
 def project_of(case: str, folder: Path) -> Project:
-    task = rocker_task(folder) if case == "rocker" else ROOT / "examples" / case / "task.toml"
+    if case == "rocker":
+        task = rocker_task(folder)
+    elif (DATA / f"{case}.toml").is_file():
+        task = DATA / f"{case}.toml"
+    else:
+        task = ROOT / "examples" / case / "task.toml"
     return Project(load_task(task))
 
 
