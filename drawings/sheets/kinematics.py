@@ -91,7 +91,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     else:
         sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     k, scale_text = layout.k, layout.ratio
-    scheme = place_scheme_view(sheet, b, k, layout.rects["scheme"])
+    scheme = place_scheme_view(sheet, b, k, layout.rects["scheme"], layout.scheme_origin)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
     sheet.set_scale(scale_text)
     if control:
@@ -165,10 +165,11 @@ def layout_plans(sheet: Sheet, layout: SheetLayout, small_of) -> Arrangement:
     return found
 
 
-def place_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float, rect: Rect) -> View:
-    """The scheme's view in the core's ``rect``: model bounds ``b`` at ``k`` mm per metre,
-    ``SCHEME_PADS_MM`` from its lower-left corner."""
-    left, bottom, _, _ = SCHEME_PADS_MM
+def place_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float, rect: Rect,
+                      origin: tuple[float, float] = SCHEME_PADS_MM[:2]) -> View:
+    """The scheme's view in the core's ``rect``: model bounds ``b`` at ``k`` mm per metre, their
+    lower-left corner ``origin`` from the view's (the core's ``SheetLayout.scheme_origin``)."""
+    left, bottom = origin
     return sheet.place_view("scheme", rect, Transform(k, (b[0], b[1]), (rect.x0 + left, rect.y0 + bottom)))
 
 

@@ -23,7 +23,8 @@ from ..errors import BuildError
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
-                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM, SCHEME_PADS_MM, SHEET_MM, TABLE_ROW_MM,
+                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MM, SCHEME_MIN_WIDTH_MM,
+                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, TABLE_ROW_MM,
                     TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
 
@@ -194,11 +195,41 @@ def _grow(region, blocks: list[Block], rects: list[Rect], placed: list[Rect]) ->
 # the views' sizes and the whole sheet at one scale
 
 
+@dataclass(frozen=True)
+class SchemeView:
+    """The scheme's view: its size and where the model's lower-left bound (``b[0], b[1]``) stands
+    from the view's lower-left corner, mm (the sheet places the drawing there)."""
+    width: float
+    height: float
+    origin: tuple[float, float]
+
+
 def scheme_view_size(b: tuple[float, float, float, float], k: float, min_width: float = 0.0) -> tuple[float, float]:
-    """The scheme's view: model bounds ``b`` (m) at ``k`` mm per metre with ``SCHEME_PADS_MM``
+    """Sheet 1's scheme view: model bounds ``b`` (m) at ``k`` mm per metre with ``SCHEME_PADS_MM``
     round them (more below for the scale caption, above for the title), at least ``min_width``."""
-    left, bottom, right, top = SCHEME_PADS_MM
-    return max((b[2] - b[0]) * k + left + right, min_width), (b[3] - b[1]) * k + bottom + top
+    view = scheme_view(b, k, min_width)
+    return view.width, view.height
+
+
+def scheme_view(b: tuple[float, float, float, float], k: float, min_width: float = 0.0,
+                drawn: tuple[float, float, float, float] | None = None) -> SchemeView:
+    """The scheme's view at ``k`` mm per metre, model bounds ``b`` (m). Sheet 1 (``drawn`` None):
+    ``SCHEME_PADS_MM`` round the model bounds (the crank angles, the stroke). The control work's
+    scheme (``drawn``: what its scene draws, ``Scene.bounds`` in mm — the bounds with the hinges,
+    pivots, guides and blocks): ``SCHEME_LETTERS_MM`` round that for the letters and the links'
+    numbers, the title's and the caption's strips above and below. At least ``min_width`` wide,
+    the drawing centred in the extra width."""
+    if drawn is None:
+        left, bottom, right, top = SCHEME_PADS_MM
+        w = (b[2] - b[0]) * k + left + right
+        extra = max(min_width - w, 0.0)
+        return SchemeView(w + extra, (b[3] - b[1]) * k + bottom + top, (left, bottom))
+    m = SCHEME_LETTERS_MM
+    w = drawn[2] - drawn[0] + 2 * m
+    h = drawn[3] - drawn[1] + 2 * m + SCHEME_TITLE_STRIP_MM + SCHEME_CAPTION_STRIP_MM
+    extra = max(min_width - w, 0.0)
+    origin = (b[0] * k - drawn[0] + m + extra / 2, b[1] * k - drawn[1] + m + SCHEME_CAPTION_STRIP_MM)
+    return SchemeView(w + extra, h, origin)
 
 
 def plan_view_size(plan, title_mm: float, min_width: float = PLAN_MIN_WIDTH_MM) -> tuple[float, float]:
@@ -241,6 +272,8 @@ class SheetLayout:
     plan_sizes: tuple[tuple[float, float], ...]
     names: tuple[tuple[str, str], ...]
     table_rows: int
+    #: where the model's lower-left bound stands from the scheme view's lower-left corner, mm
+    scheme_origin: tuple[float, float] = SCHEME_PADS_MM[:2]
 
     @property
     def field(self) -> BaseGeometry:
@@ -262,7 +295,9 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     fmt = control or "A1"
     lang = task.document.language
     region = free_field(*SHEET_MM[fmt])
-    scheme = Request("scheme", *scheme_view_size(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0), "top-left")
+    drawn = project.scenes.positions_at(k, ratio).bounds() if control else None
+    view = scheme_view(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0, drawn)
+    scheme = Request("scheme", view.width, view.height, "top-left")
     second: list[tuple[Request, ...]] = []   # the second view, in the corners to try
     diagrams = None
     if control:
@@ -299,7 +334,8 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
         found = arrange(region, placed, sizes, names)
         if found is not None:
             rects.update(found.rects)
-            return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows)
+            return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows,
+                               view.origin)
     return None
 
 

@@ -47,8 +47,12 @@ class Scenes:
         return (found.k, found.ratio) if found is not None else self.positions_scales[0]
 
     def positions_at(self, k: float, ratio: str) -> Scene:
-        """The plan of positions at another scale."""
-        return positions_scene(self.project, self.scheme_data, k, ratio)
+        """The plan of positions at another scale (each built once: the arrangement measures the
+        control work's scheme at every scale it tries, the sheet draws the chosen one)."""
+        cache = self.__dict__.setdefault("_positions_at", {})
+        if (k, ratio) not in cache:
+            cache[(k, ratio)] = positions_scene(self.project, self.scheme_data, k, ratio)
+        return cache[(k, ratio)]
 
     @cached_property
     def positions(self) -> Scene:
