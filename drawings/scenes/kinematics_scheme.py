@@ -359,7 +359,7 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
         spots += [(c, foot) for c, foot in _link_number_leader_spots(view, project, data, k, data.analysed)]
         for c, foot in spots:
             sq = square(c)
-            if not inside.contains(sq) or ann.hits_box(sq):
+            if not inside.contains(sq) or ann.hits_box(ShapelyPoint(c).buffer(r + TEXT_GAP_MM, 16)):
                 continue
             if foot is not None:
                 leader = LineString([_circle_edge(c, foot, r), foot])
@@ -397,6 +397,8 @@ def _circle_edge(c: tuple[float, float], towards: tuple[float, float], r: float)
 
 #: Distances of a link number on a leader from its link, mm (where none beside it is off the links).
 LINK_LEADER_MM = (9.0, 12.0, 16.0, 20.0, 25.0)
+#: A link number's circle keeps this far from every text, mm.
+TEXT_GAP_MM = 1.0
 #: A link number's leader crossing another's counts as this many crossed lines.
 LEADER_TANGLE = 3
 

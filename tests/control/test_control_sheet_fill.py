@@ -40,6 +40,7 @@ TABLES = range(1, 23)
 TEXTS_APART_MM = 1.0
 #: What a view draws reaches at most this far beyond its rectangle, mm (the frame does, across the sheet).
 REACH_MM = 20.0
+INK = False
 
 
 def control_task(folder, number: int, variant: int = 1, sheet: str = "A3"):
@@ -109,7 +110,7 @@ def larger_findings(project, drawn, doc) -> list[str]:
     for name, view in drawn.views.items():
         if name == "scheme":
             continue
-        other = view_ink(doc, view.rect)
+        other = view_ink(doc, view.rect) if INK else (view.rect.x0, view.rect.y0, view.rect.x1, view.rect.y1)
         if other is not None:
             region = region.difference(box(*other).buffer(VIEW_GAP, join_style="mitre"))
     if fits(region, width, height):
