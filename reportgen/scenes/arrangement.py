@@ -23,7 +23,8 @@ from ..errors import BuildError
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
-                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MM, SCHEME_MIN_WIDTH_MM,
+                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MIN_MM, SCHEME_LETTERS_MM,
+                    SCHEME_MIN_WIDTH_MM,
                     SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, TABLE_ROW_MM,
                     TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
@@ -212,24 +213,37 @@ def scheme_view_size(b: tuple[float, float, float, float], k: float, min_width: 
 
 
 def scheme_view(b: tuple[float, float, float, float], k: float, min_width: float = 0.0,
-                drawn: tuple[float, float, float, float] | None = None) -> SchemeView:
+                drawn: tuple[float, float, float, float] | None = None,
+                lettered: Sequence[tuple[float, float]] = ()) -> SchemeView:
     """The scheme's view at ``k`` mm per metre, model bounds ``b`` (m). Sheet 1 (``drawn`` None):
     ``SCHEME_PADS_MM`` round the model bounds (the crank angles, the stroke). The control work's
     scheme (``drawn``: what its scene draws, ``Scene.bounds`` in mm — the bounds with the hinges,
-    pivots, guides and blocks): ``SCHEME_LETTERS_MM`` round that for the letters and the links'
-    numbers, the title's and the caption's strips above and below. At least ``min_width`` wide,
-    the drawing centred in the extra width."""
+    pivots, guides and blocks; ``lettered``: its letters' points, mm): on each side the room its
+    letters need (:func:`letters_room`), the title's and the caption's strips above and below. At
+    least ``min_width`` wide, the drawing centred in the extra width."""
     if drawn is None:
         left, bottom, right, top = SCHEME_PADS_MM
         w = (b[2] - b[0]) * k + left + right
         extra = max(min_width - w, 0.0)
         return SchemeView(w + extra, (b[3] - b[1]) * k + bottom + top, (left, bottom))
-    m = SCHEME_LETTERS_MM
-    w = drawn[2] - drawn[0] + 2 * m
-    h = drawn[3] - drawn[1] + 2 * m + SCHEME_TITLE_STRIP_MM + SCHEME_CAPTION_STRIP_MM
+    left, bottom, right, top = letters_room(drawn, lettered)
+    w = drawn[2] - drawn[0] + left + right
+    h = drawn[3] - drawn[1] + bottom + top + SCHEME_TITLE_STRIP_MM + SCHEME_CAPTION_STRIP_MM
     extra = max(min_width - w, 0.0)
-    origin = (b[0] * k - drawn[0] + m + extra / 2, b[1] * k - drawn[1] + m + SCHEME_CAPTION_STRIP_MM)
+    origin = (b[0] * k - drawn[0] + left + extra / 2, b[1] * k - drawn[1] + bottom + SCHEME_CAPTION_STRIP_MM)
     return SchemeView(w + extra, h, origin)
+
+
+def letters_room(drawn: tuple[float, float, float, float], lettered: Sequence[tuple[float, float]]
+                 ) -> tuple[float, float, float, float]:
+    """Room beyond the drawing ``drawn`` (mm) for the letters at the points ``lettered``: left,
+    bottom, right, top — on each side what the point nearest to it needs for a letter reaching
+    ``SCHEME_LETTERS_MM`` from it, at least ``SCHEME_LETTERS_MIN_MM``."""
+    def need(distances: Iterable[float]) -> float:
+        return max([SCHEME_LETTERS_MIN_MM, *(SCHEME_LETTERS_MM - d for d in distances)])
+    x0, y0, x1, y1 = drawn
+    return (need(p[0] - x0 for p in lettered), need(p[1] - y0 for p in lettered),
+            need(x1 - p[0] for p in lettered), need(y1 - p[1] for p in lettered))
 
 
 def plan_view_size(plan, title_mm: float, min_width: float = PLAN_MIN_WIDTH_MM) -> tuple[float, float]:
@@ -295,8 +309,12 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     fmt = control or "A1"
     lang = task.document.language
     region = free_field(*SHEET_MM[fmt])
-    drawn = project.scenes.positions_at(k, ratio).bounds() if control else None
-    view = scheme_view(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0, drawn)
+    if control:
+        scene = project.scenes.positions_at(k, ratio)
+        view = scheme_view(b, k, SCHEME_MIN_WIDTH_MM[fmt], scene.bounds(),
+                           [lb.at for lb in scene.labels if lb.role == "point"])
+    else:
+        view = scheme_view(b, k)
     scheme = Request("scheme", view.width, view.height, "top-left")
     second: list[tuple[Request, ...]] = []   # the second view, in the corners to try
     diagrams = None
