@@ -40,8 +40,9 @@ def __getattr__(name: str):
         return sheet_title()
     raise AttributeError(name)
 
-#: The small velocity plans: the crank's vector is at most this long, mm.
-SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
+#: The small velocity plans: the crank's vector is at most this long, mm (the core's: it reserves
+#: the table of scales for their μv).
+from reportgen.scenes.boxes import SMALL_PLAN_MM  # noqa: E402
 
 
 def available(project: Project) -> bool:
@@ -242,7 +243,7 @@ def _table_header() -> tuple[str, str, str]:
 
 def _table_widths(candidates: list[list[tuple[str, str, str]]], width: float | None = None) -> tuple[float, ...]:
     """The columns' widths for the longest texts of ``candidates``; with ``width`` (the view the core
-    reserved, ``reportgen.scenes.boxes.SCALES_TABLE_MM``) the name column takes the rest of it."""
+    reserved from the same lines, ``reportgen.scenes.arrangement.scales_table_width``) the name column takes the rest of it."""
     every = [_table_header(), *[r for rows in candidates for r in rows]]
     widths = tuple(max(style.text_width(r[c], 3.5) for r in every) + 5.0 for c in range(3))
     if width is None or width <= sum(widths):

@@ -17,15 +17,16 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Iterable, Mapping, Sequence
 
+import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ..errors import BuildError
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
-                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MIN_MM, SCHEME_LETTERS_MM,
+                    PLAN_TITLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MIN_MM, SCHEME_LETTERS_MM,
                     SCHEME_MIN_WIDTH_MM,
-                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, TABLE_ROW_MM,
+                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, SMALL_PLAN_MM, TABLE_ROW_MM,
                     TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
 
@@ -271,6 +272,41 @@ def table_rows(plans_by_position: Mapping[int, tuple[Any, Any]], small: bool, di
     return 1 + len(v) + len(a) + (1 if small else 0) + (7 if diagrams else 0)
 
 
+def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, language: str | None = None) -> float:
+    """The width (mm) of sheet 1's table «Масштабы» from its own lines — the rows
+    drawings.sheets.kinematics.scale_rows writes: μl with the scheme's ratio, the μv and μa of the
+    plan positions (positions sharing a μ on one line), the small velocity plans' μv (the widest
+    of the crank vectors ``SMALL_PLAN_MM`` the sheet may choose), the ``diagrams``' scales and pole
+    distances — measured as the sheet measures them (:mod:`.lettering`), in ``language`` (default
+    the task's)."""
+    from ..numbers import plain, significant
+    from ..plans import round_scale
+    from .lettering import scales_table_width as width
+    names: list[tuple[str, str]] = [("scheme", ratio)]
+    values: list[tuple[str, str]] = [("value_l", significant(1.0 / k, 4))]
+    for which, one, many, unit in ((0, "vplan", "vplans", "value_v"), (1, "aplan", "aplans", "value_a")):
+        by_mu: dict[str, list[int]] = {}
+        for j, pair in project.plans_by_position.items():
+            by_mu.setdefault(significant(pair[which].scale, 4), []).append(j)
+        for mu, positions in by_mu.items():
+            names.append((one if len(positions) == 1 else many, ", ".join(str(j) for j in sorted(positions))))
+            values.append((unit, mu))
+    if small:
+        kin = project.kinematics
+        v_tip = float(np.hypot(*np.asarray(kin.points[project.linkage.drive_tip].vel[0])))
+        names.append(("small", str(len(project.phi) - 1)))
+        values += [("value_v", significant(round_scale(v_tip, mm), 4)) for mm in SMALL_PLAN_MM]
+    symbols = ["μl", "μv", "μa"]
+    if diagrams is not None:
+        kind = "m" if diagrams.unit == "м" else "rad"        # a slider's s, v, a or a rocker's ψ, ω, ε
+        names += [("phi_axis", ""), ("t_axis", ""), (f"diagrams_{kind}", ""), ("pole", "")]
+        values += [("value_phi", significant(diagrams.mu_phi, 4)), ("value_t", significant(diagrams.mu_t, 4)),
+                   *((f"value_{kind}", significant(mu, 4)) for mu in (diagrams.mu_s, diagrams.mu_v, diagrams.mu_a)),
+                   ("value_mm", plain(diagrams.H1, 1)), ("value_mm", plain(diagrams.H2, 1))]
+        symbols += ["μφ", "μt", "μs", "μψ", "μω", "με", "H1", "H2"]
+    return width(language or project.task.document.language, names, values, symbols)
+
+
 @dataclass(frozen=True)
 class SheetLayout:
     """The sheet's views at the plan of positions' scale ``k`` (mm per metre, ``ratio`` «1:N»):
@@ -330,7 +366,7 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     pairs = project.plans_by_position
     rows = table_rows(pairs, small=not control, diagrams=diagrams is not None)
     # the A3 field has no room for the table: each view prints its scale
-    table = [] if fmt == "A3" else [Request("scales", lettering_room(SCALES_TABLE_MM, lang),
+    table = [] if fmt == "A3" else [Request("scales", scales_table_width(project, k, ratio, diagrams, small=not control),
                                             TABLE_ROW_MM * (rows + 1) + TABLE_TITLE_MM, "bottom-right")]
     a3 = fmt == "A3"
     titles = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)

@@ -172,6 +172,9 @@ PLAN_MIN_WIDTH_A3_MM = 100.0
 #: Zhukovsky's lever's panel: room round the turned plan, the strips of its title, subtitle and
 #: scale captions, mm (drawings.scenes.kinetostatics_views.lever_panel draws in them).
 LEVER_PAD_MM, LEVER_STRIPS_MM = 12.0, 10.0 + 6.0 + 16.0
+#: Sheet 1's small velocity plans: the crank's vector is at most this long, mm (the largest whose
+#: plans find room; drawings.sheets.kinematics.small_plans).
+SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
 #: The table «Масштабы»: a row's height and the strip above it for its title, mm.
 TABLE_ROW_MM, TABLE_TITLE_MM = 8.0, 12.0
 #: Gap between views, and between the two plans of a plan position put together (smaller, so that
@@ -185,15 +188,13 @@ GROW_PLANS_MM = 40.0
 #: drawings.style.text_width and tests/sheet1/test_arrangement_core.py checks every language's
 #: lines fit): a plan view's title at 5 mm + 10 mm (velocity, acceleration: «План ускорений,
 #: положение 2»; on the control work's A3 sheet «План ускорений», the control work's catalogue is
-#: Russian), the lever's
-#: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns; measured on
-#: every example with 1, 2 and 3 plan positions: ru ≤ 199,4, uk ≤ 196,2, en ≤ 228,0 mm).
+#: Russian), the lever's title and subtitle + 4 mm. The table «Масштабы» of sheet 1 is measured from
+#: its own lines (:func:`reportgen.scenes.arrangement.scales_table_width`).
 PLAN_TITLE_MM = {"ru": (133.0, 133.0), "uk": (138.0, 138.0), "en": (138.0, 156.0)}
 #: … and each further digit of the position's number.
 PLAN_TITLE_DIGIT_MM = 4.6
 PLAN_TITLE_A3_MM = {"ru": (75.0, 75.0)}
 LEVER_TITLE_MM = {"ru": 116.0, "uk": 119.0, "en": 106.0}
-SCALES_TABLE_MM = {"ru": 200.0, "uk": 197.0, "en": 229.0}
 
 
 def lettering_room(table, language: str):
