@@ -355,8 +355,7 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     second: list[tuple[Request, ...]] = []   # the second view, in the corners to try
     diagrams = None
     if control:
-        from .lever import lever_scene
-        size = lever_view_size(lever_scene(project.kinetostatics, project.linkage), lettering_room(LEVER_TITLE_MM, lang))
+        size = lever_view_size(project.scenes.lever, lettering_room(LEVER_TITLE_MM, lang))
         second = [(Request("lever", *size, corner),) for corner in LEVER_CORNERS]
     else:
         diagrams = project.output_diagrams
@@ -374,6 +373,8 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
     sizes = [plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
              for j, pair in pairs.items() for plan, title in zip(pair, titles)]
+    if not _may_fit(region, [scheme, *(second[0] if second else ()), *table], sizes):
+        return None
     for other in second or [()]:
         requests = [scheme, *other, *table]
         placed: list[Rect] = []
@@ -391,6 +392,16 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
             return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows,
                                view.origin)
     return None
+
+
+def _may_fit(region, requests: Sequence[Request], sizes: Sequence[tuple[float, float]]) -> bool:
+    """A quick necessary condition before the packing (the control work tries its scales from the
+    whole field down): every view fits the field's extent, and their areas together its area."""
+    x0, y0, x1, y1 = region.bounds
+    views = [(r.width, r.height) for r in requests] + list(sizes)
+    if any(w > x1 - x0 + MM_EPS or h > y1 - y0 + MM_EPS for w, h in views):
+        return False
+    return sum(w * h for w, h in views) <= region.area + MM_EPS
 
 
 #: The smallest drawing of the mechanism worth trying, mm (its larger side): below it the plan of
