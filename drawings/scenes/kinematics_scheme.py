@@ -352,7 +352,9 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
 
     def off_links(sq: Polygon) -> bool:
         return links is None or not links.intersects(sq)
+    from reportgen.tolerances import LABEL_NEAR_MM
     for k in lk.moving:
+        own = _link_lines(view, project, data, k)
         best: tuple[tuple[int, int, int], tuple[float, float], tuple[float, float] | None] | None = None
         spots: list[tuple[tuple[float, float], tuple[float, float] | None]] = [
             (c, None) for c in _link_number_spots(view, project, data, k, data.analysed)]
@@ -370,6 +372,8 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
                 tangled = sum(LEADER_TANGLE for q in leaders if leader.intersects(q))
                 score = (0, ann.crossings(sq), ann.crossings(leader) - 1 + tangled)
             else:
+                if ShapelyPoint(c).distance(own) > LABEL_NEAR_MM - 0.5:
+                    continue                  # beside its link, else on a leader (the label check's reach)
                 score = (0 if off_links(sq) else 2, ann.crossings(sq), 0)
             if best is None or score < best[0]:
                 best = (score, c, foot)
