@@ -119,11 +119,6 @@ class Annotations:
     _obstacles: list[BaseGeometry] = field(default_factory=list)
     _tree: shapely.STRtree | None = None
     labels: list[LabelRecord] = field(default_factory=list)
-    #: What each canvas drew (its ``name``, the line, ring or filled shape in sheet mm): the check
-    #: that no two views' drawings meet (:meth:`drawings.sheet.Sheet.content_overlaps`).
-    drawn: list[tuple[str, BaseGeometry]] = field(default_factory=list)
-    #: The rectangle each view (or part of a view drawn as a canvas of its own) keeps its drawing in.
-    regions: dict[str, Polygon] = field(default_factory=dict)
 
     def add_box(self, name: str, poly: Polygon) -> None:
         self.boxes.append((name, poly))
@@ -131,12 +126,10 @@ class Annotations:
     def add_label(self, record: LabelRecord) -> None:
         self.labels.append(record)
 
-    def add_obstacle(self, geom: BaseGeometry, owner: str | None = None) -> None:
-        """A drawn line (or ring, or filled shape) labels keep off; ``owner``: the canvas that drew it."""
+    def add_obstacle(self, geom: BaseGeometry) -> None:
+        """A drawn line (or ring, or filled shape) labels keep off."""
         self._obstacles.append(geom)
         self._tree = None
-        if owner is not None:
-            self.drawn.append((owner, geom))
 
     def hits_box(self, poly: Polygon) -> int:
         """How many registered text boxes ``poly`` overlaps (touching does not count)."""
@@ -232,9 +225,7 @@ class Canvas:
             self.layout.add_lwpolyline(pts, close=closed, dxfattribs=self._attrs(layer))
         geom = LineString(list(pts) + ([pts[0]] if closed else []))
         if layer != "construction":
-            self.annotations.add_obstacle(geom, self.name)
-        else:
-            self.annotations.drawn.append((self.name, geom))
+            self.annotations.add_obstacle(geom)
 
     def line(self, p: Coords, q: Coords, layer: str = "contour") -> None:
         """A segment between two model points."""
@@ -265,7 +256,7 @@ class Canvas:
         """A circle of ``radius_mm`` sheet millimetres at a model point."""
         c = self.transform(center)
         self.layout.add_circle(c, radius_mm, dxfattribs=self._attrs(layer))
-        self.annotations.add_obstacle(Point(c).buffer(radius_mm).exterior, self.name)
+        self.annotations.add_obstacle(Point(c).buffer(radius_mm).exterior)
 
     def arc(self, center: Coords, radius: float, start_deg: float, end_deg: float,
             layer: str = "contour") -> None:
@@ -277,7 +268,7 @@ class Canvas:
         n = max(int(sweep / 5.0), 2)
         pts = [(c[0] + r * math.cos(math.radians(start_deg + sweep * i / n)),
                 c[1] + r * math.sin(math.radians(start_deg + sweep * i / n))) for i in range(n + 1)]
-        self.annotations.add_obstacle(LineString(pts), self.name)
+        self.annotations.add_obstacle(LineString(pts))
 
     def geometry(self, geom: BaseGeometry, layer: str = "contour") -> None:
         """Emit a shapely geometry (model units): lines as polylines, polygon rings closed."""
@@ -376,7 +367,7 @@ class Canvas:
         left = (bx - uy * width / 2, by + ux * width / 2)
         right = (bx + uy * width / 2, by - ux * width / 2)
         self.layout.add_solid([tip, left, right], dxfattribs=self._attrs(layer))
-        self.annotations.add_obstacle(Polygon([tip, left, right]), self.name)
+        self.annotations.add_obstacle(Polygon([tip, left, right]))
 
     def arrow(self, start: Coords, end: Coords, label: str | None = None,
               layer: str = "vectors", head_mm: float = 5.0, label_height: float = 5.0) -> None:
@@ -429,10 +420,7 @@ class Canvas:
             self.annotations.add_box(f"{self.name}: dim «{shown}»",
                                      text_box(mid, shown, 3.5, "center", angle))
             for q in (a, b):
-                self.annotations.add_obstacle(LineString([q, (q[0] + nx * offset_mm, q[1] + ny * offset_mm)]),
-                                              self.name)
-            self.annotations.drawn.append((self.name, LineString([(a[0] + nx * offset_mm, a[1] + ny * offset_mm),
-                                                                  (b[0] + nx * offset_mm, b[1] + ny * offset_mm)])))
+                self.annotations.add_obstacle(LineString([q, (q[0] + nx * offset_mm, q[1] + ny * offset_mm)]))
         return value
 
     # -- ГОСТ 2.770 kinematic symbols ----------------------------------------------------------

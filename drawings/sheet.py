@@ -15,7 +15,6 @@ import os
 from dataclasses import dataclass, replace
 from typing import Any, Sequence
 
-import shapely
 from ezdxf.document import Drawing
 from shapely.geometry import Polygon, box
 
@@ -162,11 +161,6 @@ def fit_text(text: str, width: float, height: float, *, max_height: float,
 # views
 
 
-#: Text boxes are shrunk by this much (mm) on each side before :meth:`Sheet.content_overlaps`
-#: compares them with another view's drawing.
-CONTENT_TOUCH_MM = 0.25
-
-
 def view_of(owner: str) -> str:
     """The view a canvas belongs to: ``plans_all/3`` (a part drawn as a canvas of its own) → ``plans_all``."""
     return owner.split("/", 1)[0]
@@ -178,8 +172,9 @@ TITLE_MIN_MM = 3.5
 
 class _Recording:
     """A layout that writes into ``layout`` and keeps the handle of every entity added through it
-    (``add_*``) in ``handles``: what a view drew, for the check that no two views' drawings overlap
-    (tests/drawings/test_views_apart.py)."""
+    (``add_*``) in ``handles``: what a view drew, for the checks that no two views' drawings meet
+    and that a view draws within its rectangle (tests/drawings/test_views_apart.py reads the
+    entities back by these handles)."""
 
     def __init__(self, layout: Any, handles: list[str]) -> None:
         self._layout = layout
@@ -202,7 +197,9 @@ class _Recording:
 
 class View(Canvas):
     """A placed view: a :class:`Canvas` whose ``rect`` (sheet mm) is reserved on the sheet;
-    ``handles`` the DXF handles of everything it drew."""
+    ``handles`` the DXF handles of everything it drew (through any canvas on its ``layout``).
+    A part of a view drawn as a view of its own is named ``view/part`` (a small plan's cell,
+    ``plans_all/3``): it is in :attr:`Sheet.all_views`, not in :attr:`Sheet.views`."""
 
     def __init__(self, sheet: "Sheet", name: str, rect: Rect, transform: Transform) -> None:
         self.handles: list[str] = []
@@ -210,7 +207,7 @@ class View(Canvas):
         super().__init__(layout, transform, sheet.annotations, name)
         self.sheet = sheet
         self.rect = rect
-        sheet.annotations.regions[name] = rect.polygon()
+        sheet.all_views[name] = self
 
     def title(self, text: str, height: float = 5.0) -> None:
         """A caption centred above the view (inside its rectangle's top margin). A caption wider
@@ -249,7 +246,10 @@ class Sheet:
         self.extra_rect = Rect(self.frame.x0, self.frame.y1 - EXTRA_H, self.frame.x0 + EXTRA_W,
                                self.frame.y1)
         self.margin = margin
+        #: The views packed on the sheet, by name.
         self.views: dict[str, View] = {}
+        #: Every view and every part of one drawn as a view of its own (``plans_all/3``), by name.
+        self.all_views: dict[str, View] = {}
         self._draw_format()
 
     @classmethod
@@ -332,49 +332,6 @@ class Sheet:
                 area = poly.intersection(vpoly).area
                 if area > AREA_EPS_MM2:
                     found.append(Overlap(name, vname, area))
-        return found
-
-    def content_overlaps(self) -> list[Overlap]:
-        """Where the drawings of two views meet: a line, ring or filled shape one canvas drew (or a
-        text box of it, shrunk by ``CONTENT_TOUCH_MM`` so that texts set edge to edge only touch)
-        intersecting another canvas's. A view's parts drawn as canvases of their own (``view/part``,
-        the small velocity plans' cells) count apart: :meth:`overlaps` compares the views'
-        rectangles and texts only, not what is drawn in them (a plan spilling into the next)."""
-        items: list[tuple[str, Any]] = [(owner, g) for owner, g in self.annotations.drawn]
-        for name, poly in self.annotations.boxes:
-            shrunk = poly.buffer(-CONTENT_TOUCH_MM, join_style=2)
-            if not shrunk.is_empty:
-                items.append((name.split(":", 1)[0], shrunk))
-        if len(items) < 2:
-            return []
-        geoms = [g for _, g in items]
-        left, right = shapely.STRtree(geoms).query(geoms, predicate="intersects")
-        seen: set[tuple[str, str]] = set()
-        found: list[Overlap] = []
-        for i, j in zip(left.tolist(), right.tolist()):
-            a, b = items[i][0], items[j][0]
-            if i >= j or a == b or (min(a, b), max(a, b)) in seen:
-                continue
-            seen.add((min(a, b), max(a, b)))
-            found.append(Overlap(f"view {a}", f"view {b}", geoms[i].intersection(geoms[j]).area))
-        return found
-
-    def content_outside(self, tol_mm: float = CONTENT_TOUCH_MM) -> list[str]:
-        """What a view drew outside its own rectangle (a part drawn as a canvas of its own: outside
-        its part, a small plan's cell) by more than ``tol_mm``: (view, what, how far) as text."""
-        found: list[str] = []
-        items = [(o, g, "line") for o, g in self.annotations.drawn]
-        items += [(n.split(":", 1)[0], b.buffer(-CONTENT_TOUCH_MM, join_style=2), n.split(":", 1)[1].strip())
-                  for n, b in self.annotations.boxes]
-        for owner, geom, what in items:
-            region = self.annotations.regions.get(owner)
-            if region is None or geom.is_empty:
-                continue
-            far = geom.difference(region.buffer(tol_mm, join_style=2))
-            if not far.is_empty:
-                out = max(shapely.points(shapely.get_coordinates(far)), key=region.distance)
-                found.append(f"view {owner}: {what} {region.distance(out):.1f} mm outside at "
-                             f"({out.x:.1f}, {out.y:.1f})")
         return found
 
     # -- output -------------------------------------------------------------------------------

@@ -350,11 +350,13 @@ def _count(ctx: Any, n: float, key: str) -> Tex:
 
 
 @jinja2.pass_context
-def _ratio(ctx: Any, text: str) -> Tex:
-    """A scale's ratio text («2,5:1», «1:2.5» — the core writes either mark) with the note's decimal
-    mark: «2,5:1» in ru/uk, «2.5:1» in en."""
+def _ratio(ctx: Any, scale: Any) -> Tex:
+    """A scale's ratio — a :class:`reportgen.gost_scales.Scale` (or an object with its ``text``,
+    the meshing's DrawingScale) or its text as the core writes it («2,5:1», «1:2.5») — in the note's
+    decimal mark: «2,5:1» in ru/uk, «2.5:1» in en (:meth:`reportgen.gost_scales.Scale.text`)."""
+    from reportgen.gost_scales import Scale
     mark = "," if ctx["s"].raw("format.decimal") == "{,}" else "."
-    return Tex(str(text).replace(",", mark).replace(".", mark))
+    return Tex(scale.text(mark) if hasattr(scale, "text") else Scale.parse(str(scale)).text(mark))
 
 
 @jinja2.pass_context

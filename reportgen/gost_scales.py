@@ -19,13 +19,41 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
+from .errors import ParameterError
 from .tolerances import RTOL_ROUNDOFF
 
 
 class Scale(NamedTuple):
-    """A scale as ``paper:real`` (1:2,5 is ``Scale(1, 2.5)``); a plain ``(paper, real)`` tuple compares equal."""
+    """A scale as ``paper:real`` (1:2,5 is ``Scale(1, 2.5)``); a plain ``(paper, real)`` tuple compares equal.
+
+    :meth:`text` is the one home of a scale's ratio as printed, in a given decimal mark: the note
+    and the sheets call it with their language's mark («1:2,5» in ru/uk, «1:2.5» in en)."""
     paper: float
     real: float
+
+    def text(self, decimal: str = ",") -> str:
+        """«1:2,5», «2,5:1», «200:1» with ``decimal`` as the decimal mark (:func:`label`)."""
+        return label(self, decimal)
+
+    @classmethod
+    def of_factor(cls, k: float) -> "Scale":
+        """The scale of factor ``k`` (drawing length per real length): ``k:1`` for k ≥ 1, else
+        ``1:(1/k)`` (1/k to 6 decimals, so 0.4 gives 1:2,5)."""
+        if not (k > 0 and math.isfinite(k)):
+            raise ParameterError("k", k, "a finite drawing factor > 0")
+        return cls(float(k), 1.0) if k >= 1 else cls(1.0, round(1.0 / k, 6))
+
+    @classmethod
+    def parse(cls, text: str) -> "Scale":
+        """A ratio as the core writes it, «1:2,5» or «2.5:1» (either decimal mark), back to a Scale."""
+        paper, sep, real = str(text).strip().partition(":")
+        try:
+            out = cls(float(paper.replace(",", ".")), float(real.replace(",", ".")))
+        except ValueError:
+            out = None
+        if not sep or out is None or not (out.paper > 0 and out.real > 0):
+            raise ParameterError("scale", text, "a ratio «paper:real» such as 1:2,5 or 2.5:1")
+        return out
 
 
 ENLARGEMENTS: tuple[tuple[float, float], ...] = ((100, 1), (50, 1), (40, 1), (20, 1), (10, 1), (5, 1), (4, 1), (2.5, 1), (2, 1))

@@ -70,3 +70,36 @@ def test_scaled_press_builds(tmp_path, capsys, k, scheme):
     fly = [t for t in (e.dxf.text for e in ezdxf.readfile(sheets[2]).modelspace().query("TEXT"))
            if t.startswith("Эскиз маховика")]
     assert fly and fly[0].split("М ")[-1] in listed
+
+
+def test_a_scale_prints_its_ratio_in_a_given_decimal_mark():
+    """One home for a scale's ratio in the document's mark (issue 12: the English note printed the
+    meshing's «2,5:1»; the note, the sheets and the |ratio filter each patched the core's text with
+    their own ``replace``): Scale.text, and every factor/text the core holds back to its Scale."""
+    assert gost_scales.Scale(1, 2.5).text() == "1:2,5" and gost_scales.Scale(1, 2.5).text(".") == "1:2.5"
+    assert gost_scales.Scale(2.5, 1).text(".") == "2.5:1" and gost_scales.Scale(200, 1).text(".") == "200:1"
+    for s in gost_scales.GOST_2_302:
+        assert gost_scales.Scale.of_factor(gost_scales.factor(s)) == s
+        for mark in (",", "."):
+            text = gost_scales.Scale(*s).text(mark)
+            assert gost_scales.Scale.parse(text) == s
+            assert ("," if mark == "." else ".") not in text
+    for bad in ("2,5", "1:0", ":", "a:b", "1:-2"):
+        with pytest.raises(ValueError, match="scale"):
+            gost_scales.Scale.parse(bad)
+    with pytest.raises(ValueError):
+        gost_scales.Scale.of_factor(0.0)
+
+
+def test_every_renderer_prints_a_ratio_through_the_one_home():
+    """No renderer re-marks a scale's text by hand (``.replace(",", …)`` on a ratio): the meshing's
+    caption, the polygons' detail headings (note and sheet), the planetary sheet and the |ratio
+    filter all go through :meth:`reportgen.gost_scales.Scale.text`."""
+    from reportgen.scenes.meshing import DrawingScale
+    assert DrawingScale(2.5).text(".") == "2.5:1" and DrawingScale(0.4).text() == "1:2,5"
+    assert DrawingScale(0.4).label == "1:2,5"
+    root = ROOT
+    hand = re.compile(r"(ratio\w*|label|scale\w*)\.replace\(")
+    found = [f"{p.relative_to(root)}:{n}" for p in [*root.glob("latex_templates/**/*.py"), *root.glob("drawings/**/*.py")]
+             for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1) if hand.search(line)]
+    assert not found, found

@@ -22,7 +22,7 @@ DIAMETER_MM = 14.0
 
 def scale_text(k: float) -> str:
     """«1:2,5», «1:1», «2:1» for a factor k (sheet mm per real mm) of the ГОСТ 2.302 list."""
-    return gost_scales.label((k, 1.0) if k >= 1 else (1.0, round(1 / k, 6)))
+    return gost_scales.Scale.of_factor(k).text()
 
 
 def sketch_size(fw, k: float, stacked: bool = False) -> tuple[float, float]:

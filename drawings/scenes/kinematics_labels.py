@@ -256,7 +256,7 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
         named = leader if names is None else leader.union(names)
         drawn = draw_rich(canvas, c, label, height, named)
         canvas.layout.add_line(foot, end, dxfattribs={"layer": "thin"})
-        canvas.annotations.add_obstacle(leader, canvas.name)
+        canvas.annotations.add_obstacle(leader)
         return drawn
     return None
 
@@ -393,7 +393,6 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
     poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named, avoid=avoid)
     if poly is not None:
         canvas.layout.add_line(leader[0], p, dxfattribs={"layer": "thin"})
-        canvas.annotations.drawn.append((canvas.name, LineString([leader[0], p])))
         return poly
     fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
     return place_passes(canvas, [(fallback, 0), (fallback, 1)], label, height, inside, optional,

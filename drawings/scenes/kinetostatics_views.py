@@ -20,6 +20,7 @@ from drawings.layout import Rect
 from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
 from ..words import symbol, tr
+from reportgen import gost_scales
 from reportgen.scenes.forces import polygon_scene
 from reportgen.scenes.scene import Arrow as SceneArrow
 from reportgen.scenes.scene import Circle as SceneCircle
@@ -239,7 +240,7 @@ def detail_text(lb) -> str:
     letters = tr("polygons.letters")
     index, _, ratio = lb.text.partition(" ")
     letter = letters[int(index) % len(letters)]
-    return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
+    return f"{letter} ({gost_scales.Scale.parse(ratio).text(decimal_mark())})" if ratio else letter
 
 
 def polygon_view(sheet: Sheet, name: str, title: str, polygon, preferred: str) -> View:

@@ -35,7 +35,7 @@ def draw_meshing(sheet, pair, ms: MeshingScene, rect) -> DrawingScale:
         if lb.role == "zone":
             view.text((lb.at[0] / k, lb.at[1] / k), lb.text, 3.5, "center")
     draw_marks(view, ms.marks)
-    view.text_mm((rect.center[0], rect.y1 - 7), tr("sheets.me01", v1=scale.label.replace(",", decimal_mark())), 5.0, "bottom-center")
+    view.text_mm((rect.center[0], rect.y1 - 7), tr("sheets.me01", v1=scale.text(decimal_mark())), 5.0, "bottom-center")
     view.text_mm((rect.x0 + 2, rect.y0 + 2), tr("sheets.me02"), 3.5, "bottom-left")
     return scale
 

@@ -4,6 +4,7 @@ table of tooth numbers)."""
 from __future__ import annotations
 
 from drawings.words import decimal_mark, tr
+from reportgen import gost_scales
 from reportgen.scenes.planetary import Scene, front_view, merge, plan_scene, sheet_triangle, side_scheme, triangle_scene
 
 
@@ -30,7 +31,7 @@ def draw_reducer(sheet, stage, region) -> None:
     d = stage.design
     tri = sheet_triangle(stage)
     k = tri.length_scale
-    label = tri.scale_label.replace(".", decimal_mark())
+    label = gost_scales.Scale.of_factor(k).text(decimal_mark())
     sheet.set_scale(label)          # «Масштаб» when the reducer is the sheet's main view (no gear pair)
     front = front_view(d, k)
     fx0, fy0, fx1, fy1 = front.bounds()

@@ -20,6 +20,7 @@ import numpy as np
 from matplotlib.patches import Circle as MplCircle
 from matplotlib.patches import Polygon as MplPolygon
 
+from reportgen import gost_scales
 from reportgen.scenes.scene import Arrow, Circle, Label, Polyline, Scene, Segment
 from reportgen.tolerances import ABS_ZERO, MM_ROUNDOFF, RTOL_EQUAL
 
@@ -88,7 +89,7 @@ def fixed_text(lb: Label, scene: Scene | None = None) -> str:
     letters = str(active().raw("polygons.letters"))
     index, _, ratio = lb.text.partition(" ")
     letter = letters[int(index) % len(letters)]
-    return f"{letter} ({ratio.replace(',', decimal_mark())})" if ratio else letter
+    return f"{letter} ({gost_scales.Scale.parse(ratio).text(decimal_mark())})" if ratio else letter
 
 
 def _mathtext(tex: str) -> str:

@@ -140,7 +140,7 @@ def _details(polygon, first: int) -> list:
         names = [Tex(f"${sym(n)}$") for n in d.names]
         key = "polygons.detail" if len(names) > 1 else "polygons.detail_one"
         out.append(tr(key, names=Tex(", ".join(names)), mm=f"{LEGIBLE_MM:g}", letter=letters[d.index % len(letters)],
-                      ratio=d.ratio_text.replace(",", decimal_mark()), mu=d.scale))
+                      ratio=d.drawing_scale.text(decimal_mark()), mu=d.scale))
     return out
 
 
@@ -247,7 +247,7 @@ def content(project) -> PartContent:
         power = None
     warnings = [{"group": gk, "label": by_key[gk].label, "mu": mu} for gk, mu in ks.transmission_deg.items()
                 if mu < WARN_TRANSMISSION_DEG]
-    ctx = {"has_dynamics": project.task.dynamics is not None, "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
+    ctx = {"has_dynamics": project.task.has("dynamics"), "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
            "control": control, "power": power,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,
@@ -309,7 +309,7 @@ def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> 
         return None
     k2 = P.other(k3)
     C, A, n = frame[0].point[0], P.point[0], np.asarray(P.normal[0], float)
-    step = ks.graphical.arm_reading_mm
+    step = ks.graphical.reading_mm
     mu = mu_l.value
     repl = {x.link: x for x in ks.graphical.inertia}
     arrows: list = []

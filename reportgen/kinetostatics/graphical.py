@@ -13,10 +13,10 @@ value from the exact one.
   of the lever μv ((m/s)/mm): the whole turned plan with the feet of the arms within the box of the
   sheet that draws it (:func:`lever_scale`, the plans' series). These are the scales of sheet 2 (of
   the control work's sheet for the lever), so the note and the sheet read the same mm.
-- Measurements: a length read off a plan is rounded to ``reading_mm`` (0.1 mm), an arm on the scheme
-  to ``arm_reading_mm`` (0.01 mm), as a student measures them; the lever's arms and pa, read off the
-  lever drawn on sheet 2 at μv, to ``reading_mm`` — what a drawing is read to (issue 12: the note
-  printed «h₉ = 37,46 мм» off a drawing read to 0,1 mm).
+- Measurements: every length a student reads off a drawing — a side of a polygon, an arm or a
+  length on the scheme (R^τ's and the crank's moment equations, the shift h of Fи′), the lever's arms
+  and pa — is rounded to ``reading_mm`` (:data:`READING_MM`, 0.1 mm): what a drawing is read to
+  (issue 12: the note printed «h₉ = 37,46 мм» and «h₁ = 85,69 мм» off drawings read to 0,1 mm).
 - Inertia: Fи and Mи of a link replaced by one force Fи′ = Fи shifted by h = Mи/Fи (seed 000, 2.2).
 - A dyad (RRR, RRP): each reaction at an outer revolute pair is split into R^τ (square to the line
   from the pair to the inner joint Q) from the moment equation of its link about Q, with arms
@@ -49,9 +49,9 @@ from ..tolerances import RTOL_ROUNDOFF
 
 #: Mantissas of a round scale (:data:`reportgen.scenes.scales.FORCE_SERIES`).
 ROUND_MANTISSAS = FORCE_SERIES
-#: Rounding of lengths read off a plan and of arms measured on a scheme, mm.
+#: Rounding of every length read off a drawing (a polygon's side, an arm or a length on the scheme,
+#: the lever's arms and pa), mm: the one precision of «read off the drawing».
 READING_MM = 0.1
-ARM_READING_MM = 0.01
 #: Fи and Mи are not replaced by one force when h = M/F exceeds this many mechanism lengths.
 REPLACEMENT_LIMIT = 100.0
 
@@ -224,8 +224,7 @@ class LeverGraphic:
 @dataclass(frozen=True)
 class GraphicalReplica:
     length_scale: float        # μL, m/mm
-    reading_mm: float
-    arm_reading_mm: float
+    reading_mm: float          # every length read off a drawing is rounded to this, mm
     inertia: tuple[InertiaReplacement, ...]
     groups: tuple[GroupGraphic, ...]        # in the order solved (last attached first)
     crank: CrankGraphic
@@ -329,7 +328,7 @@ def inertia_replacements(linkage: Linkage, reactions: Reactions, mu_l: float, ar
 
 
 def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactions, lever: Lever, i: int = 0, *,
-                      reading_mm: float = READING_MM, arm_reading_mm: float = ARM_READING_MM,
+                      reading_mm: float = READING_MM,
                       length_scale: float | None = None, boxes: SceneBoxes = DEFAULT_BOXES,
                       lever_box: tuple[float, float] | None = None) -> GraphicalReplica:
     """The whole graphical chain at position ``i`` of ``reactions`` (see the module's docstring);
@@ -339,7 +338,7 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
     pts = np.array([m.pos[i] for m in reactions.kin.points.values()])
     extent = float(np.hypot(*(pts.max(0) - pts.min(0)))) if len(pts) else 1.0
     mu_l = length_scale or round_scale(extent, boxes.scheme_diagonal_mm)
-    repl = inertia_replacements(linkage, reactions, mu_l, arm_reading_mm, i)
+    repl = inertia_replacements(linkage, reactions, mu_l, reading_mm, i)
     box = boxes.polygon if len(structure.groups) <= 2 else boxes.polygon_many
     read: dict[str, np.ndarray] = {}          # canonical reaction name → read vector (lo on hi)
     read_pt: dict[str, np.ndarray] = {}
@@ -374,18 +373,18 @@ def graphical_replica(linkage: Linkage, structure: Structure, reactions: Reactio
         own = {p.name for p in reactions.pairs if p.group == g.key}
         if g.group_class == 2 and g.kind in ("RRR", "RRP"):
             groups_out.append(_dyad(g, reactions, i, items_on, own, read, read_pt, mu_l,
-                                    reading_mm, arm_reading_mm, box))
+                                    reading_mm, box))
         else:
             groups_out.append(_generic(linkage, g, reactions, i, q, items_on, own, read, read_pt, reading_mm, box))
-    crank = _crank(reactions, i, items_on, read, read_pt, mu_l, reading_mm, arm_reading_mm, box)
+    crank = _crank(reactions, i, items_on, read, read_pt, mu_l, reading_mm, box)
     lev = _lever(lever, reactions, i, reading_mm, boxes.lever if lever_box is None else lever_box)
     disc = _deviation(crank.balancing_force_measured, lev.balancing_force_measured)
-    return GraphicalReplica(mu_l, reading_mm, arm_reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
+    return GraphicalReplica(mu_l, reading_mm, tuple(repl[k] for k in sorted(repl)), tuple(groups_out),
                             crank, lev, disc)
 
 
 def _dyad(g: Group, reactions: Reactions, i: int, items_on, own: set[str], read, read_pt, mu_l: float,
-          step: float, arm_step: float, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> GroupGraphic:
+          step: float, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> GroupGraphic:
     a, b = g.links
     inner = next(p for p in g.pairs if not p.external)
     Q = next(r for r in reactions.pairs if r.group == g.key and r.joint == inner.point and r.kind == "R"
@@ -404,8 +403,8 @@ def _dyad(g: Group, reactions: Reactions, i: int, items_on, own: set[str], read,
             e = d / l
             t = perp(e)
             R = ext.on(k)[i]
-            terms, meas_sum = _moment_terms(its, couples, Qp, mu_l, arm_step)
-            l_meas = measure(l / mu_l, arm_step)
+            terms, meas_sum = _moment_terms(its, couples, Qp, mu_l, step)
+            l_meas = measure(l / mu_l, step)
             tau = float(R @ t)
             tau_m = meas_sum / (l_meas * mu_l)
             split = TangentialSplit(pair_name(ext.other(k), k), k, inner.point, _ro(Qp), _ro(P), _ro(e), _ro(t), l,
@@ -528,15 +527,15 @@ def _moment_terms(its, couples: float, centre: np.ndarray, mu_l: float,
 
 
 def _crank(reactions: Reactions, i: int, items_on, read, read_pt, mu_l: float, step: float,
-           arm_step: float, box: tuple[float, float] = DEFAULT_BOXES.polygon) -> CrankGraphic:
+           box: tuple[float, float] = DEFAULT_BOXES.polygon) -> CrankGraphic:
     d = reactions.crank
     fp = next(r for r in reactions.pairs if r.group == str(d))
     its, couples = items_on(d, {fp.name})
     O = fp.point[i]
     A = reactions.balancing_point[i]
     l = float(np.hypot(*(A - O)))
-    terms, meas = _moment_terms(its, couples, O, mu_l, arm_step)
-    l_meas = measure(l / mu_l, arm_step)
+    terms, meas = _moment_terms(its, couples, O, mu_l, step)
+    l_meas = measure(l / mu_l, step)
     M_exact = float(reactions.balancing_moment[i])
     F_exact = M_exact / l
     F_meas = -meas / (l_meas * mu_l)

@@ -113,9 +113,15 @@ class PolygonDetail:
     at: Point
 
     @property
+    def drawing_scale(self) -> gost_scales.Scale:
+        """The detail's ГОСТ 2.302 scale k:1 (its :meth:`~reportgen.gost_scales.Scale.text` prints
+        it in a given decimal mark)."""
+        return gost_scales.Scale(self.ratio, 1.0)
+
+    @property
     def ratio_text(self) -> str:
-        """«5:1», «2,5:1» (ГОСТ 2.302)."""
-        return gost_scales.label((self.ratio, 1.0))
+        """«5:1», «2,5:1» (ГОСТ 2.302, the core's decimal comma)."""
+        return self.drawing_scale.text()
 
 
 def _sides(polygon) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
@@ -185,7 +191,7 @@ def polygon_details(polygon, box: tuple[float, float] = DEFAULT_BOXES.polygon,
         k = detail_ratio(polygon.scale, shortest, 2 * r)
         scale = float(f"{polygon.scale / k:.12g}")
         R = r * k
-        half = max(R, detail_half_width(gost_scales.label((k, 1.0)), scale))
+        half = max(R, detail_half_width(gost_scales.Scale(k, 1.0).text(), scale))
         at = _detail_place(c, R, lo, hi, taken, box, half)
         taken.append((at[0] - half, at[1] - R, at[0] + half, at[1] + R + DETAIL_TITLE_MM))
         lo = np.minimum(lo, [at[0] - half, at[1] - R])

@@ -10,7 +10,10 @@ may pull its point (tail at the point) or push it (head at the point), as static
 Where several forces act at one point or near one another (the slider's and the coupler's images
 lie close together at the top of many plans) each arrow, the largest first, takes the way that
 lies over fewer of the lines already drawn (:func:`_crowding`): the arrows fan out round the
-crowded point instead of lying over each other, and their names find room beside them."""
+crowded point instead of lying over each other, and their names find room beside them. A load
+whose both ways still lie over a drawn line (an arrow, or a link of the plan along which it acts)
+slides along its line of action past the arrows already drawn on it (:func:`_along_line`) when that
+lies over less."""
 from __future__ import annotations
 
 import numpy as np
@@ -59,17 +62,24 @@ def _along_line(img: np.ndarray, d: np.ndarray, arrows: list) -> list:
     """The ways of the arrow ``d`` (mm) acting at ``img`` moved along its own line of action past the
     arrows (``arrows``: (tail, head, weight)) already drawn on that line through ``img``: pulling from
     their far end, pushing into their near end, so that the arrows follow one another along the line
-    (a force slides along its line of action without changing its moment about the pole).
-    Empty when no drawn arrow lies on that line."""
+    (a force slides along its line of action without changing its moment about the pole); each
+    way's first point is the end where it meets the arrows it follows, never a head against a head.
+    Only arrows that start or end at ``img`` count: a force is never carried off to another point's
+    arrows on its line.
+    Empty when no drawn arrow lies on that line at ``img``."""
     u = d / float(np.hypot(*d))
     n = np.array([-u[1], u[0]])
-    ts = [float((q - img) @ u) for a, b, _ in arrows
-          if abs(float((a - img) @ n)) < MM_EPS and abs(float((b - img) @ n)) < MM_EPS
-          for q in (a, b)]
-    if not ts:
+    ends = [(float((q - img) @ u), k) for a, b, _ in arrows
+            if abs(float((a - img) @ n)) < MM_EPS and abs(float((b - img) @ n)) < MM_EPS
+            and min(float(np.hypot(*(a - img))), float(np.hypot(*(b - img)))) < CROWD_MM
+            for q, k in ((a, "tail"), (b, "head"))]
+    if not ends:
         return []
-    hi, lo = max(ts + [0.0]), min(ts + [0.0])
-    return [(img + hi * u, img + hi * u + d), (img + lo * u - d, img + lo * u)]
+    hi, lo = max(ends + [(0.0, "")]), min(ends + [(0.0, "")])
+    out = [(img + hi[0] * u, img + hi[0] * u + d)]
+    if lo[1] != "head":          # pushing into another arrow's head would set two heads together
+        out.append((img + lo[0] * u, img + lo[0] * u - d))
+    return out
 
 
 def _own_part(foot: np.ndarray, feet: list) -> np.ndarray:
@@ -149,8 +159,14 @@ def lever_scene(ks, linkage, arm_names: dict[str, str] | None = None) -> Scene:
         pull, push = (img, img + d), (img - d, img)
         way = min((pull, push), key=lambda w: _crowding(w, img, drawn, others))
         arrows = [x for x in drawn if x[2] == ARROW_WEIGHT]
-        if style == "load" and _crowding(way, img, arrows, [])[0] > 0.0:
-            way = min(_along_line(img, d, arrows) + [way], key=lambda w: _crowding(w, img, drawn, others))
+        if style == "load" and _crowding(way, img, drawn, [])[0] > 0.0:
+            # lying over an arrow or along a link (the press's and the shaper's F_и5 hid in the
+            # contour d–b, f–e): slide along its line of action past the arrows drawn on it, if that
+            # lies over less (a slid way's own point is where it meets the arrow it follows)
+            slid = [(w, w[0]) for w in _along_line(img, d, arrows)]
+            best = min(slid + [(way, img)], key=lambda wo: _crowding(wo[0], wo[1], drawn, others))[0]
+            way = best if best is way else ((best[0], best[1]) if float((best[1] - best[0]) @ d) > 0
+                                            else (best[1], best[0]))
         ways[i] = way
         drawn.append((way[0], way[1], ARROW_WEIGHT))
     for i, (name, img, v, arm, style) in enumerate(loads):

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 from shapely.geometry import Polygon
 
+from .. import gost_scales
 from ..gears.meshing import GOST_SCALES, MeshingPicture, meshing_picture
 from .meshing_marks import ZONE_OFFSET_MM, MeshingMarks
 from .scene import Scene
@@ -32,9 +33,11 @@ class DrawingScale:
     @property
     def label(self) -> str:
         """«2:1», «2,5:1», «1:2» (decimal comma)."""
-        if self.factor >= 1:
-            return f"{self.factor:g}:1".replace(".", ",")
-        return f"1:{1 / self.factor:g}".replace(".", ",")
+        return self.text()
+
+    def text(self, decimal: str = ",") -> str:
+        """The ratio with ``decimal`` as the decimal mark (:meth:`reportgen.gost_scales.Scale.text`)."""
+        return gost_scales.Scale.of_factor(self.factor).text(decimal)
 
 
 def model_bounds(pair, pic: MeshingPicture) -> tuple[float, float, float, float]:

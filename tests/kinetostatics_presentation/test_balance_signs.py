@@ -3,7 +3,11 @@
 The equation is read back from its printed LaTeX (terms split at the signs, each ``A \\cdot B`` or
 ``\\frac{A}{B}``), every symbol takes the number its substitution prints and the unknown its printed
 result: the sum must be zero within the rounding of the printed result. Before the fix the crank's
-equation printed ``−F_ур·OA − G1·h7 − R21·h8 = 0`` above ``F_ур = +7867 Н``."""
+equation printed ``−F_ур·OA − G1·h7 − R21·h8 = 0`` above ``F_ур = +7867 Н``.
+
+Every length such an equation prints (the arms h_n, the arm of the unknown: OA, BD, pa…) is read off a
+drawing — the scheme, the lever — so it is printed as read, to ``READING_MM`` (0,1 mm), and the sum
+is taken with those printed readings (issue 12: «h₁ = 85,69 мм» on the scheme of a group)."""
 from __future__ import annotations
 
 import re
@@ -17,6 +21,7 @@ from kst_build import EXAMPLES, project_of, section_note  # noqa: E402
 
 from reportgen.balance import Balance, BalanceTerm, check_balance  # noqa: E402
 from reportgen.calc import Var, parse_decimal  # noqa: E402
+from reportgen.kinetostatics.graphical import READING_MM  # noqa: E402
 
 
 def _split_terms(body: str) -> list[tuple[int, str]]:
@@ -73,6 +78,17 @@ def _printed_sum(sol) -> tuple[float, float]:
     return total, big
 
 
+def _printed_lengths(sol) -> dict[str, str]:
+    """Every length (unit мм: the arms, the unknown's arm) a balance prints, by symbol, as printed."""
+    out: dict[str, str] = {}
+    for rec in (*sol.parts, sol.result):
+        shown = rec.displayed_inputs()
+        for v in rec.variables:
+            if v.unit == "мм":
+                out[v.latex] = shown[v.name]
+    return out
+
+
 @pytest.mark.parametrize("example", EXAMPLES)
 def test_every_printed_balance_holds_with_its_printed_result(example, tmp_path):
     project = project_of(example)
@@ -92,6 +108,12 @@ def test_every_printed_balance_holds_with_its_printed_result(example, tmp_path):
                                           for p in sol.parts) + 1e-9 * big
         assert abs(total) <= tol, (example, sol.equation_latex(), sol.result.result_number_latex(), total, tol)
         assert check_balance(sol).ok
+        lengths = _printed_lengths(sol)
+        assert lengths, sol.equation_latex()
+        for symbol, text in lengths.items():        # read off the drawing: 0,1 mm, printed as read
+            value = parse_decimal(text)
+            assert abs(value / READING_MM - round(value / READING_MM)) < 1e-9, (example, symbol, text)
+            assert len((text.split("{,}") + [""])[1]) <= 1, (example, symbol, text)
 
 
 def test_balance_sign_of_the_unknown_follows_its_term():

@@ -101,3 +101,20 @@ def test_the_levers_arms_are_printed_as_a_drawing_is_read(example):
     for k, text in printed.items():          # «37{,}5», «198»: one decimal at most
         assert "{,}" not in text or len(text.split("{,}")[1]) <= 1, (k, text)
     assert check_balance(sol).ok
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_the_shift_of_F_i_is_laid_off_as_a_drawing_is_read(example, tmp_path):
+    """«На схеме откладываем … мм»: the shift h of Fи′ is laid off on the scheme to the drawing's
+    0,1 mm (``READING_MM``, as every arm of section 2 is read), printed as the replica lays it off
+    (on main «12,28 мм» beside arms read to 0,1 mm on the lever)."""
+    from reportgen.kinetostatics.graphical import READING_MM
+    project = project_of(example)
+    ks = kinetostatics_of(project)
+    tex = section_note(project).render(tmp_path).read_text(encoding="utf-8")
+    laid = re.findall(r"откладываем (\S+?)~мм", tex)
+    assert len(laid) == len(ks.graphical.inertia)
+    for text, x in zip(laid, ks.graphical.inertia):
+        assert len((text.split("{,}") + [""])[1]) <= 1, text
+        assert float(text.replace("{,}", ".")) == pytest.approx(x.h_mm_measured, abs=1e-9)
+        assert abs(x.h_mm_measured / READING_MM - round(x.h_mm_measured / READING_MM)) < 1e-9

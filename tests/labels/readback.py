@@ -318,6 +318,24 @@ def entity_geometry(e):
     return None
 
 
+def drawn_shapes(e, touch: float = 0.0) -> list:
+    """Every shape one entity puts on the sheet (sheet mm): :func:`entity_geometry`'s, and for a
+    DIMENSION (or a block INSERT, a dimension's tick) the lines, ticks and value (its MTEXT's box)
+    of the block it shows; a text's box shrunk by ``touch`` on each side (texts set edge to edge
+    only touch)."""
+    kind = e.dxftype()
+    if kind in ("DIMENSION", "INSERT"):
+        return [g for v in e.virtual_entities() for g in drawn_shapes(v, touch)]
+    if kind == "MTEXT":
+        shapes = [mtext_box(e)] if e.plain_text().strip() else []
+    else:
+        g = entity_geometry(e)
+        shapes = [] if g is None else [g]
+    if kind in ("TEXT", "MTEXT") and touch:
+        shapes = [s.buffer(-touch, join_style=2) for s in shapes]
+    return [s for s in shapes if not s.is_empty]
+
+
 def _dxf_lines(doc) -> list:
     """Every drawn line of the sheet's modelspace as a shapely geometry (sheet mm): lines,
     polylines, circles, arcs and the arrowheads (SOLID, filled)."""

@@ -257,3 +257,40 @@ def test_detail_letters_are_not_repeated_on_sheet_2(example, tmp_path):
     firsts = first_detail_indices(polygons)
     indices = [d.index for p, f in zip(polygons, firsts) for d in polygon_details(p, first=f)]
     assert indices == list(range(count))
+
+
+#: The slider's inertia force on the lever: it acts along the slider's guide, at the image of the
+#: slider's point, where the coupler's image (a link of the lever) runs nearly along it. Not the
+#: crank-slider's F_и3: F_пс pulls b away along the same line and F_и3 points against it, so every
+#: way along that line lies over F_пс, sets two heads together, or lies along a–b (3,8 mm: left).
+SLIDER_INERTIA = {"press": "Fи5", "press-en": "Fи5", "shaper": "Fи5", "shaper-uk": "Fи5", "conveyor": "Fи5"}
+
+
+@pytest.mark.parametrize("example", sorted(SLIDER_INERTIA))
+def test_lever_slider_inertia_is_not_hidden_in_a_link(example):
+    """The slider's inertia force is not drawn along the coupler's image (on main the press's and the
+    shaper's F_и5 and the conveyor's F_и5 lay 5–7 mm inside the thick line d–b, f–e…: only a head
+    showed, and the name went on a leader): where both its ways lie over a drawn line, it slides along
+    its line of action past F_пс, which acts on that line at its point (never head against head)."""
+    project = _project(example)
+    sc = lever_scene(project.kinetostatics, project.linkage)
+    arrow = sc.entity(f"force:{SLIDER_INERTIA[example]}")
+    links = [e for e in sc.entities if isinstance(e, Segment) and e.kind == "contour"]
+    hidden = [(e.id, round(_over(arrow, e), 1)) for e in links if _over(arrow, e) > 3.0]
+    assert not hidden, hidden
+
+
+def test_a_slid_lever_force_never_meets_another_head_on():
+    """Sliding along its line of action, a force follows the arrow at its point tail to head or tail
+    to tail, never head against head (the crank-slider's F_и3 and F_пс, the crank–rocker's F^B_Mи3
+    and M_пс's force at b would meet head-on at the far end of F_пс)."""
+    names = {"crank-slider": None, "crank-rocker": None}
+    for name in names:
+        path = (Path(__file__).resolve().parents[2] / ("tests/data/crank-rocker.toml" if name == "crank-rocker"
+                                                        else f"examples/{name}/task.toml"))
+        project = Project(load_task(path))
+        sc = lever_scene(project.kinetostatics, project.linkage)
+        heads = [np.asarray(e.b) for e in sc.entities if isinstance(e, Arrow)]
+        met = [(i, j) for i in range(len(heads)) for j in range(i + 1, len(heads))
+               if float(np.hypot(*(heads[i] - heads[j]))) < 0.5]
+        assert not met, (name, met)

@@ -132,7 +132,7 @@ def small_plan_findings(project, sheet, doc) -> list[str]:
         expected = {k for k in plan.points if k in want}
         for k in sorted(expected - shown):
             found.append(f"plan {j}: letter «{k}» not drawn")
-        region = getattr(sheet.annotations, "regions", {}).get(view)
+        region = sheet.all_views[view].rect.polygon()
         for r in records:
             boxes = [texts[h].box for h in r.handles if h in texts]
             if not boxes:
@@ -146,7 +146,7 @@ def small_plan_findings(project, sheet, doc) -> list[str]:
             crossed = [k for k in tree.query(core, predicate="intersects")]
             if crossed:
                 found.append(f"plan {j}: «{r.text}» crossed by {len(crossed)} line(s)")
-            if region is not None and not region.buffer(TOUCH_MM).contains(shape):
+            if not region.buffer(TOUCH_MM).contains(shape):
                 found.append(f"plan {j}: «{r.text}» outside its cell")
             if isinstance(r.anchor, Point):
                 d = shape.distance(r.anchor)
