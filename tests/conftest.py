@@ -81,6 +81,9 @@ SLOW_TESTS = (
     # sheet 2's arrangement tried with the lever one round step larger, for every example; the A3 control sheet
     "tests/scenes/test_lever_scale.py::test_the_lever_fills_the_room_sheet_2_gives_it",
     "tests/scenes/test_lever_scale.py::test_the_a3_control_sheet_draws_the_notes_lever",
+    # every control-work table's variant 1 drawn on A3 and read back (~25 s)
+    "tests/control/test_control_sheet_fill.py::test_the_mechanism_is_drawn_at_the_largest_scale_the_sheet_holds",
+    "tests/control/test_control_sheet_fill.py::test_the_schemes_texts_keep_apart_and_off_the_links",
     # scaled examples (hypothesis): solved through the CLI and in process (~30 s), sheet 3 of each
     # (~9 s), every sheet drawn, built without the PDF
     "tests/robustness/test_scaled_solve.py::test_scaled_example_is_solved_or_refused",

@@ -22,6 +22,7 @@ from reportgen.geometry import vec2
 from reportgen.kinematics import KinematicsResult
 from reportgen.project import Project
 from reportgen.scenes import positions
+from reportgen.scenes.boxes import SCHEME_CAPTION_STRIP_MM, SCHEME_TITLE_STRIP_MM
 from reportgen.scenes.positions import BLOCK_MM, SchemeData
 from reportgen.scenes.scales import GOST_SCALES, gost_scale  # noqa: F401  (re-exported for the sheet)
 from reportgen.scenes.scene import Polyline, Scene, Segment
@@ -110,8 +111,8 @@ def scene_links(view: View, scene: Scene, k: float) -> BaseGeometry:
 
 def _inside(view: View) -> Polygon:
     """Where labels may go: the view less its title and caption strips."""
-    r = view.rect
-    return Polygon([(r.x0, r.y0 + 12.0), (r.x1, r.y0 + 12.0), (r.x1, r.y1 - 9.0), (r.x0, r.y1 - 9.0)])
+    r, bottom, top = view.rect, SCHEME_CAPTION_STRIP_MM, SCHEME_TITLE_STRIP_MM
+    return Polygon([(r.x0, r.y0 + bottom), (r.x1, r.y0 + bottom), (r.x1, r.y1 - top), (r.x0, r.y1 - top)])
 
 
 def _link_outline(names: tuple[str, ...]) -> list[tuple[str, str]]:
@@ -241,7 +242,9 @@ def _draw_stroke(view: View, project: Project, data: SchemeData, links: BaseGeom
 
 def _draw_letters(view: View, scene: Scene, k: float, links: BaseGeometry | None = None) -> None:
     """The scene's letters: the points of the analysed position, the moving points of position 0
-    with index 0, the centres of mass S_k — each beside its point, away from the mechanism's middle."""
+    with index 0, the centres of mass S_k — each beside its point, away from the mechanism's middle,
+    crossed by no line (a link, a hinge, a pivot's base, the crank pin's circle: issue 12, the
+    control work's «A» on its crank circle), else on a thin leader."""
     pts = [lb.at for lb in scene.labels if lb.role == "point"]
     cx = sum(p[0] for p in pts) / max(len(pts), 1) / k
     cy = sum(p[1] for p in pts) / max(len(pts), 1) / k
@@ -255,7 +258,7 @@ def _draw_letters(view: View, scene: Scene, k: float, links: BaseGeometry | None
         rich = rl.from_tex(lb.text)
         prefer = 90.0 if lb.text.startswith("S_") else math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
         rl.place_point_label(view, p, rich, 5.0, prefer, others, inside=_inside(view), avoid=links,
-                             far_gaps=LETTER_LEADER_MM)
+                             far_gaps=LETTER_LEADER_MM, cross=0)
 
 
 def _draw_numbers(view: View, project: Project, scene: Scene, k: float, links: BaseGeometry | None = None) -> None:
@@ -334,11 +337,14 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
     small circles beside the links, off every position's links, where they overlap no text and
     cross no line (else crossing as few lines as possible; never over a text); where no spot beside
     a link is off the links (a crank among its twelve positions), on a thin leader to the link, as
-    ГОСТ 2.109 numbers items; never left out."""
+    ГОСТ 2.109 numbers items; never left out. A leader crossing a line (the crank pin's circle round
+    a crank) is preferred to a number crossed by one (issue 12: «①» on the control work's crank
+    circle, «②» on a pivot's base)."""
     lk = project.linkage
     r, h = LINK_NUMBER_MM
     inside = _inside(view)
     ann = view.annotations
+    leaders: list[LineString] = []          # the numbers' leaders never cross one another
 
     def square(c: tuple[float, float]) -> Polygon:
         return Polygon([(c[0] - r - 0.3, c[1] - r - 0.3), (c[0] + r + 0.3, c[1] - r - 0.3),
@@ -346,25 +352,32 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
 
     def off_links(sq: Polygon) -> bool:
         return links is None or not links.intersects(sq)
+    from reportgen.tolerances import LABEL_NEAR_MM
     for k in lk.moving:
-        best: tuple[tuple[int, int], tuple[float, float], tuple[float, float] | None] | None = None
+        own = _link_lines(view, project, data, k)
+        best: tuple[tuple[int, int, int], tuple[float, float], tuple[float, float] | None] | None = None
         spots: list[tuple[tuple[float, float], tuple[float, float] | None]] = [
             (c, None) for c in _link_number_spots(view, project, data, k, data.analysed)]
         spots += [(c, foot) for c, foot in _link_number_leader_spots(view, project, data, k, data.analysed)]
         for c, foot in spots:
             sq = square(c)
-            if not inside.contains(sq) or ann.hits_box(sq):
+            if not inside.contains(sq) or ann.hits_box(ShapelyPoint(c).buffer(r + TEXT_GAP_MM, 16)):
                 continue
             if foot is not None:
                 leader = LineString([_circle_edge(c, foot, r), foot])
                 if not off_links(sq) or ann.hits_box(leader.buffer(0.2)):
                     continue
-                score = (0, ann.crossings(sq) + ann.crossings(leader) - 1)    # the leader meets its link
+                # a line through the number is worse than one across its thin leader (which meets its
+                # link), and two numbers' leaders crossing worse than a leader across another line
+                tangled = sum(LEADER_TANGLE for q in leaders if leader.intersects(q))
+                score = (0, ann.crossings(sq), ann.crossings(leader) - 1 + tangled)
             else:
-                score = (0 if off_links(sq) else 2, ann.crossings(sq))
+                if ShapelyPoint(c).distance(own) > LABEL_NEAR_MM - 0.5:
+                    continue                  # beside its link, else on a leader (the label check's reach)
+                score = (0 if off_links(sq) else 2, ann.crossings(sq), 0)
             if best is None or score < best[0]:
                 best = (score, c, foot)
-            if score == (0, 0) or (best[0][0] == 0 and foot is not None):
+            if score == (0, 0, 0):
                 break
         if best is None or best[0][0] != 0:      # on the links wherever beside it: anywhere, on a leader
             best = _link_number_anywhere(view, project, data, k, square, off_links) or best
@@ -375,6 +388,7 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
         if foot is not None:
             edge = _circle_edge(c, foot, r)
             view.line(view.transform.inverse(edge), view.transform.inverse(foot), "thin")
+            leaders.append(LineString([edge, foot]))
             named = shapely.union_all([named, LineString([edge, foot])])
         view.circle_mm(view.transform.inverse(c), r, "thin")
         view.text_mm(c, str(k), h, "center", register=False, names=named)
@@ -435,7 +449,11 @@ def _circle_edge(c: tuple[float, float], towards: tuple[float, float], r: float)
 
 
 #: Distances of a link number on a leader from its link, mm (where none beside it is off the links).
-LINK_LEADER_MM = (9.0, 12.0, 16.0, 20.0)
+LINK_LEADER_MM = (9.0, 12.0, 16.0, 20.0, 25.0)
+#: A link number's circle keeps this far from every text, mm.
+TEXT_GAP_MM = 1.0
+#: A link number's leader crossing another's counts as this many crossed lines.
+LEADER_TANGLE = 3
 
 
 def _link_number_leader_spots(view: View, project: Project, data: SchemeData, k: int, i: int
@@ -457,7 +475,7 @@ def _link_number_leader_spots(view: View, project: Project, data: SchemeData, k:
                         continue
                     nrm = np.array([-d[1], d[0]]) / n
                     foot = pa + d * t
-                    for ang in (0.0, 30.0, -30.0):
+                    for ang in (0.0, 30.0, -30.0, 55.0, -55.0):
                         rot = math.radians(ang)
                         v = np.array([nrm[0] * math.cos(rot) - nrm[1] * math.sin(rot),
                                       nrm[0] * math.sin(rot) + nrm[1] * math.cos(rot)])

@@ -40,8 +40,9 @@ def __getattr__(name: str):
         return sheet_title()
     raise AttributeError(name)
 
-#: The small velocity plans: the crank's vector is at most this long, mm.
-SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
+#: The small velocity plans: the crank's vector is at most this long, mm (the core's: it reserves
+#: the table of scales for their μv).
+from reportgen.scenes.boxes import SMALL_PLAN_MM  # noqa: E402
 
 
 def available(project: Project) -> bool:
@@ -91,7 +92,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
     else:
         sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
     k, scale_text = layout.k, layout.ratio
-    scheme = place_scheme_view(sheet, b, k, layout.rects["scheme"])
+    scheme = place_scheme_view(sheet, b, k, layout.rects["scheme"], layout.scheme_origin)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
     sheet.set_scale(scale_text)
     if control:
@@ -165,10 +166,11 @@ def layout_plans(sheet: Sheet, layout: SheetLayout, small_of) -> Arrangement:
     return found
 
 
-def place_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float, rect: Rect) -> View:
-    """The scheme's view in the core's ``rect``: model bounds ``b`` at ``k`` mm per metre,
-    ``SCHEME_PADS_MM`` from its lower-left corner."""
-    left, bottom, _, _ = SCHEME_PADS_MM
+def place_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float, rect: Rect,
+                      origin: tuple[float, float] = SCHEME_PADS_MM[:2]) -> View:
+    """The scheme's view in the core's ``rect``: model bounds ``b`` at ``k`` mm per metre, their
+    lower-left corner ``origin`` from the view's (the core's ``SheetLayout.scheme_origin``)."""
+    left, bottom = origin
     return sheet.place_view("scheme", rect, Transform(k, (b[0], b[1]), (rect.x0 + left, rect.y0 + bottom)))
 
 
@@ -241,7 +243,7 @@ def _table_header() -> tuple[str, str, str]:
 
 def _table_widths(candidates: list[list[tuple[str, str, str]]], width: float | None = None) -> tuple[float, ...]:
     """The columns' widths for the longest texts of ``candidates``; with ``width`` (the view the core
-    reserved, ``reportgen.scenes.boxes.SCALES_TABLE_MM``) the name column takes the rest of it."""
+    reserved from the same lines, ``reportgen.scenes.arrangement.scales_table_width``) the name column takes the rest of it."""
     every = [_table_header(), *[r for rows in candidates for r in rows]]
     widths = tuple(max(style.text_width(r[c], 3.5) for r in every) + 5.0 for c in range(3))
     if width is None or width <= sum(widths):

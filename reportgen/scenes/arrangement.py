@@ -17,13 +17,16 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Iterable, Mapping, Sequence
 
+import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ..errors import BuildError
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
-                    PLAN_TITLE_MM, SCALES_TABLE_MM, SCHEME_MIN_WIDTH_MM, SCHEME_PADS_MM, SHEET_MM, TABLE_ROW_MM,
+                    PLAN_TITLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MIN_MM, SCHEME_LETTERS_MM,
+                    SCHEME_MIN_WIDTH_MM,
+                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, SMALL_PLAN_MM, TABLE_ROW_MM,
                     TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
 
@@ -194,11 +197,54 @@ def _grow(region, blocks: list[Block], rects: list[Rect], placed: list[Rect]) ->
 # the views' sizes and the whole sheet at one scale
 
 
+@dataclass(frozen=True)
+class SchemeView:
+    """The scheme's view: its size and where the model's lower-left bound (``b[0], b[1]``) stands
+    from the view's lower-left corner, mm (the sheet places the drawing there)."""
+    width: float
+    height: float
+    origin: tuple[float, float]
+
+
 def scheme_view_size(b: tuple[float, float, float, float], k: float, min_width: float = 0.0) -> tuple[float, float]:
-    """The scheme's view: model bounds ``b`` (m) at ``k`` mm per metre with ``SCHEME_PADS_MM``
+    """Sheet 1's scheme view: model bounds ``b`` (m) at ``k`` mm per metre with ``SCHEME_PADS_MM``
     round them (more below for the scale caption, above for the title), at least ``min_width``."""
-    left, bottom, right, top = SCHEME_PADS_MM
-    return max((b[2] - b[0]) * k + left + right, min_width), (b[3] - b[1]) * k + bottom + top
+    view = scheme_view(b, k, min_width)
+    return view.width, view.height
+
+
+def scheme_view(b: tuple[float, float, float, float], k: float, min_width: float = 0.0,
+                drawn: tuple[float, float, float, float] | None = None,
+                lettered: Sequence[tuple[float, float]] = ()) -> SchemeView:
+    """The scheme's view at ``k`` mm per metre, model bounds ``b`` (m). Sheet 1 (``drawn`` None):
+    ``SCHEME_PADS_MM`` round the model bounds (the crank angles, the stroke). The control work's
+    scheme (``drawn``: what its scene draws, ``Scene.bounds`` in mm — the bounds with the hinges,
+    pivots, guides and blocks; ``lettered``: its letters' points, mm): on each side the room its
+    letters need (:func:`letters_room`), the title's and the caption's strips above and below. At
+    least ``min_width`` wide, the drawing centred in the extra width."""
+    if drawn is None:
+        left, bottom, right, top = SCHEME_PADS_MM
+        w = (b[2] - b[0]) * k + left + right
+        extra = max(min_width - w, 0.0)
+        return SchemeView(w + extra, (b[3] - b[1]) * k + bottom + top, (left, bottom))
+    left, bottom, right, top = letters_room(drawn, lettered)
+    w = drawn[2] - drawn[0] + left + right
+    h = drawn[3] - drawn[1] + bottom + top + SCHEME_TITLE_STRIP_MM + SCHEME_CAPTION_STRIP_MM
+    extra = max(min_width - w, 0.0)
+    origin = (b[0] * k - drawn[0] + left + extra / 2, b[1] * k - drawn[1] + bottom + SCHEME_CAPTION_STRIP_MM)
+    return SchemeView(w + extra, h, origin)
+
+
+def letters_room(drawn: tuple[float, float, float, float], lettered: Sequence[tuple[float, float]]
+                 ) -> tuple[float, float, float, float]:
+    """Room beyond the drawing ``drawn`` (mm) for the letters at the points ``lettered``: left,
+    bottom, right, top — on each side what the point nearest to it needs for a letter reaching
+    ``SCHEME_LETTERS_MM`` from it, at least ``SCHEME_LETTERS_MIN_MM``."""
+    def need(distances: Iterable[float]) -> float:
+        return max([SCHEME_LETTERS_MIN_MM, *(SCHEME_LETTERS_MM - d for d in distances)])
+    x0, y0, x1, y1 = drawn
+    return (need(p[0] - x0 for p in lettered), need(p[1] - y0 for p in lettered),
+            need(x1 - p[0] for p in lettered), need(y1 - p[1] for p in lettered))
 
 
 def plan_view_size(plan, title_mm: float, min_width: float = PLAN_MIN_WIDTH_MM) -> tuple[float, float]:
@@ -226,6 +272,41 @@ def table_rows(plans_by_position: Mapping[int, tuple[Any, Any]], small: bool, di
     return 1 + len(v) + len(a) + (1 if small else 0) + (7 if diagrams else 0)
 
 
+def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, language: str | None = None) -> float:
+    """The width (mm) of sheet 1's table «Масштабы» from its own lines — the rows
+    drawings.sheets.kinematics.scale_rows writes: μl with the scheme's ratio, the μv and μa of the
+    plan positions (positions sharing a μ on one line), the small velocity plans' μv (the widest
+    of the crank vectors ``SMALL_PLAN_MM`` the sheet may choose), the ``diagrams``' scales and pole
+    distances — measured as the sheet measures them (:mod:`.lettering`), in ``language`` (default
+    the task's)."""
+    from ..numbers import plain, significant
+    from ..plans import round_scale
+    from .lettering import scales_table_width as width
+    names: list[tuple[str, str]] = [("scheme", ratio)]
+    values: list[tuple[str, str]] = [("value_l", significant(1.0 / k, 4))]
+    for which, one, many, unit in ((0, "vplan", "vplans", "value_v"), (1, "aplan", "aplans", "value_a")):
+        by_mu: dict[str, list[int]] = {}
+        for j, pair in project.plans_by_position.items():
+            by_mu.setdefault(significant(pair[which].scale, 4), []).append(j)
+        for mu, positions in by_mu.items():
+            names.append((one if len(positions) == 1 else many, ", ".join(str(j) for j in sorted(positions))))
+            values.append((unit, mu))
+    if small:
+        kin = project.kinematics
+        v_tip = float(np.hypot(*np.asarray(kin.points[project.linkage.drive_tip].vel[0])))
+        names.append(("small", str(len(project.phi) - 1)))
+        values += [("value_v", significant(round_scale(v_tip, mm), 4)) for mm in SMALL_PLAN_MM]
+    symbols = ["μl", "μv", "μa"]
+    if diagrams is not None:
+        kind = "m" if diagrams.unit == "м" else "rad"        # a slider's s, v, a or a rocker's ψ, ω, ε
+        names += [("phi_axis", ""), ("t_axis", ""), (f"diagrams_{kind}", ""), ("pole", "")]
+        values += [("value_phi", significant(diagrams.mu_phi, 4)), ("value_t", significant(diagrams.mu_t, 4)),
+                   *((f"value_{kind}", significant(mu, 4)) for mu in (diagrams.mu_s, diagrams.mu_v, diagrams.mu_a)),
+                   ("value_mm", plain(diagrams.H1, 1)), ("value_mm", plain(diagrams.H2, 1))]
+        symbols += ["μφ", "μt", "μs", "μψ", "μω", "με", "H1", "H2"]
+    return width(language or project.task.document.language, names, values, symbols)
+
+
 @dataclass(frozen=True)
 class SheetLayout:
     """The sheet's views at the plan of positions' scale ``k`` (mm per metre, ``ratio`` «1:N»):
@@ -241,6 +322,8 @@ class SheetLayout:
     plan_sizes: tuple[tuple[float, float], ...]
     names: tuple[tuple[str, str], ...]
     table_rows: int
+    #: where the model's lower-left bound stands from the scheme view's lower-left corner, mm
+    scheme_origin: tuple[float, float] = SCHEME_PADS_MM[:2]
 
     @property
     def field(self) -> BaseGeometry:
@@ -262,12 +345,17 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     fmt = control or "A1"
     lang = task.document.language
     region = free_field(*SHEET_MM[fmt])
-    scheme = Request("scheme", *scheme_view_size(b, k, SCHEME_MIN_WIDTH_MM[fmt] if control else 0.0), "top-left")
+    if control:
+        scene = project.scenes.positions_at(k, ratio)
+        view = scheme_view(b, k, SCHEME_MIN_WIDTH_MM[fmt], scene.bounds(),
+                           [lb.at for lb in scene.labels if lb.role == "point"])
+    else:
+        view = scheme_view(b, k)
+    scheme = Request("scheme", view.width, view.height, "top-left")
     second: list[tuple[Request, ...]] = []   # the second view, in the corners to try
     diagrams = None
     if control:
-        from .lever import lever_scene
-        size = lever_view_size(lever_scene(project.kinetostatics, project.linkage), lettering_room(LEVER_TITLE_MM, lang))
+        size = lever_view_size(project.scenes.lever, lettering_room(LEVER_TITLE_MM, lang))
         second = [(Request("lever", *size, corner),) for corner in LEVER_CORNERS]
     else:
         diagrams = project.output_diagrams
@@ -277,7 +365,7 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     pairs = project.plans_by_position
     rows = table_rows(pairs, small=not control, diagrams=diagrams is not None)
     # the A3 field has no room for the table: each view prints its scale
-    table = [] if fmt == "A3" else [Request("scales", lettering_room(SCALES_TABLE_MM, lang),
+    table = [] if fmt == "A3" else [Request("scales", scales_table_width(project, k, ratio, diagrams, small=not control),
                                             TABLE_ROW_MM * (rows + 1) + TABLE_TITLE_MM, "bottom-right")]
     a3 = fmt == "A3"
     titles = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)
@@ -285,6 +373,8 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
     sizes = [plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
              for j, pair in pairs.items() for plan, title in zip(pair, titles)]
+    if not _may_fit(region, [scheme, *(second[0] if second else ()), *table], sizes):
+        return None
     for other in second or [()]:
         requests = [scheme, *other, *table]
         placed: list[Rect] = []
@@ -299,8 +389,19 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
         found = arrange(region, placed, sizes, names)
         if found is not None:
             rects.update(found.rects)
-            return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows)
+            return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows,
+                               view.origin)
     return None
+
+
+def _may_fit(region, requests: Sequence[Request], sizes: Sequence[tuple[float, float]]) -> bool:
+    """A quick necessary condition before the packing (the control work tries its scales from the
+    whole field down): every view fits the field's extent, and their areas together its area."""
+    x0, y0, x1, y1 = region.bounds
+    views = [(r.width, r.height) for r in requests] + list(sizes)
+    if any(w > x1 - x0 + MM_EPS or h > y1 - y0 + MM_EPS for w, h in views):
+        return False
+    return sum(w * h for w, h in views) <= region.area + MM_EPS
 
 
 #: The smallest drawing of the mechanism worth trying, mm (its larger side): below it the plan of

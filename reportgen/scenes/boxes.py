@@ -91,14 +91,6 @@ class SceneBoxes:
     #: the lever's box on A1 and on A3 (``[control_work] sheet``).
     lever_control: tuple[float, float] = (300.0, 250.0)
     lever_control_a3: tuple[float, float] = (110.0, 80.0)
-    #: The control work's sheet: the largest drawing of the mechanism at φ tried (``scheme`` is sheet
-    #: 1's, whose field holds no lever) on A1 and on A3. The scale the note and the sheet print is the
-    #: largest ГОСТ scale within the box at which the whole sheet's arrangement fits
-    #: (:mod:`reportgen.scenes.arrangement`; issue 12: on main the sheet fell back to a smaller scale
-    #: by itself — table 4 variant 1 on A3 drew 1:50, the note printed 1:40 — and tables 2 and 22
-    #: did not fit A3 at all with the 40 mm box and the course plans' titles).
-    scheme_control: tuple[float, float] = (200.0, 200.0)
-    scheme_control_a3: tuple[float, float] = (90.0, 90.0)
     #: The control work on A3: no point of the velocity or acceleration plan farther than this from
     #: the pole, mm (the smallest round μ of the plans' series that does it); on A1 the plans keep
     #: the scales of :func:`reportgen.plans.build_plans`, the course project's.
@@ -117,11 +109,18 @@ class SceneBoxes:
 
     def scheme_for(self, task) -> tuple[float, float]:
         """The box of the drawing of the mechanism (the plan of positions) on the sheet that draws it
-        for ``task``: sheet 1, or the control work's one sheet (A1 or A3)."""
+        for ``task``: sheet 1's ``scheme``; on the control work's one sheet (A1 or A3) the largest
+        the free field could hold at all (its extent less the scheme view's strips and the letters'
+        room). The scale the note and the sheet print is the largest ГОСТ scale of these at which
+        the whole sheet's arrangement fits (:func:`reportgen.scenes.arrangement.choose_layout`),
+        not a fixed box's (issue 12: a 90 × 90 mm box on A3 drew table 4 variant 1's mechanism
+        55 mm wide at 1:25 beside 120 × 140 mm of empty field, table 10's 33 × 61 mm at 1:40)."""
         sheet = control_sheet(task)
         if sheet is None:
             return self.scheme
-        return self.scheme_control_a3 if sheet == "A3" else self.scheme_control
+        x0, y0, x1, y1 = free_field(*SHEET_MM[sheet]).bounds
+        return (x1 - x0 - 2 * SCHEME_LETTERS_MIN_MM,
+                y1 - y0 - 2 * SCHEME_LETTERS_MIN_MM - SCHEME_TITLE_STRIP_MM - SCHEME_CAPTION_STRIP_MM)
 
     def plan_mm_for(self, task) -> float | None:
         """The farthest a point of the analysed position's plans may stand from the pole on the sheet
@@ -145,9 +144,22 @@ DEFAULT = SceneBoxes()
 # sheet 1 and the control work's sheet: the views' sizes, from which the core arranges the sheet
 # (reportgen.scenes.arrangement) and chooses the scale of the plan of positions
 
-#: Padding of the scheme around its model bounds: left, bottom, right, top, mm (the scale caption
-#: below, the title above).
+#: Padding of sheet 1's scheme around its model bounds: left, bottom, right, top, mm (the scale
+#: caption below, the title above; the crank angles' rays reach 22 mm beyond the crank circle, the
+#: stroke's dimension 17,5 mm beyond the guide, with their values).
 SCHEME_PADS_MM = (28.0, 36.0, 28.0, 38.0)
+#: The scheme view's strips: its title above (drawings.sheet.View.title letters it 5 mm high, 1 mm
+#: under the top) and its scale caption below (5 mm high, 4 mm over the bottom), mm; the scheme's
+#: letters keep out of them (drawings.scenes.kinematics_scheme).
+SCHEME_TITLE_STRIP_MM, SCHEME_CAPTION_STRIP_MM = 9.0, 12.0
+#: The control work's scheme (one position: no crank angles, no stroke): room round what its scene
+#: draws (links, hinges, pivots, guides, blocks: ``Scene.bounds`` at the scale) for the letters. A
+#: letter reaches up to ``SCHEME_LETTERS_MM`` from its point (5 mm high, «S₂» about 6,5 mm wide,
+#: 0,6–1,5 mm beside the hinge); on each side the room is what the points nearest to it need, at
+#: least ``SCHEME_LETTERS_MIN_MM`` (the links' numbers, circles of 2,8 mm radius, go beside their
+#: links, else on a leader inwards). Measured on all 22 tables' variant 1 on A3: the drawing
+#: reached at most 7,8 mm beyond its scene.
+SCHEME_LETTERS_MM, SCHEME_LETTERS_MIN_MM = 9.0, 3.0
 #: The control work's scheme view is at least as wide as its title (5 mm letters): «Механизм в
 #: заданном положении, φ1 = …°» on A1, «Механизм, φ1 = …°» on A3.
 SCHEME_MIN_WIDTH_MM = {"A1": 125.0, "A3": 85.0}
@@ -160,6 +172,9 @@ PLAN_MIN_WIDTH_A3_MM = 100.0
 #: Zhukovsky's lever's panel: room round the turned plan, the strips of its title, subtitle and
 #: scale captions, mm (drawings.scenes.kinetostatics_views.lever_panel draws in them).
 LEVER_PAD_MM, LEVER_STRIPS_MM = 12.0, 10.0 + 6.0 + 16.0
+#: Sheet 1's small velocity plans: the crank's vector is at most this long, mm (the largest whose
+#: plans find room; drawings.sheets.kinematics.small_plans).
+SMALL_PLAN_MM = (60.0, 50.0, 40.0, 30.0, 20.0)
 #: The table «Масштабы»: a row's height and the strip above it for its title, mm.
 TABLE_ROW_MM, TABLE_TITLE_MM = 8.0, 12.0
 #: Gap between views, and between the two plans of a plan position put together (smaller, so that
@@ -173,15 +188,13 @@ GROW_PLANS_MM = 40.0
 #: drawings.style.text_width and tests/sheet1/test_arrangement_core.py checks every language's
 #: lines fit): a plan view's title at 5 mm + 10 mm (velocity, acceleration: «План ускорений,
 #: положение 2»; on the control work's A3 sheet «План ускорений», the control work's catalogue is
-#: Russian), the lever's
-#: title and subtitle + 4 mm, the whole table «Масштабы» of sheet 1 (its three columns; measured on
-#: every example with 1, 2 and 3 plan positions: ru ≤ 199,4, uk ≤ 196,2, en ≤ 228,0 mm).
+#: Russian), the lever's title and subtitle + 4 mm. The table «Масштабы» of sheet 1 is measured from
+#: its own lines (:func:`reportgen.scenes.arrangement.scales_table_width`).
 PLAN_TITLE_MM = {"ru": (133.0, 133.0), "uk": (138.0, 138.0), "en": (138.0, 156.0)}
 #: … and each further digit of the position's number.
 PLAN_TITLE_DIGIT_MM = 4.6
 PLAN_TITLE_A3_MM = {"ru": (75.0, 75.0)}
 LEVER_TITLE_MM = {"ru": 116.0, "uk": 119.0, "en": 106.0}
-SCALES_TABLE_MM = {"ru": 200.0, "uk": 197.0, "en": 229.0}
 
 
 def lettering_room(table, language: str):

@@ -114,6 +114,7 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
     """
     done: list[Rect] = list(placed)
     out: list[Rect] = []
+    grown = region.buffer(MM_EPS)          # once: buffering per candidate cost most of a control sheet's scale choice
     for req in requests:
         if req.preferred not in CORNERS:
             raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
@@ -121,7 +122,7 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
         best: tuple[float, Rect] | None = None
         for cx, cy in _candidates(region, done, req.width, req.height, gap):
             rect = Rect.from_size(cx, cy, req.width, req.height)
-            if not region.buffer(MM_EPS).contains(rect.polygon()):
+            if not grown.contains(rect.polygon()):
                 continue
             if any(rect.overlaps(p.expanded(gap - MM_EPS)) for p in done):
                 continue

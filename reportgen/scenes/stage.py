@@ -46,9 +46,20 @@ class Scenes:
         found = self.sheet_layout
         return (found.k, found.ratio) if found is not None else self.positions_scales[0]
 
+    @cached_property
+    def lever(self) -> Scene:
+        """Zhukovsky's lever of the analysed position at the replica's μv (the control work's sheet
+        arranges its panel at every scale it tries: built once)."""
+        from .lever import lever_scene
+        return lever_scene(self.project.kinetostatics, self.project.linkage)
+
     def positions_at(self, k: float, ratio: str) -> Scene:
-        """The plan of positions at another scale."""
-        return positions_scene(self.project, self.scheme_data, k, ratio)
+        """The plan of positions at another scale (each built once: the arrangement measures the
+        control work's scheme at every scale it tries, the sheet draws the chosen one)."""
+        cache = self.__dict__.setdefault("_positions_at", {})
+        if (k, ratio) not in cache:
+            cache[(k, ratio)] = positions_scene(self.project, self.scheme_data, k, ratio)
+        return cache[(k, ratio)]
 
     @cached_property
     def positions(self) -> Scene:

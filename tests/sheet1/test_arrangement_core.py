@@ -26,7 +26,7 @@ from drawings.words import language, tr
 from reportgen.errors import ReportgenInputError
 from reportgen.project import Project
 from reportgen.scenes import arrangement
-from reportgen.scenes.boxes import (LEVER_TITLE_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM, PLAN_TITLE_MM, SCALES_TABLE_MM, SceneBoxes,
+from reportgen.scenes.boxes import (LEVER_TITLE_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM, PLAN_TITLE_MM, SceneBoxes,
                                     free_field)
 from reportgen.scenes.positions import bounds
 from reportgen.taskfile import load_task
@@ -158,7 +158,8 @@ def test_the_table_of_scales_fits_the_cores_room(example, lang):
         d = None if control else sheet1.diagrams_of(project)
         small = None if control else sheet1.small_plans(project, sheet1.SMALL_PLAN_MM[0])
         rows = sheet1.scale_rows(1.0 / k, ratio, pairs, d, small)
-        assert sum(sheet1._table_widths([rows])) <= SCALES_TABLE_MM[lang]
+        reserved = arrangement.scales_table_width(project, k, ratio, project.output_diagrams, not control, lang)
+        assert sum(sheet1._table_widths([rows])) <= reserved + 1e-9
     assert len(rows) <= project.scenes.sheet_layout.table_rows
 
 

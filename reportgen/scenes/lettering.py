@@ -1,0 +1,69 @@
+"""The sheets' lettering measured in the core: the room the arrangement reserves for a view's lines
+comes from the lines themselves, measured as the sheet measures them (issue 12: the table
+«Масштабы» had a fixed measured room per language, which a task with more plan positions sharing a
+scale, or longer values, than any example's would overrun).
+
+The sheets measure a text with DejaVu Sans Mono (``drawings.style.MEASURE_FONT``: its advance is
+nearly LibreCAD's OpenGost type B and wider than osifont's) times ``drawings.style.WIDTH_MARGIN``.
+That font is monospaced: every character, Cyrillic, Greek and the rest, advances
+``SHEET_ADVANCE`` of the letters' height, so the font's metric table is this one number
+(tests/scenes/test_lettering.py checks it against the sheet's measure for every line of every
+catalogue). The words are the catalogue's, which the core does not read: what the core keeps of
+them is the number of characters of each line's fixed part (its words, its values left out), per
+language, which the same test derives from the catalogues.
+"""
+from __future__ import annotations
+
+from typing import Iterable, Mapping, Sequence
+
+#: DejaVu Sans Mono's advance (1233/2048 em) per mm of capital height (its capitals are 1493/2048 em
+#: high, ezdxf scales the em so that they are ``height`` mm), times the sheets' WIDTH_MARGIN 1,1.
+SHEET_ADVANCE = 0.825853985264568 * 1.1
+
+
+def text_width(text: str, height: float) -> float:
+    """The width (mm) the sheet measures for a one-line ``text`` lettered ``height`` mm high (a blank
+    text measures 0, as the sheet's font does)."""
+    return len(text) * SHEET_ADVANCE * height if text.strip() else 0.0
+
+
+#: The table «Масштабы»: letters 3,5 mm high, 2,5 mm of a cell's 5 mm pad on each side of a column
+#: (drawings.sheets.kinematics.fill_scales_table).
+TABLE_TEXT_MM, TABLE_CELL_PAD_MM = 3.5, 5.0
+#: The fixed part of each line of the table (the catalogue's words; the values a task puts in left
+#: out), in characters, per language: the symbol column's header «Обозн.», the name column's lines
+#: by their catalogue key, the value column's by their unit («0,0025 м/мм» is the value and 5
+#: characters); the diagrams' (``_m`` a slider's s, v, a; ``_rad`` a rocker's ψ, ω, ε) the longest
+#: of the three. tests/scenes/test_lettering.py derives them from the catalogues.
+SCALES_TABLE_CHARS: Mapping[str, Mapping[str, int]] = {
+    "ru": {"symbol": 6, "header_name": 8, "header_value": 7, "scheme": 9, "vplan": 25, "vplans": 26,
+           "aplan": 25, "aplans": 26, "small": 28, "phi_axis": 16, "t_axis": 16, "pole": 19,
+           "diagrams_m": 21, "diagrams_rad": 28, "value_l": 5, "value_v": 9, "value_a": 10, "value_phi": 7,
+           "value_t": 5, "value_mm": 3, "value_m": 10, "value_rad": 12},
+    "uk": {"symbol": 5, "header_name": 8, "header_value": 7, "scheme": 9, "vplan": 26, "vplans": 26,
+           "aplan": 26, "aplans": 26, "small": 28, "phi_axis": 16, "t_axis": 16, "pole": 16,
+           "diagrams_m": 20, "diagrams_rad": 29, "value_l": 5, "value_v": 9, "value_a": 10, "value_phi": 7,
+           "value_t": 5, "value_mm": 3, "value_m": 10, "value_rad": 12},
+    "en": {"symbol": 6, "header_name": 8, "header_value": 5, "scheme": 14, "vplan": 29, "vplans": 31,
+           "aplan": 33, "aplans": 35, "small": 33, "phi_axis": 16, "t_axis": 16, "pole": 13,
+           "diagrams_m": 20, "diagrams_rad": 28, "value_l": 5, "value_v": 9, "value_a": 10, "value_phi": 7,
+           "value_t": 5, "value_mm": 3, "value_m": 10, "value_rad": 12},
+}
+
+
+def scales_table_width(language: str, names: Iterable[tuple[str, str]], values: Iterable[tuple[str, str]],
+                       symbols: Sequence[str] = ()) -> float:
+    """The width (mm) of the table «Масштабы» whose name column holds the lines ``names`` (the
+    catalogue key of a line's words, the text the task puts in it: «1:2,5», «2, 8, 11», «» for none)
+    and whose value column holds ``values`` (key of the unit, the number), ``symbols`` its symbols:
+    each column as wide as its longest line and its pad (the sheet's measure, :func:`text_width`)."""
+    chars = SCALES_TABLE_CHARS.get(language) or {k: max(t[k] for t in SCALES_TABLE_CHARS.values())
+                                                 for k in SCALES_TABLE_CHARS["ru"]}
+
+    def column(lines: Iterable[int]) -> float:
+        return max(lines) * SHEET_ADVANCE * TABLE_TEXT_MM + TABLE_CELL_PAD_MM
+
+    first = column([chars["symbol"], *(len(s) for s in symbols)])
+    second = column([chars["header_name"], *(chars[k] + len(t) for k, t in names)])
+    third = column([chars["header_value"], *(chars[k] + len(t) for k, t in values)])
+    return first + second + third
