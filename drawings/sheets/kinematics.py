@@ -12,6 +12,7 @@ from drawings import style
 from drawings.layout import LAYOUT_LIMIT, Rect
 from drawings.primitives import Transform, format_number, format_significant
 from drawings.sheet import Sheet, View
+from drawings.words import decimal_mark
 from drawings.scenes import kinematics_diagrams as kd
 from drawings.scenes import kinematics_plans as kp
 from drawings.scenes import kinematics_scheme as ks
@@ -91,7 +92,7 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         sheet = cs.new_sheet(project, number, count)
     else:
         sheet = Sheet.a1(project.task.document, title=sheet_title(), code=designation(project.task.document, number), number=number, count=count)
-    k, scale_text = layout.k, layout.ratio
+    k, scale_text = layout.k, layout.scale.text(decimal_mark())
     scheme = place_scheme_view(sheet, b, k, layout.rects["scheme"], layout.scheme_origin)
     ks.draw_scheme(scheme, project, data, scale_text, 1.0 / k)
     sheet.set_scale(scale_text)

@@ -21,6 +21,7 @@ import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ..errors import BuildError
+from ..gost_scales import Scale
 from ..tolerances import MM_EPS
 from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM, PAIR_GAP, PLAN_MIN_WIDTH_A3_MM,
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
@@ -324,6 +325,11 @@ class SheetLayout:
     table_rows: int
     #: where the model's lower-left bound stands from the scheme view's lower-left corner, mm
     scheme_origin: tuple[float, float] = SCHEME_PADS_MM[:2]
+
+    @property
+    def scale(self) -> Scale:
+        """The plan of positions' scale, to print in a language's decimal mark (``Scale.text``)."""
+        return Scale.parse(self.ratio)
 
     @property
     def field(self) -> BaseGeometry:
