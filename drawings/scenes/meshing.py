@@ -68,11 +68,9 @@ def draw_marks(view, marks) -> None:
             view.polyline(leader, "thin")
             view.text((cx, y0), text, m.height, "bottom-center")
         else:
-            # a letter beside its point: in its box, as near to the point as the box allows
-            w, h = style.text_width(text, m.height) / k, m.height / k
-            cx = min(max(m.anchor[0], x0 + w / 2), x1 - w / 2) if x1 - x0 > w else (x0 + x1) / 2
-            cy = min(max(m.anchor[1], y0 + h / 2), y1 - h / 2) if y1 - y0 > h else (y0 + y1) / 2
-            view.text((cx, cy), text, m.height, "center")
+            # a letter beside its point, a name beside its circle: in its box, as near to what it
+            # names as the box allows (Mark.text_centre: the note's figure writes it so too)
+            view.text(m.text_centre(style.text_width(text, m.height) / k, m.height / k), text, m.height, "center")
     for d in marks.dimensions:
         view.dimension(d.p1, d.p2, offset_mm=d.offset_mm, unit_factor=1.0, text=d.text)
 

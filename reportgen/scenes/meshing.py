@@ -126,7 +126,7 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     mark of the sheet only); the positions are in real mm, the same for both."""
     from dataclasses import replace
 
-    from .meshing_marks import DIM_H, MARK_H, POINT_H, place_aw, place_marks
+    from .meshing_marks import DIM_H, MARK_H, POINT_H, _Shared, place_aw, place_marks
     scale = scale if scale is not None else meshing_scale(pair, pic)
     k = scale.factor
     r = detail_reduction(pic, scale)
@@ -138,7 +138,8 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     inner = (max(fx0 + e, sx0), max(fy0 + e, sy0), min(fx1 - e, sx1), min(fy1 - e, sy1))
     legend = (fx0, fy1 - DETAIL_LEGEND[1] / kn, fx0 + DETAIL_LEGEND[0] / kn, fy1)
     # the dimension aw (the sheet's only) first, right of the line of centres: the rest keeps clear
-    aw = place_aw(pair, pic, k, room, zone_k=k)
+    shared = _Shared(pic)          # the teeth, their outlines and the circles, once for the three placements
+    aw = place_aw(pair, pic, k, room, zone_k=k, shared=shared)
     aw_keep: tuple[tuple[float, float, float, float], ...] = ()
     if aw is not None:
         bx0, by0, bx1, by1 = Polygon(aw.box).bounds
@@ -146,7 +147,8 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     point_h, mark_h = max(DETAIL_POINT_H, POINT_H * r), max(DETAIL_MARK_H, MARK_H * r)
     dim_h = max(DETAIL_DIM_H, DIM_H * r)
     detail = place_marks(pair, pic, kn, inner, point_h=point_h, mark_h=mark_h, dim_h=dim_h,
-                         keep_out=(legend, *aw_keep), zone_k=k, skip=frozenset({"aw"}))
+                         keep_out=(legend, *aw_keep), zone_k=k, skip=frozenset({"aw"}), unit=k, shared=shared,
+                         lines_drawn=() if aw is None else (aw,))
     marks = []
     for m in detail.marks:
         letter = m.name in pic.points
@@ -155,7 +157,8 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
                              page_h=DETAIL_POINT_H if letter else DETAIL_MARK_H))
     detail = replace(detail, marks=tuple(marks),
                      dimensions=tuple(replace(d, detail=True) for d in detail.dimensions))
-    full = place_marks(pair, pic, k, room, zone_k=k, given=detail, keep_out=aw_keep, skip=frozenset({"aw"}))
+    full = place_marks(pair, pic, k, room, zone_k=k, given=detail, keep_out=aw_keep, skip=frozenset({"aw"}),
+                       shared=shared, lines_drawn=() if aw is None else (aw,))
     return full if aw is None else replace(full, dimensions=full.dimensions + (aw,))
 
 
