@@ -228,6 +228,7 @@ class _Placer:
         self.room = room
         shapely.prepare(room)
         self.placed: list[Polygon] = []
+        self.texts: list[Polygon] = []
         self._halo: list[Polygon] = []          # the placed ones widened by TEXT_GAP, prepared
 
     @property
@@ -269,8 +270,11 @@ class _Placer:
         self.lines.extend(geoms)
         self.tree = shapely.STRtree(self.lines)
 
-    def take(self, poly: Polygon) -> None:
+    def take(self, poly: Polygon, text: bool = True) -> None:
+        """``poly`` is taken: a text's box (``text``) or a leader widened."""
         self.placed.append(poly)
+        if text:
+            self.texts.append(poly)
         halo = poly.buffer(TEXT_GAP / self.k)
         shapely.prepare(halo)
         self._halo.append(halo)
@@ -307,6 +311,19 @@ class _Shared:
 RING_QUAD_SEGS = 64
 
 
+def _glyphs(poly) -> Polygon:
+    """The middle of a text's box that the drawn letters fill (GLYPHS of its width and height:
+    the box is estimated wide and holds the note's size; the sheet's letters are smaller): a
+    line across it crosses the letters."""
+    x0, y0, x1, y1 = poly.bounds
+    dx, dy = (x1 - x0) * (1 - GLYPHS) / 2, (y1 - y0) * (1 - GLYPHS) / 2
+    return box(x0 + dx, y0 + dy, x1 - dx, y1 - dy)
+
+
+#: The share of a text's box (width and height) its letters fill, as either drawing writes them.
+GLYPHS = 0.8
+
+
 def _bounds(poly) -> tuple[float, float, float, float]:
     x0, y0, x1, y1 = poly.bounds
     return (float(x0), float(y0), float(x1), float(y1))
@@ -335,7 +352,7 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
             poly = _box_at(c, w, h)
             if not placer.free(poly, inside_teeth=True):
                 continue
-            score = placer.crossings(poly)
+            score = placer.crossings(poly.buffer(LINE_CLEAR / k))
             if best is None or score < best[0]:
                 best = (score, poly)
             if score == 0:
@@ -355,6 +372,9 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
                 height)
 
 
+#: A letter beside its point keeps this far (paper mm) off the drawn lines: a letter's foot on a
+#: line reads as crossed (the sheet writes it at its box's edge nearest the point).
+LINE_CLEAR = 0.4
 #: The distances (sheet mm) tried between a point and its letter's box, nearest first.
 BESIDE_POINT_MM = (1.0, 2.5, 4.0, 6.0)
 
@@ -414,7 +434,8 @@ def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[
                         probe = None
                 if not placer.free(poly, probe, whole, inside_teeth=inside_teeth):
                     continue
-                score = placer.crossings(poly) * 3 + (placer.crossings(probe) if probe is not None else 0)
+                score = (placer.crossings(poly) + placer.crossings(_glyphs(poly))) * 3 + (
+                    placer.crossings(probe) if probe is not None else 0)
                 if best is None or score < best[0]:
                     best = (score, poly, leader, anchor)
                 if score <= 2:
@@ -435,7 +456,7 @@ def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[
                 LineString([anchor, elbow, end]), anchor)
     _, poly, leader, anchor = best
     placer.take(poly)
-    placer.take(leader.buffer(0.3 / k))
+    placer.take(leader.buffer(0.3 / k), text=False)
     return Mark(name, text, tex, (float(anchor[0]), float(anchor[1])),
                 tuple((float(x), float(y)) for x, y in leader.coords),
                 _bounds(poly), height, word)
@@ -537,7 +558,7 @@ def _dim_box(p1: Point, p2: Point, offset: float, k: float, text: str, height: f
 def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
                offsets: list[float], prefer_clear: bool = False, height: float = DIM_H) -> PlacedDimension:
     """The first offset (sheet mm) at which the text, the dimension line and its extension lines
-    cross no tooth and no placed text; ``prefer_clear``: among those, the first whose text crosses
+    cross no tooth and no placed text (the lines: where some offset allows it); ``prefer_clear``: among those, the first whose text crosses
     no drawn line (the arcs), else the one crossing fewest."""
     k = placer.k
     d = math.dist(p1, p2)
@@ -560,6 +581,10 @@ def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
                     rank = 1
         if prefer_clear:
             rank = rank * 100 + placer.crossings(poly)
+        # its lines across a designation placed before (a letter at a or b, αw): the last choice
+        if any(ln.intersects(t) for ln in (LineString([p1, q1]), LineString([p2, q2]), LineString([q1, q2]))
+               for t in placer.texts):
+            rank += 10**5
         if best is None or rank < best[0]:
             best = (rank, off, poly)
         if rank == 0:
@@ -666,7 +691,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
         for m in given.marks:
             placer.take(box(*m.box))
             if m.leader:
-                placer.take(LineString(m.leader).buffer(0.3 / k))
+                placer.take(LineString(m.leader).buffer(0.3 / k), text=False)
         for d in given.dimensions:
             placer.take(Polygon(d.box))
         done = {m.name for m in given.marks} | {d.name for d in given.dimensions}
@@ -716,7 +741,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
             continue
         marks.append(_beside(placer, name, name, f"{name[0]}_{{{name[1:]}}}" if len(name) > 1 else name,
                              pt, point_h, prefer[name], own_radius=2.4 * g.m))
-        if name == "P" and given is None:      # αw next: the pole's other name, before a and b
+        if name == "b" and given is None:      # αw next: the pole's other name, after P, a and b
             angle = place_alpha()
     if given is None and angle.radius == 0.0:
         angle = place_alpha()
@@ -762,6 +787,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
         arcs.append(ArcMark(f"s{gear}", centre, r, a0, a1))
         dirs = ([300.0, 330.0, 270.0, 0.0, 240.0, 210.0, 180.0, 30.0] if gear == 1
                 else [120.0, 150.0, 90.0, 180.0, 60.0, 30.0, 0.0, 210.0])
+        dirs += [d for d in (d0 + 15.0 for d0 in dirs) if d % 360.0 not in dirs]
         marks.append(_on_leader(placer, f"s{gear}", f"s{gear}", f"s_{{{gear}}}", arc_anchors(centre, r, a0, a1),
                                 dirs, mark_h, own=tooth.buffer(2 * CLEAR / k), inside_teeth=True))
     ts = by_x[0]
