@@ -80,6 +80,8 @@ def draw_marks(view, marks) -> None:
 NAME_CLEAR_MM = 1.0
 #: The ρ axis goes this far beyond N2 (or b beyond it): its name «ρ, мм» clear of N2's tick (sheet mm).
 AXIS_BEYOND_N2_MM = 28.0
+#: The sliding diagram's caption stands this far above the end of its λ axis (sheet mm).
+CAPTION_ABOVE_MM = 6.0
 #: Sheet mm per unit of λ, the largest that fits the view first.
 SLIDING_UNITS = (40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0)
 
@@ -132,5 +134,10 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     view.text((rho[i1] * k + 2, max(l1[i1], lam_low) * per_unit), "λ1", 3.5)
     i2 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.8 * g.g))
     view.text((rho[i2] * k - 2, max(l2[i2], lam_low) * per_unit), "λ2", 3.5, "bottom-right")
+    # the caption with its diagram (issue 12: at the top of a tall view it stood ~100 mm above
+    # it): CAPTION_ABOVE_MM over the λ axis's end, from the diagram's left, inside the view
     mu = 1.0 / per_unit
-    view.text_mm((rect.x1 - 2, rect.y1 - 7), tr("sheets.me03", v1=format_number(mu, 4), v2=format_number(1 / k, 4)), 3.5, "bottom-right")
+    caption = tr("sheets.me03", v1=format_number(mu, 4), v2=format_number(1 / k, 4))
+    top = oy + per_unit + 10.0 + CAPTION_ABOVE_MM
+    x = min(ox - 12.0, rect.x1 - 2.0 - style.text_width(caption, 3.5))
+    view.text_mm((max(rect.x0 + 2.0, x), min(top, rect.y1 - 7.0)), caption, 3.5, "bottom-left")
