@@ -135,9 +135,11 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     i2 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.8 * g.g))
     view.text((rho[i2] * k - 2, max(l2[i2], lam_low) * per_unit), "λ2", 3.5, "bottom-right")
     # the caption with its diagram (issue 12: at the top of a tall view it stood ~100 mm above
-    # it): CAPTION_ABOVE_MM over the λ axis's end, from the diagram's left, inside the view
+    # it): CAPTION_ABOVE_MM over the λ axis's end and the names a, P, b, from the diagram's left
     mu = 1.0 / per_unit
     caption = tr("sheets.me03", v1=format_number(mu, 4), v2=format_number(1 / k, 4))
-    top = oy + per_unit + 10.0 + CAPTION_ABOVE_MM
+    top = max(oy + per_unit + 10.0, *(t.bounds[3] for t in taken)) + CAPTION_ABOVE_MM
     x = min(ox - 12.0, rect.x1 - 2.0 - style.text_width(caption, 3.5))
-    view.text_mm((max(rect.x0 + 2.0, x), min(top, rect.y1 - 7.0)), caption, 3.5, "bottom-left")
+    if top + 3.5 > rect.y1 - 2.0:        # no room over it (a, P, b stacked high): under it
+        top = rect.y0 + 3.0
+    view.text_mm((max(rect.x0 + 2.0, x), top), caption, 3.5, "bottom-left")
