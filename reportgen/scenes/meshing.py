@@ -167,6 +167,19 @@ def ab_on_sheet(pic: MeshingPicture, scale: DrawingScale) -> float:
     return round(pic.ab_drawn * scale.factor, 1)
 
 
+#: The circles' arcs are drawn as polylines whose chords stay within this of the true circle
+#: (sheet mm; 2880 segments a circle before: 10 000 vertices, the most of sheet 4's DXF and preview).
+ARC_TOL_MM = 0.01
+
+
+def arc_quad_segs(radius_mm: float) -> int:
+    """Segments per quarter circle of ``radius_mm`` (sheet mm) for chords within ARC_TOL_MM:
+    a chord of angle θ leaves the circle by R·(1 − cos θ/2)."""
+    import math
+    theta = 2 * math.acos(max(-1.0, 1 - ARC_TOL_MM / max(radius_mm, ARC_TOL_MM)))
+    return max(8, math.ceil(math.pi / 2 / theta))
+
+
 #: The line kinds of the circles (ГОСТ 2.303: the pitch circle dash-dot, the working one dashed).
 CIRCLE_KINDS = {"pitch": "axis", "base": "thin", "working": "hidden", "tip": "thin", "root": "thin"}
 #: The radius of the dots at the named points, paper mm.
@@ -218,7 +231,7 @@ def meshing_scene(pair, pic: MeshingPicture | None = None) -> MeshingScene:
     arc_window = box(*arcs_window(pair, pic)).intersection(window)
     ents: list[Entity] = []
     for c in pic.circles:
-        ring = SPoint(c.centre).buffer(c.radius, 720).exterior
+        ring = SPoint(c.centre).buffer(c.radius, arc_quad_segs(c.radius * k)).exterior
         for j, line in enumerate(lines_of(ring.intersection(arc_window))):
             ents.append(Polyline(f"circle:{c.name}:{j}", tuple(mm(p) for p in line), CIRCLE_KINDS[c.kind]))
     for gear, teeth in ((1, pic.teeth1), (2, pic.teeth2)):

@@ -226,10 +226,12 @@ class _Placer:
         self.lines = list(lines)
         self.tree = shapely.STRtree(self.lines) if self.lines else None
         self.room = room
-        shapely.prepare(room)
         self.placed: list[Polygon] = []
         self.texts: list[Polygon] = []
-        self._halo: list[Polygon] = []          # the placed ones widened by TEXT_GAP, prepared
+        self._halo: list[Polygon] = []          # the placed ones widened by TEXT_GAP
+        self._halo_tree: shapely.STRtree | None = None
+        self._placed_tree: shapely.STRtree | None = None
+        self._room = room.bounds                 # the room is a box
 
     @property
     def outlines(self):
@@ -247,16 +249,48 @@ class _Placer:
         (``leader`` is the rest), which must still cross no other text or leader. ``inside_teeth``:
         the box and the leader may stand inside a tooth (a point's letter, s, p, αw), clear of its
         outline."""
-        if not self.room.contains(poly):
+        x0, y0, x1, y1 = poly.bounds
+        if x0 < self._room[0] or y0 < self._room[1] or x1 > self._room[2] or y1 > self._room[3]:
             return False
         solid = self.outlines if inside_teeth else self.teeth
         if solid.intersects(poly):
             return False
         if leader is not None and leader.length > 0 and solid.intersects(leader):
             return False
+        if self._halo_tree is not None and self._halo_tree.query(poly, predicate="intersects").size:
+            return False
         line = whole if whole is not None else leader
-        return not any(h.intersects(poly) for h in self._halo) and not (
-            line is not None and any(line.intersects(p) for p in self.placed))
+        return not (line is not None and self._placed_tree is not None
+                    and self._placed_tree.query(line, predicate="intersects").size)
+
+    def free_many(self, polys: np.ndarray, probes: np.ndarray, wholes: np.ndarray,
+                  inside_teeth: bool = False) -> np.ndarray:
+        """:meth:`free` of many candidates at once (arrays of boxes, of leaders less their own
+        region — empty where nothing is left — and of whole leaders): a boolean array."""
+        b = shapely.bounds(polys)
+        rx0, ry0, rx1, ry1 = self._room
+        ok = (b[:, 0] >= rx0) & (b[:, 1] >= ry0) & (b[:, 2] <= rx1) & (b[:, 3] <= ry1)
+        solid = self.outlines if inside_teeth else self.teeth
+        ok &= ~shapely.intersects(solid, polys)
+        has = ~shapely.is_empty(probes) & (shapely.length(probes) > 0)
+        ok &= ~(has & shapely.intersects(solid, probes))
+        n = len(polys)
+        if self._halo_tree is not None:
+            ok &= np.bincount(self._halo_tree.query(polys, predicate="intersects")[0], minlength=n) == 0
+        if self._placed_tree is not None:
+            ok &= np.bincount(self._placed_tree.query(wholes, predicate="intersects")[0], minlength=n) == 0
+        return ok
+
+    def crossings_many(self, geoms: np.ndarray, but=None) -> np.ndarray:
+        """:meth:`crossings` of many geometries at once (an int array)."""
+        n = len(geoms)
+        if self.tree is None or n == 0:
+            return np.zeros(n, dtype=int)
+        src, hit = self.tree.query(geoms, predicate="intersects")
+        if but is not None:
+            keep = np.array([self.lines[i] is not but for i in hit], dtype=bool)
+            src = src[keep]
+        return np.bincount(src, minlength=n)
 
     def crossings(self, poly, but=None) -> int:
         """How many drawn lines ``poly`` meets (``but``: one of them not counted, its own)."""
@@ -275,9 +309,10 @@ class _Placer:
         self.placed.append(poly)
         if text:
             self.texts.append(poly)
-        halo = poly.buffer(TEXT_GAP / self.k)
-        shapely.prepare(halo)
-        self._halo.append(halo)
+        gap = TEXT_GAP / self.k
+        self._halo.append(_grown(poly, gap) if text else poly.buffer(gap, quad_segs=2))
+        self._halo_tree = shapely.STRtree(self._halo)
+        self._placed_tree = shapely.STRtree(self.placed)
 
 
 class _Shared:
@@ -291,12 +326,19 @@ class _Shared:
         self.teeth_union = unary_union(self.teeth)
         self._clear: dict[float, object] = {}
         self._outl: dict[float, object] = {}
+        self._wide: dict[float, object] = {}
         self.rings = {c.name: SPoint(c.centre).buffer(c.radius, RING_QUAD_SEGS).exterior for c in pic.circles}
 
     def teeth_clear(self, k: float):
         if k not in self._clear:
             self._clear[k] = self.teeth_union.buffer(CLEAR / k)
         return self._clear[k]
+
+    def teeth_wide(self, k: float):
+        """The teeth widened by 2,5 paper mm at ``k`` (where a circle's name is anchored off them)."""
+        if k not in self._wide:
+            self._wide[k] = self.teeth_union.buffer(2.5 / k)
+        return self._wide[k]
 
     def outlines_clear(self, k: float):
         if k not in self._outl:
@@ -309,6 +351,13 @@ class _Shared:
 #: Segments per quarter of a circle where the placement needs a circle as a line (at 64 the chords
 #: stay within 0,008 % of the radius of the circle: a hundredth of a millimetre on these wheels).
 RING_QUAD_SEGS = 64
+
+
+def _grown(poly, d: float) -> Polygon:
+    """A text's box grown by ``d`` on every side (square corners: a little more than a buffer,
+    and far cheaper)."""
+    x0, y0, x1, y1 = poly.bounds
+    return box(x0 - d, y0 - d, x1 + d, y1 + d)
 
 
 def _glyphs(poly) -> Polygon:
@@ -352,7 +401,7 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
             poly = _box_at(c, w, h)
             if not placer.free(poly, inside_teeth=True):
                 continue
-            score = placer.crossings(poly.buffer(LINE_CLEAR / k))
+            score = placer.crossings(_grown(poly, LINE_CLEAR / k))
             if best is None or score < best[0]:
                 best = (score, poly)
             if score == 0:
@@ -414,30 +463,35 @@ def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[
     (``last_resort``; a test reports it), else None."""
     k, u = placer.k, placer.unit
     w, h = (v / k for v in text_size(text, height))
+    rad = np.radians(np.asarray(directions, dtype=float))
+    ux, uy = np.cos(rad), np.sin(rad)
+    sx = np.where(ux >= 0, 1.0, -1.0)                     # the shelf to the right or to the left
     best = None
     for L in tuple(lengths) + (LONG_LEADERS if last_resort else ()):
         for anchor in anchors:
-            for ang in directions:
-                ux, uy = math.cos(math.radians(ang)), math.sin(math.radians(ang))
-                elbow = (anchor[0] + ux * L / u, anchor[1] + uy * L / u)
-                right = ux >= 0
-                end = (elbow[0] + (w if right else -w), elbow[1])
-                x0 = min(elbow[0], end[0])
-                poly = box(x0, elbow[1] + 0.6 / k, x0 + w, elbow[1] + 0.6 / k + h)
-                leader = LineString([anchor, elbow, end])
-                # the leader's first mm touches its own line: test the rest
-                whole = LineString([(anchor[0] + ux * 1.2 / u, anchor[1] + uy * 1.2 / u), elbow, end])
-                probe = whole
-                if own is not None:
-                    probe = whole.difference(own)
-                    if probe.is_empty:
-                        probe = None
-                if not placer.free(poly, probe, whole, inside_teeth=inside_teeth):
-                    continue
-                score = (placer.crossings(poly) + placer.crossings(_glyphs(poly))) * 3 + (
-                    placer.crossings(probe) if probe is not None else 0)
+            # every direction at once (shapely's arrays): the candidates' boxes and leaders
+            ex, ey = anchor[0] + ux * L / u, anchor[1] + uy * L / u
+            endx = ex + sx * w
+            x0 = np.minimum(ex, endx)
+            polys = shapely.box(x0, ey + 0.6 / k, x0 + w, ey + 0.6 / k + h)
+            sxy = np.stack([anchor[0] + ux * 1.2 / u, anchor[1] + uy * 1.2 / u], axis=1)
+            mid = np.stack([ex, ey], axis=1)
+            far = np.stack([endx, ey], axis=1)
+            wholes = shapely.linestrings(np.stack([sxy, mid, far], axis=1))
+            probes = wholes if own is None else shapely.difference(wholes, own)
+            ok = placer.free_many(polys, probes, wholes, inside_teeth=inside_teeth)
+            if not ok.any():
+                continue
+            idx = np.flatnonzero(ok)
+            g = polys[idx]
+            b = shapely.bounds(g)
+            dx, dy = (b[:, 2] - b[:, 0]) * (1 - GLYPHS) / 2, (b[:, 3] - b[:, 1]) * (1 - GLYPHS) / 2
+            glyphs = shapely.box(b[:, 0] + dx, b[:, 1] + dy, b[:, 2] - dx, b[:, 3] - dy)
+            scores = (placer.crossings_many(g) + placer.crossings_many(glyphs)) * 3 + placer.crossings_many(probes[idx])
+            for j, score in zip(idx, scores):
                 if best is None or score < best[0]:
-                    best = (score, poly, leader, anchor)
+                    leader = LineString([anchor, tuple(mid[j]), tuple(far[j])])
+                    best = (int(score), polys[j], leader, anchor)
                 if score <= 2:
                     break
             if best is not None and best[0] <= 2:
@@ -480,7 +534,7 @@ def _beside_arc(placer: _Placer, name: str, text: str, tex: str, ring, anchors: 
             poly = _box_at(c, w, h)
             if poly.intersects(ring) or not placer.free(poly):
                 continue
-            if placer.crossings(poly.buffer(max(BESIDE_CLEAR_MM / u, BESIDE_CLEAR_PAGE_MM / k)), but=ring):
+            if placer.crossings(_grown(poly, max(BESIDE_CLEAR_MM / u, BESIDE_CLEAR_PAGE_MM / k)), but=ring):
                 continue
             placer.take(poly)
             return Mark(name, text, tex, (float(q[0]), float(q[1])), (), _bounds(poly), height)
@@ -601,9 +655,10 @@ def _dimension(placer: _Placer, name: str, p1: Point, p2: Point, text: str,
 
 def _circle_anchors(ring, window: Polygon, teeth: Polygon, centre: Point, r: float, gear: int,
                     k: float, fractions: tuple[float, ...] = (0.15, 0.5, 0.85)) -> list[Point]:
-    """Points of a drawn arc (``ring`` cut by ``window``) outside the teeth, farthest from the
-    pole first (where the arcs are uncrowded)."""
-    free = ring.intersection(window).difference(teeth.buffer(2.5 / k))
+    """Points of a drawn arc (``ring`` cut by ``window``) outside ``teeth`` (widened by 2,5 paper
+    mm: :meth:`_Shared.teeth_wide`), farthest from the pole first (where the arcs are
+    uncrowded)."""
+    free = ring.intersection(window).difference(teeth)
     pts: list[Point] = []
     geoms = getattr(free, "geoms", [free])
     for g in geoms:
@@ -697,7 +752,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
         done = {m.name for m in given.marks} | {d.name for d in given.dimensions}
         marks = list(given.marks)
         dims = [replace(d, offset_mm=d.offset_mm * k / given.k) for d in given.dimensions]
-    teeth_u = shared.teeth_union
+    teeth_wide = shared.teeth_wide(k)
     # 1. the letters of the points, and αw after P's
     prefer = {"O1": 0, "O2": 0, "P": 30, "N1": 200, "N2": 20, "a": 150, "b": -30}
     inside = box(*room)
@@ -810,7 +865,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
         sub = {"pitch": "", "base": "b", "working": "w", "tip": "a", "root": "f"}[c.kind]
         tex = f"r_{{{sub}{c.gear}}}"
         ring = shared.rings[c.name]
-        anchors = _circle_anchors(ring, window, teeth_u, c.centre, c.radius, c.gear, k,
+        anchors = _circle_anchors(ring, window, teeth_wide, c.centre, c.radius, c.gear, k,
                                   fractions=(0.05, 0.15, 0.3, 0.5, 0.7, 0.85, 0.95))
         anchors = [q for q in anchors if inside.contains(SPoint(q))] or anchors
         mark = _beside_arc(placer, c.name, f"{base_name}{c.gear}", tex, rings.get(c.name, ring), anchors,
