@@ -68,11 +68,9 @@ def draw_marks(view, marks) -> None:
             view.polyline(leader, "thin")
             view.text((cx, y0), text, m.height, "bottom-center")
         else:
-            # a letter beside its point: in its box, as near to the point as the box allows
-            w, h = style.text_width(text, m.height) / k, m.height / k
-            cx = min(max(m.anchor[0], x0 + w / 2), x1 - w / 2) if x1 - x0 > w else (x0 + x1) / 2
-            cy = min(max(m.anchor[1], y0 + h / 2), y1 - h / 2) if y1 - y0 > h else (y0 + y1) / 2
-            view.text((cx, cy), text, m.height, "center")
+            # a letter beside its point, a name beside its circle: in its box, as near to what it
+            # names as the box allows (Mark.text_centre: the note's figure writes it so too)
+            view.text(m.text_centre(style.text_width(text, m.height) / k, m.height / k), text, m.height, "center")
     for d in marks.dimensions:
         view.dimension(d.p1, d.p2, offset_mm=d.offset_mm, unit_factor=1.0, text=d.text)
 
@@ -82,6 +80,8 @@ def draw_marks(view, marks) -> None:
 NAME_CLEAR_MM = 1.0
 #: The ρ axis goes this far beyond N2 (or b beyond it): its name «ρ, мм» clear of N2's tick (sheet mm).
 AXIS_BEYOND_N2_MM = 28.0
+#: The sliding diagram's caption stands this far above the end of its λ axis (sheet mm).
+CAPTION_ABOVE_MM = 6.0
 #: Sheet mm per unit of λ, the largest that fits the view first.
 SLIDING_UNITS = (40.0, 30.0, 25.0, 20.0, 15.0, 10.0, 5.0)
 
@@ -134,5 +134,12 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
     view.text((rho[i1] * k + 2, max(l1[i1], lam_low) * per_unit), "λ1", 3.5)
     i2 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.8 * g.g))
     view.text((rho[i2] * k - 2, max(l2[i2], lam_low) * per_unit), "λ2", 3.5, "bottom-right")
+    # the caption with its diagram (issue 12: at the top of a tall view it stood ~100 mm above
+    # it): CAPTION_ABOVE_MM over the λ axis's end and the names a, P, b, from the diagram's left
     mu = 1.0 / per_unit
-    view.text_mm((rect.x1 - 2, rect.y1 - 7), tr("sheets.me03", v1=format_number(mu, 4), v2=format_number(1 / k, 4)), 3.5, "bottom-right")
+    caption = tr("sheets.me03", v1=format_number(mu, 4), v2=format_number(1 / k, 4))
+    top = max(oy + per_unit + 10.0, *(t.bounds[3] for t in taken)) + CAPTION_ABOVE_MM
+    x = min(ox - 12.0, rect.x1 - 2.0 - style.text_width(caption, 3.5))
+    if top + 3.5 > rect.y1 - 2.0:        # no room over it (a, P, b stacked high): under it
+        top = rect.y0 + 3.0
+    view.text_mm((max(rect.x0 + 2.0, x), top), caption, 3.5, "bottom-left")

@@ -123,7 +123,7 @@ def meshing_figure(_pair, ms):
                     lw=lw if e.kind == "contour" else 0.5, ls=ls)
         elif isinstance(e, Circle):
             ax.plot([e.c[0]], [e.c[1]], "o", color="k", ms=2.5, zorder=4)
-    _draw_marks(ax, marks, k)
+    _draw_marks(ax, marks, k, page_k=k * r)
     handles = [Line2D([], [], color=ZONE_COLOURS[2], lw=4, alpha=0.55, label=tr("figures.gear12")),
                Line2D([], [], color=ZONE_COLOURS[1], lw=4, alpha=0.55, label=tr("figures.gear13")),
                Line2D([], [], color="0.25", lw=0.5, ls=PENS["axis"][1], label=tr("figures.gear14")),
@@ -135,14 +135,22 @@ def meshing_figure(_pair, ms):
     return fig
 
 
-def _draw_marks(ax, marks, unit: float = 1.0) -> None:
+#: The note's TeX spelling of a designation («r_{b1}») is about this share of the width the
+#: placement estimates for the sheet's spelling («rb1») at the same height.
+NOTE_TEXT_WIDTH = 0.75
+
+
+def _draw_marks(ax, marks, unit: float = 1.0, page_k: float | None = None) -> None:
     """The designations of :class:`reportgen.scenes.meshing_marks.MeshingMarks` (real mm, drawn
-    ×``unit`` on axes in scene mm) with matplotlib: leaders, texts in their boxes (TeX spelling),
-    arcs of s and p with end ticks, the arc of αw, the dimension ab with its arrows and text."""
+    ×``unit`` on axes in scene mm, ``page_k`` page mm per real mm) with matplotlib: leaders, texts
+    in their boxes (TeX spelling), arcs of s and p with end ticks, the arc of αw, the dimension ab
+    with its arrows and text."""
     from reportgen.scenes.meshing import DETAIL_DIM_H
+    from reportgen.scenes.meshing_marks import text_size
 
     from .labels import names
     k = marks.k
+    page_k = page_k if page_k is not None else k
     pt_per_mm = 72.0 / 25.4
 
     def u(p):
@@ -162,7 +170,10 @@ def _draw_marks(ax, marks, unit: float = 1.0) -> None:
         if m.leader:
             lx, ly = zip(*(u(p) for p in m.leader))
             ax.plot(lx, ly, color="k", lw=0.4, zorder=5)
-        cx, cy = u(m.centre)
+        # beside its point or circle: as near to it as the box allows, as on the sheet (the width
+        # of the TeX spelling, subscripts included, about NOTE_TEXT_WIDTH of the sheet's estimate)
+        w, h = (v / page_k for v in text_size(m.text, m.page_h))
+        cx, cy = u(m.text_centre(w * NOTE_TEXT_WIDTH, h))
         t = ax.text(cx, cy, f"${m.tex}$", fontsize=m.page_h * pt_per_mm * 0.95, ha="center", va="center",
                     zorder=6)
         names(t, *((u(p) for p in m.leader) if m.leader else (u(m.anchor),)))

@@ -129,7 +129,7 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     mark of the sheet only); the positions are in real mm, the same for both."""
     from dataclasses import replace
 
-    from .meshing_marks import DIM_H, MARK_H, POINT_H, place_aw, place_marks
+    from .meshing_marks import DIM_H, MARK_H, POINT_H, _Shared, place_aw, place_marks
     scale = scale if scale is not None else meshing_scale(pair, pic)
     k = scale.factor
     r = detail_reduction(pic, scale)
@@ -141,7 +141,8 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     inner = (max(fx0 + e, sx0), max(fy0 + e, sy0), min(fx1 - e, sx1), min(fy1 - e, sy1))
     legend = (fx0, fy1 - DETAIL_LEGEND[1] / kn, fx0 + DETAIL_LEGEND[0] / kn, fy1)
     # the dimension aw (the sheet's only) first, right of the line of centres: the rest keeps clear
-    aw = place_aw(pair, pic, k, room, zone_k=k)
+    shared = _Shared(pic)          # the teeth, their outlines and the circles, once for the three placements
+    aw = place_aw(pair, pic, k, room, zone_k=k, shared=shared)
     aw_keep: tuple[tuple[float, float, float, float], ...] = ()
     if aw is not None:
         bx0, by0, bx1, by1 = Polygon(aw.box).bounds
@@ -149,7 +150,8 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
     point_h, mark_h = max(DETAIL_POINT_H, POINT_H * r), max(DETAIL_MARK_H, MARK_H * r)
     dim_h = max(DETAIL_DIM_H, DIM_H * r)
     detail = place_marks(pair, pic, kn, inner, point_h=point_h, mark_h=mark_h, dim_h=dim_h,
-                         keep_out=(legend, *aw_keep), zone_k=k, skip=frozenset({"aw"}))
+                         keep_out=(legend, *aw_keep), zone_k=k, skip=frozenset({"aw"}), unit=k, shared=shared,
+                         lines_drawn=() if aw is None else (aw,))
     marks = []
     for m in detail.marks:
         letter = m.name in pic.points
@@ -158,13 +160,27 @@ def meshing_marks(pair, pic: MeshingPicture, scale: DrawingScale | None = None):
                              page_h=DETAIL_POINT_H if letter else DETAIL_MARK_H))
     detail = replace(detail, marks=tuple(marks),
                      dimensions=tuple(replace(d, detail=True) for d in detail.dimensions))
-    full = place_marks(pair, pic, k, room, zone_k=k, given=detail, keep_out=aw_keep, skip=frozenset({"aw"}))
+    full = place_marks(pair, pic, k, room, zone_k=k, given=detail, keep_out=aw_keep, skip=frozenset({"aw"}),
+                       shared=shared, lines_drawn=() if aw is None else (aw,))
     return full if aw is None else replace(full, dimensions=full.dimensions + (aw,))
 
 
 def ab_on_sheet(pic: MeshingPicture, scale: DrawingScale) -> float:
     """|ab| as read on the sheet, to 0,1 mm."""
     return round(pic.ab_drawn * scale.factor, 1)
+
+
+#: The circles' arcs are drawn as polylines whose chords stay within this of the true circle
+#: (sheet mm; 2880 segments a circle before: 10 000 vertices, the most of sheet 4's DXF and preview).
+ARC_TOL_MM = 0.01
+
+
+def arc_quad_segs(radius_mm: float) -> int:
+    """Segments per quarter circle of ``radius_mm`` (sheet mm) for chords within ARC_TOL_MM:
+    a chord of angle θ leaves the circle by R·(1 − cos θ/2)."""
+    import math
+    theta = 2 * math.acos(max(-1.0, 1 - ARC_TOL_MM / max(radius_mm, ARC_TOL_MM)))
+    return max(8, math.ceil(math.pi / 2 / theta))
 
 
 #: The line kinds of the circles (ГОСТ 2.303: the pitch circle dash-dot, the working one dashed).
@@ -218,7 +234,7 @@ def meshing_scene(pair, pic: MeshingPicture | None = None) -> MeshingScene:
     arc_window = box(*arcs_window(pair, pic)).intersection(window)
     ents: list[Entity] = []
     for c in pic.circles:
-        ring = SPoint(c.centre).buffer(c.radius, 720).exterior
+        ring = SPoint(c.centre).buffer(c.radius, arc_quad_segs(c.radius * k)).exterior
         for j, line in enumerate(lines_of(ring.intersection(arc_window))):
             ents.append(Polyline(f"circle:{c.name}:{j}", tuple(mm(p) for p in line), CIRCLE_KINDS[c.kind]))
     for gear, teeth in ((1, pic.teeth1), (2, pic.teeth2)):
