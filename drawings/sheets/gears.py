@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from drawings import Sheet
 from drawings.layout import Rect
-from ..words import designation, tr
+from ..words import decimal_mark, designation, tr
 
 NEEDS = ("gears", "planetary", "scenes")
 def sheet_title() -> str:
@@ -46,7 +46,7 @@ def draw(project, number: int, count: int) -> Sheet:
         pair = project.gears
         mesh_rect = Rect(fr.x0 + 5, fr.y0 + 5, fr.x0 + 5 + VIEW_W, fr.y0 + 5 + VIEW_H)
         scale = draw_meshing(sheet, pair, project.scenes.meshing, mesh_rect)
-        sheet.set_scale(scale.label)                                   # the meshing, the main view
+        sheet.set_scale(scale.text(decimal_mark()))                    # the meshing, the main view
         rest = Rect(mesh_rect.x1 + 10, fr.y0 + 5, fr.x1 - 5, fr.y1 - 8)
         table_h = PAIR_ROW_MM * (len(pair_rows(pair)) + 1) + 12.0
         table_rect = Rect(rest.x1 - PAIR_TABLE_W, tb.y1 + 8, rest.x1, tb.y1 + 8 + table_h)

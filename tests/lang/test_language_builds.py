@@ -138,10 +138,6 @@ def test_english_sheets(builds):
         assert word in joined, word
 
 
-@pytest.mark.xfail(strict=True, reason="a scale's ratio is formatted with a comma in the core "
-                   "(gost_scales.label's default, MeshingPicture.label) and printed as is by the sheets "
-                   "(title block, μl caption, scale table, sheet 4's title): «1:2,5», «2,5:1» on the "
-                   "English sheets; the note converts it (|ratio), the sheets do not")
 def test_english_sheets_print_the_decimal_point(builds):
     """Every number on the English sheets has a decimal point, a scale's ratio included; only the
     Assur groups' links «II(2,3)» keep their comma."""
