@@ -121,22 +121,21 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
             small_cache[crank_mm] = small_plans(project, crank_mm)
         return small_cache[crank_mm]
     plan_views: list[tuple[str, Plan, str]] = []
-    a3 = layout.sheet == "A3"        # the control work's one position: the scheme's title names it
-    for j, (vplan, aplan) in pairs.items():
+    for j, (vplan, aplan) in pairs.items():     # the control work's one position: no number (the scheme's title names it)
         names = plan_view_names(j, first=(j == data.analysed))
-        plan_views += [(names[0], vplan, tr("control.sheet.vplan_a3") if a3 else tr("sheets.sk103", i=j)),
-                       (names[1], aplan, tr("control.sheet.aplan_a3") if a3 else tr("sheets.sk104", i=j))]
+        plan_views += [(names[0], vplan, tr("control.sheet.vplan_a3") if control else tr("sheets.sk103", i=j)),
+                       (names[1], aplan, tr("control.sheet.aplan_a3") if control else tr("sheets.sk104", i=j))]
     # the table's rows name the small plans too, whose μv the arrangement chooses: the table's view
     # is the core's (for its most rows) and filled once the small plans are known
-    candidates = [scale_rows(1.0 / k, scale_text, pairs, d, small_of(c)) for c in SMALL_PLAN_MM]
-    candidates.append(scale_rows(1.0 / k, scale_text, pairs, d, None))
+    candidates = [scale_rows(1.0 / k, scale_text, pairs, d, small_of(c), given=control) for c in SMALL_PLAN_MM]
+    candidates.append(scale_rows(1.0 / k, scale_text, pairs, d, None, given=control))
     table = None
     if "scales" in layout.rects:     # the control work on A3: every view prints its scale under it
         r = layout.rects["scales"]
         table = sheet.place_view("scales", r, Transform(1.0, (0.0, 0.0), (r.x0, r.y0)))
     arrangement = layout_plans(sheet, layout, small_of)
     if table is not None:
-        fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, arrangement.small),
+        fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, arrangement.small, given=control),
                           _table_widths(candidates, table.rect.width))
     for name, plan, title in plan_views:
         kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
@@ -197,8 +196,9 @@ def small_plans(project: Project, crank_mm: float) -> list[Plan]:
 
 
 def _lower_title(title: str) -> str:
-    """«Диаграмма скорости» → «диаграмма скорости» (a row of the table names the diagram)."""
-    return title.replace(tr("sheets.sk123"), tr("sheets.sk124"))
+    """«Диаграмма скорости» → «диаграмма скорости», «Displacement diagram» → «displacement diagram»
+    (a row of the table names the diagram: its title's first letter in lower case)."""
+    return title[:1].lower() + title[1:]
 
 
 def _positions_text(positions: list[int]) -> str:
@@ -206,10 +206,11 @@ def _positions_text(positions: list[int]) -> str:
 
 
 def scale_rows(mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]], d: Diagrams | None,
-               small: list[Plan] | None = None) -> list[tuple[str, str, str]]:
+               small: list[Plan] | None = None, given: bool = False) -> list[tuple[str, str, str]]:
     """The table «Масштабы»: one row per distinct scale, named by what it draws — the scheme, the
-    velocity and acceleration plans of the plan positions (positions sharing a μ share a row), the
-    small velocity plans, the diagrams' axes and graphs and the pole distances."""
+    velocity and acceleration plans of the plan positions (positions sharing a μ share a row; the
+    control work's one position, ``given``, unnumbered), the small velocity plans, the diagrams'
+    axes and graphs and the pole distances."""
     rows = [("μl", tr("sheets.sk109", scale_text=scale_text), tr("sheets.sk110", v1=format_significant(mu_l, 4)))]
     for symbol, which, one, many, value in (("μv", 0, "sheet1.scales_vplan", "sheet1.scales_vplans", "sheets.sk112"),
                                             ("μa", 1, "sheet1.scales_aplan", "sheet1.scales_aplans", "sheets.sk114")):
@@ -217,7 +218,8 @@ def scale_rows(mu_l: float, scale_text: str, pairs: dict[int, tuple[Plan, Plan]]
         for j, plans in pairs.items():
             by_mu.setdefault(format_significant(plans[which].scale, 4), []).append(j)
         for mu, positions in by_mu.items():
-            name = tr(one if len(positions) == 1 else many, i=_positions_text(positions))
+            name = (tr(f"sheet1.scales_{'va'[which]}plan_given") if given
+                    else tr(one if len(positions) == 1 else many, i=_positions_text(positions)))
             rows.append((symbol, name, tr(value, v1=mu)))
         if which == 0 and small:
             rows.append(("μv", tr("sheet1.scales_small", last=len(small) - 1),

@@ -273,13 +273,14 @@ def table_rows(plans_by_position: Mapping[int, tuple[Any, Any]], small: bool, di
     return 1 + len(v) + len(a) + (1 if small else 0) + (7 if diagrams else 0)
 
 
-def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, language: str | None = None) -> float:
+def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, language: str | None = None,
+                       given: bool = False) -> float:
     """The width (mm) of sheet 1's table «Масштабы» from its own lines — the rows
     drawings.sheets.kinematics.scale_rows writes: μl with the scheme's ratio, the μv and μa of the
     plan positions (positions sharing a μ on one line), the small velocity plans' μv (the widest
     of the crank vectors ``SMALL_PLAN_MM`` the sheet may choose), the ``diagrams``' scales and pole
     distances — measured as the sheet measures them (:mod:`.lettering`), in ``language`` (default
-    the task's)."""
+    the task's); ``given``: the control work's one position, its plans named without a number."""
     from ..numbers import plain, significant
     from ..plans import round_scale
     from .lettering import scales_table_width as width
@@ -290,7 +291,8 @@ def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, lan
         for j, pair in project.plans_by_position.items():
             by_mu.setdefault(significant(pair[which].scale, 4), []).append(j)
         for mu, positions in by_mu.items():
-            names.append((one if len(positions) == 1 else many, ", ".join(str(j) for j in sorted(positions))))
+            names.append((one + "_given", "") if given else
+                         (one if len(positions) == 1 else many, ", ".join(str(j) for j in sorted(positions))))
             values.append((unit, mu))
     if small:
         kin = project.kinematics
@@ -371,7 +373,7 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     pairs = project.plans_by_position
     rows = table_rows(pairs, small=not control, diagrams=diagrams is not None)
     # the A3 field has no room for the table: each view prints its scale
-    table = [] if fmt == "A3" else [Request("scales", scales_table_width(project, k, ratio, diagrams, small=not control),
+    table = [] if fmt == "A3" else [Request("scales", scales_table_width(project, k, ratio, diagrams, small=not control, given=bool(control)),
                                             TABLE_ROW_MM * (rows + 1) + TABLE_TITLE_MM, "bottom-right")]
     a3 = fmt == "A3"
     titles = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)

@@ -32,20 +32,20 @@ def text_width(text: str, height: float) -> float:
 TABLE_TEXT_MM, TABLE_CELL_PAD_MM = 3.5, 5.0
 #: The fixed part of each line of the table (the catalogue's words; the values a task puts in left
 #: out), in characters, per language: the symbol column's header «Обозн.», the name column's lines
-#: by their catalogue key, the value column's by their unit («0,0025 м/мм» is the value and 5
+#: by their catalogue key (``*_given``: the control work's one position), the value column's by their unit («0,0025 м/мм» is the value and 5
 #: characters); the diagrams' (``_m`` a slider's s, v, a; ``_rad`` a rocker's ψ, ω, ε) the longest
 #: of the three. tests/scenes/test_lettering.py derives them from the catalogues.
 SCALES_TABLE_CHARS: Mapping[str, Mapping[str, int]] = {
     "ru": {"symbol": 6, "header_name": 8, "header_value": 7, "scheme": 9, "vplan": 25, "vplans": 26,
-           "aplan": 25, "aplans": 26, "small": 28, "phi_axis": 16, "t_axis": 16, "pole": 19,
+           "aplan": 25, "aplans": 26, "vplan_given": 34, "aplan_given": 34, "small": 28, "phi_axis": 16, "t_axis": 16, "pole": 19,
            "diagrams_m": 21, "diagrams_rad": 28, "value_l": 5, "value_v": 9, "value_a": 10, "value_phi": 7,
            "value_t": 5, "value_mm": 3, "value_m": 10, "value_rad": 12},
     "uk": {"symbol": 5, "header_name": 8, "header_value": 7, "scheme": 9, "vplan": 26, "vplans": 26,
-           "aplan": 26, "aplans": 26, "small": 28, "phi_axis": 16, "t_axis": 16, "pole": 16,
+           "aplan": 26, "aplans": 26, "vplan_given": 34, "aplan_given": 34, "small": 28, "phi_axis": 16, "t_axis": 16, "pole": 16,
            "diagrams_m": 20, "diagrams_rad": 29, "value_l": 5, "value_v": 9, "value_a": 10, "value_phi": 7,
            "value_t": 5, "value_mm": 3, "value_m": 10, "value_rad": 12},
     "en": {"symbol": 6, "header_name": 8, "header_value": 5, "scheme": 14, "vplan": 29, "vplans": 31,
-           "aplan": 33, "aplans": 35, "small": 33, "phi_axis": 16, "t_axis": 16, "pole": 13,
+           "aplan": 33, "aplans": 35, "vplan_given": 38, "aplan_given": 42, "small": 33, "phi_axis": 16, "t_axis": 16, "pole": 13,
            "diagrams_m": 20, "diagrams_rad": 28, "value_l": 5, "value_v": 9, "value_a": 10, "value_phi": 7,
            "value_t": 5, "value_mm": 3, "value_m": 10, "value_rad": 12},
 }

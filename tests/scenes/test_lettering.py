@@ -71,6 +71,7 @@ def _fixed_chars(lang: str) -> dict[str, int]:
             "scheme": ("sheets.sk109", {"scale_text": ""}), "vplan": ("sheet1.scales_vplan", {"i": ""}),
             "vplans": ("sheet1.scales_vplans", {"i": ""}), "aplan": ("sheet1.scales_aplan", {"i": ""}),
             "aplans": ("sheet1.scales_aplans", {"i": ""}), "small": ("sheet1.scales_small", {"last": ""}),
+            "vplan_given": ("sheet1.scales_vplan_given", {}), "aplan_given": ("sheet1.scales_aplan_given", {}),
             "phi_axis": ("sheets.sk115", {}), "t_axis": ("sheets.sk117", {}), "pole": ("sheets.sk119", {}),
             "value_l": ("sheets.sk110", {"v1": ""}), "value_v": ("sheets.sk112", {"v1": ""}),
             "value_a": ("sheets.sk114", {"v1": ""}), "value_phi": ("sheets.sk116", {"v1": ""}),
