@@ -3,6 +3,7 @@ scheme (a bar on the rocker; a triangular rocker whose crank cannot turn fully, 
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
 
@@ -43,6 +44,22 @@ def test_new_build_without_latex(tmp_path):
     assert 390.0 < max(xs) - min(xs) <= 420.0                    # A3 (420 × 297), not A1 (841)
     r = json.loads((out / "results.json").read_text(encoding="utf-8"))
     assert r["kinetostatics"]["phi_deg"] == pytest.approx(100.0)
+
+
+@pytest.mark.parametrize("a3", [False, True], ids=["A1", "A3"])
+def test_the_sheet_names_the_given_position_not_a_number(tmp_path, a3):
+    """A control work has one position: its sheet's plan titles and table «Масштабы» say «заданного
+    положения» (on A1 they printed «План скоростей положения 0», «план … положения 0»)."""
+    import ezdxf
+    task = _new(tmp_path, 4, 1, a3=a3)
+    out = tmp_path / "out"
+    assert main(["build", str(task), "-o", str(out), "--no-pdf", "--quiet"]) == 0
+    doc = ezdxf.readfile(out / "sheets" / "sheet1-control.dxf")
+    texts = [e.dxf.text if e.dxftype() == "TEXT" else e.text for e in doc.modelspace().query("TEXT MTEXT")]
+    assert not [t for t in texts if re.search(r"положени[яей]\s*\d", t)], texts
+    assert "План скоростей" in texts and "План ускорений" in texts
+    if not a3:                                                   # A1 has the table «Масштабы»
+        assert "план скоростей заданного положения" in texts
 
 
 @pytest.mark.slow
