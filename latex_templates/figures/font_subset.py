@@ -62,7 +62,13 @@ class SourceFont:
         self.glyf = font["glyf"]
         self.metrics = font["hmtx"].metrics
         self.raw = {tag: font.reader[tag] for tag in _RAW_TABLES if tag in font.reader}
-        self.cmaps = [t for t in font["cmap"].tables if t.isUnicode() and t.format in (4, 12)]
+        self.cmaps = []                 # the Unicode subtables, each as glyph name → its code points
+        for table in font["cmap"].tables:
+            if table.isUnicode() and table.format in (4, 12):
+                codes: dict[str, list[int]] = {}
+                for code, name in table.cmap.items():
+                    codes.setdefault(name, []).append(code)
+                self.cmaps.append((table, codes))
         self.head, self.hhea, self.maxp, self.post = font["head"], font["hhea"], font["maxp"], font["post"]
         self.name = font["name"] if "name" in font else None
 
@@ -112,13 +118,12 @@ class SourceFont:
         post = copy.copy(self.post)
         post.extraNames, post.mapping = [], {}
         out["post"] = post
-        kept = set(order)
         cmap = ttLib.newTable("cmap")
         cmap.tableVersion, cmap.tables = 0, []
-        for table in self.cmaps:
+        for table, codes in self.cmaps:
             sub = CmapSubtable.newSubtable(table.format)
             sub.platformID, sub.platEncID, sub.language = table.platformID, table.platEncID, table.language
-            sub.cmap = {code: name for code, name in table.cmap.items() if name in kept}
+            sub.cmap = {code: name for name in order for code in codes.get(name, ())}
             if sub.cmap:
                 cmap.tables.append(sub)
         out["cmap"] = cmap
