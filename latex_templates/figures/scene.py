@@ -352,20 +352,20 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
             rivals = rivals + list(leaders)
     if point and others:
         others = _others_of(lb.at, others)
-    passes = [(cands, lb.leader)]
-    if not lb.leader:            # the last resort: farther out, tied to the anchor by a leader
-        passes.append((_leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True))
-    if uncrossed:                # and farther still, on a leader, the nearest free spot of a grid
-        reach = 12.0 * gap / 0.8
-        step = gap * 2.5
-        n = int(reach / step)
-        px, py = float(lb.at[0]), float(lb.at[1])
-        grid = sorted(((px + i * step, py + j * step) for i in range(-n, n + 1) for j in range(-n, n + 1)
-                       if 0 < math.hypot(i, j) * step <= reach),
-                      key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q))
-        passes.append((grid, True))
+    def passes():                # each made only when the passes before it found no free box
+        yield cands, lb.leader
+        if not lb.leader:        # the last resort: farther out, tied to the anchor by a leader
+            yield _leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True
+        if uncrossed:            # and farther still, on a leader, the nearest free spot of a grid
+            reach = 12.0 * gap / 0.8
+            step = gap * 2.5
+            n = int(reach / step)
+            px, py = float(lb.at[0]), float(lb.at[1])
+            yield sorted(((px + i * step, py + j * step) for i in range(-n, n + 1) for j in range(-n, n + 1)
+                          if 0 < math.hypot(i, j) * step <= reach),
+                         key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q)), True
     first = None
-    for group, leader in passes:
+    for group, leader in passes():
         best = None
         for rank, c in enumerate(group):
             box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
