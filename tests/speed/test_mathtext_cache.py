@@ -81,6 +81,7 @@ def _key(parse) -> tuple:
             [(g[0].fname, *g[1:]) for g in parse.glyphs], list(parse.rects))
 
 
+@pytest.mark.slow          # ~500 parses twice: seconds of CPU (docs/testing.md)
 def test_a_short_formula_parses_the_same_without_pyparsings_memo():
     from matplotlib.font_manager import FontProperties
     from matplotlib.ft2font import LoadFlags
