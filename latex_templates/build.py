@@ -133,7 +133,39 @@ def start_pdf(tex_path: Path | str, *, latexmk: str = "latexmk", strict_referenc
 
 class PendingPasses(PendingPdf):
     """xelatex's first pass running on placeholder figures (:mod:`latex_templates.passes`);
-    :meth:`figures_ready` lets it go on with the real ones; :meth:`wait` as for latexmk."""
+    :meth:`figures_ready` lets it go on with the real ones; :meth:`wait` as for latexmk.
+    ``preamble``: the preamble a split first pass reads (:func:`start_split_passes`), before the
+    note is written (:meth:`note_written`)."""
+
+    def __init__(self, tex: Path, proc: subprocess.Popen, strict_references: bool,
+                 preamble: str | None = None) -> None:
+        super().__init__(tex, proc, strict_references)
+        self.preamble = preamble
+
+    def note_written(self) -> bool:
+        """The note is written: for a split first pass, write its body for the pass when its
+        preamble is the one the pass reads; False when it is not (the caller cancels this pass
+        and starts one on the note as it is). True at once for a pass on the whole note."""
+        from .passes import BODY_FILE, split_note
+
+        if self.preamble is None:
+            return True
+        parts = split_note(self.tex.read_text(encoding="utf-8"))
+        if parts is None or parts[0] != self.preamble:
+            return False
+        body = self.tex.parent / BUILD_DIR / BODY_FILE
+        part = body.with_name(body.name + ".part")
+        part.write_text(parts[1], encoding="utf-8")
+        part.replace(body)
+        return True
+
+    def cancel(self) -> None:
+        super().cancel()
+        if self.preamble is not None:        # the split pass's files, when it was stopped before it ended
+            from .passes import BODY_FILE, PREAMBLE_FILE
+
+            for name in (PREAMBLE_FILE, BODY_FILE):
+                (self.tex.parent / BUILD_DIR / name).unlink(missing_ok=True)
 
     def placeholders_ready(self) -> None:
         """The figures' placeholders are written: pass 1, its preamble read meanwhile, may go on
@@ -192,6 +224,33 @@ def start_passes(tex_path: Path | str, *, strict_references: bool = True,
     if placeholders:
         pending.placeholders_ready()
     return pending
+
+
+def start_split_passes(tex_path: Path | str, preamble: str, *, strict_references: bool = True,
+                       source_date_epoch: str | None = None) -> PendingPasses | None:
+    """Start a rebuild's first xelatex pass before its note is written, on ``preamble`` (the last
+    build's, ending with the line ``\\begin{document}``; the auxiliary files of that build restored
+    in ``latex-build/`` already): it reads the preamble (≈ 0.7 s of a pass) while the note is
+    composed, then waits. :meth:`PendingPasses.note_written` gives it the note's body when the
+    note's preamble is the same; the passes then go on as :func:`start_passes`'s. None when TeX is
+    missing (the build's ordinary start says so) or the names do not allow a split pass."""
+    import sys
+
+    from .passes import PREAMBLE_FILE, first_pass_command, split_stub
+
+    tex = Path(tex_path).resolve()
+    work = tex.parent
+    build_dir = work / BUILD_DIR
+    if (any(shutil.which(program) is None for program in ("xelatex", "xdvipdfmx"))
+            or first_pass_command(tex.name, BUILD_DIR, split=True) is None
+            or not (build_dir / (tex.stem + ".aux")).is_file()):
+        return None
+    (build_dir / PREAMBLE_FILE).write_text(split_stub(preamble, BUILD_DIR), encoding="utf-8")
+    driver = Path(__file__).with_name("passes.py")
+    proc = subprocess.Popen([sys.executable, str(driver), tex.name, BUILD_DIR, "--split"], cwd=work,
+                            env=tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
+    return PendingPasses(tex, proc, strict_references, preamble)
 
 
 def _write_provisional_toc(tex: Path, build_dir: Path) -> None:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from types import ModuleType
+from typing import Any, Callable
 
 from reportgen.modules import optional_module
 
@@ -52,8 +53,14 @@ def part_module(name: str) -> ModuleType | None:
     return optional_module(f"latex_templates.parts.{name}")
 
 
-def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list[ComposedSection], list]:
-    """Sections with their parts' content; also the titles of the sections left out."""
+def compose(project, strings, only: tuple[str, ...] | None = None, *,
+            kept: Any = None) -> tuple[list[ComposedSection], list]:
+    """Sections with their parts' content; also the titles of the sections left out.
+
+    ``kept`` (the build's cache of sections, ``reportgen.commands.note_cache.KeptSections``): a
+    section it keeps for the parts available is taken from it, else made (``kept.section(key,
+    title, names, make)``), the parts reading the project through the view it gives
+    (``kept.view``: their reads recorded)."""
     out: list[ComposedSection] = []
     left_out: list = []
     kind = getattr(project.task, "kind", "course-project")
@@ -61,21 +68,34 @@ def compose(project, strings, only: tuple[str, ...] | None = None) -> tuple[list
         title = strings.get(f"sections.{key}")
         if only is not None and key not in only:
             continue
-        contents: list[tuple[str, PartContent]] = []
-        for name in parts:
-            mod = part_module(name)
-            if mod is None or not mod.available(project):
-                continue
-            with active_strings(strings):
-                contents.append((name, mod.content(Needs(project, mod.NEEDS, f"part {name}"))))
-        if not contents:
+        mods = [(name, mod) for name in parts
+                if (mod := part_module(name)) is not None and mod.available(project)]
+        if not mods:
             left_out.append(title)
             continue
-        figures: dict = {}
-        for _, pc in contents:
-            figures.update(pc.figures)
-        ctx = {"parts": [{"name": n, "template": pc.template, "context": pc.context} for n, pc in contents]}
-        section = Section(key=key, title=title, template="sections/composite.tex.j2", context=ctx, figures=figures)
-        concl = tuple(s for _, pc in contents for s in pc.conclusions)
-        out.append(ComposedSection(section, tuple(n for n, _ in contents), concl))
+        view = kept.view if kept is not None else None
+
+        def make(key: str = key, title: str = title, mods: list = mods, view: Any = view) -> ComposedSection:
+            return compose_section(project, strings, key, title, mods, view)
+
+        out.append(kept.section(key, title, tuple(n for n, _ in mods), make) if kept is not None else make())
     return out, left_out
+
+
+def compose_section(project, strings, key: str, title: str, mods: list[tuple[str, ModuleType]],
+                    view: Callable[[str, str, ModuleType], Any] | None = None) -> ComposedSection:
+    """The section ``key`` of the part modules ``mods`` ((name, module), each available), each
+    part reading the project through ``view(key, name, module)`` (default: a :class:`Needs` of the
+    stages it declares)."""
+    contents: list[tuple[str, PartContent]] = []
+    for name, mod in mods:
+        needs = view(key, name, mod) if view is not None else Needs(project, mod.NEEDS, f"part {name}")
+        with active_strings(strings):
+            contents.append((name, mod.content(needs)))
+    figures: dict = {}
+    for _, pc in contents:
+        figures.update(pc.figures)
+    ctx = {"parts": [{"name": n, "template": pc.template, "context": pc.context} for n, pc in contents]}
+    section = Section(key=key, title=title, template="sections/composite.tex.j2", context=ctx, figures=figures)
+    concl = tuple(s for _, pc in contents for s in pc.conclusions)
+    return ComposedSection(section, tuple(n for n, _ in contents), concl)

@@ -38,6 +38,11 @@ MAX_PASSES = 5
 #: Files of the output folder that are not auxiliary input of the next pass.
 _NOT_AUX = {".log", ".xdv", ".fls", ".pdf", ".fdb_latexmk"}
 CANCELLED = 3
+#: The split first pass's two files in the build folder (:func:`split_note`): not auxiliary files,
+#: removed when that pass ends.
+SPLIT_PREFIX = ".reportgen-"
+PREAMBLE_FILE, BODY_FILE = SPLIT_PREFIX + "preamble.tex", SPLIT_PREFIX + "body.tex"
+_BEGIN_DOCUMENT = "\\begin{document}"
 
 
 def xelatex_command(tex_name: str, build_dir: str) -> list[str]:
@@ -52,7 +57,30 @@ def xdvipdfmx_command(stem: str, build_dir: str) -> list[str]:
 
 def _aux_state(build_dir: Path) -> dict[str, bytes]:
     return {p.name: p.read_bytes() for p in sorted(build_dir.iterdir())
-            if p.is_file() and p.suffix not in _NOT_AUX}
+            if p.is_file() and p.suffix not in _NOT_AUX and not p.name.startswith(SPLIT_PREFIX)}
+
+
+def split_note(text: str) -> tuple[str, str] | None:
+    """A note's text as (its preamble through the line ``\\begin{document}``, the lines after it),
+    or None when no line is exactly ``\\begin{document}``. A rebuild's first pass reads the
+    preamble of the last build's note before the new note is written (:func:`split_stub`) and the
+    new note's body once it is, when its preamble is the same text."""
+    start = 0
+    while True:
+        end = text.find("\n", start)
+        if end < 0:
+            return None
+        if text[start:end] == _BEGIN_DOCUMENT:
+            return text[:end + 1], text[end + 1:]
+        start = end + 1
+
+
+def split_stub(preamble: str, build_dir: str) -> str:
+    """What the split first pass reads (:data:`PREAMBLE_FILE`): ``preamble`` (ending with the line
+    ``\\begin{document}``), then the body file read by TeX's own ``\\input`` (``\\@@input``, LaTeX's
+    file hooks left out): TeX reads the same lines as from the whole note, one file deeper — the
+    same .xdv and auxiliary bytes (tests/speed/test_latex_passes.py)."""
+    return preamble + f"\\csname @@input\\endcsname {build_dir}/{BODY_FILE}\n"
 
 
 def _run(cmd: list[str], cwd: Path) -> int:
@@ -98,7 +126,7 @@ class Signal:
         return self._said or b""
 
 
-def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes]) -> int:
+def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes], *, split: bool = False) -> int:
     """The passes until the auxiliary files are stable on figures known to have their real page
     boxes, then xdvipdfmx. Returns an exit status.
 
@@ -106,6 +134,9 @@ def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes]) -> int:
     waits at ``\\begin{document}`` for the placeholders (:func:`_first_pass`). While nothing is said
     of the figures (they are being saved), the passes go on on the placeholders until the auxiliary
     files are stable there: a pass that left them as it found them is not followed by another.
+    ``split``: pass 1 reads :data:`PREAMBLE_FILE` (the last build's preamble, started before the
+    note is written) and then :data:`BODY_FILE`, which the build writes before the placeholders;
+    both are removed when pass 1 ends. The passes after it read the note itself.
     :data:`SAME_BOXES` makes every pass count as one on the real figures (xelatex reads nothing of
     a figure but its page box, the same in both): a stable pass already made is the last.
     :data:`FIGURES_REAL` (a box may differ) counts only the passes started after it was said, so at
@@ -120,7 +151,15 @@ def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes]) -> int:
         # pass 1 counts as one on the placeholders whenever the byte came (the build starts the
         # driver before it saves the figures): the count of passes does not depend on a race
         said_at_start = signal.poll() if early_passes + real_passes else None
-        status = _xelatex(tex, build_dir_name) if early_passes + real_passes else _first_pass(tex, build_dir_name, signal)
+        if early_passes + real_passes:
+            status = _xelatex(tex, build_dir_name)
+        else:
+            try:
+                status = _first_pass(tex, build_dir_name, signal, split)
+            finally:
+                if split:
+                    for name in (PREAMBLE_FILE, BODY_FILE):
+                        (build_dir / name).unlink(missing_ok=True)
         if status != 0:
             return status
         if said_at_start:
@@ -157,21 +196,24 @@ WAIT_HOOK = r"\AddToHook{begindocument/before}{\errorstopmode\read-1to\reportgen
 _SIMPLE_NAME = re.compile(r"[A-Za-z0-9_.-]+\.tex")
 
 
-def first_pass_command(tex_name: str, build_dir: str) -> list[str] | None:
+def first_pass_command(tex_name: str, build_dir: str, *, split: bool = False) -> list[str] | None:
     """Pass 1 as :func:`xelatex_command`, that reads the preamble at once and waits at
     ``\\begin{document}`` (:data:`WAIT_HOOK`): the same .xdv and auxiliary files (the job's name
     given, the file read by ``\\input``), the preamble's ≈ 0.7 s spent while the build writes the
-    figures' placeholders. None for a file name that ``\\input`` would read otherwise."""
-    if not _SIMPLE_NAME.fullmatch(tex_name):
+    figures' placeholders. ``split``: the preamble read from :data:`PREAMBLE_FILE`, the body then
+    from :data:`BODY_FILE` (:func:`split_stub`). None for a file name that ``\\input`` would read
+    otherwise."""
+    if not _SIMPLE_NAME.fullmatch(tex_name) or not _SIMPLE_NAME.fullmatch(f"{build_dir}.tex"):
         return None
+    source = f"{build_dir}/{PREAMBLE_FILE}" if split else tex_name
     return ["xelatex", "-no-pdf", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
-            f"-output-directory={build_dir}", f"-jobname={tex_name[:-4]}", WAIT_HOOK + r"\input " + tex_name]
+            f"-output-directory={build_dir}", f"-jobname={tex_name[:-4]}", WAIT_HOOK + r"\input " + source]
 
 
-def _first_pass(tex: Path, build_dir_name: str, signal: Signal) -> int:
+def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = False) -> int:
     """Pass 1, started at once and let on into the document's body once the placeholders are
     there; stopped (:data:`CANCELLED`) when the build fails before."""
-    cmd = first_pass_command(tex.name, build_dir_name)
+    cmd = first_pass_command(tex.name, build_dir_name, split=split)
     if cmd is None:
         signal.placed.wait()
         return CANCELLED if signal.poll() == b"" else _xelatex(tex, build_dir_name)
@@ -244,10 +286,11 @@ def _byte_from_stdin() -> bytes:
 
 def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
-    if len(args) != 2:
-        print("usage: python -m latex_templates.passes TEX BUILD_DIR", file=sys.stderr)
+    split = args[2:] == ["--split"]
+    if len(args) != 2 and not split:
+        print("usage: python -m latex_templates.passes TEX BUILD_DIR [--split]", file=sys.stderr)
         return 2
-    return drive(Path(args[0]).resolve(), args[1], _byte_from_stdin)
+    return drive(Path(args[0]).resolve(), args[1], _byte_from_stdin, split=split)
 
 
 if __name__ == "__main__":

@@ -44,7 +44,8 @@ from pathlib import Path
 from typing import Callable, Mapping
 
 #: Newest entries kept of each kind.
-KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60}
+KEEP = {"builds": 12, "previews": 200, "tex": 12, "figures": 400, "sheets": 60, "sections": 60,
+        "scenes": 60}
 #: Source files whose bytes make the code's fingerprint.
 _SOURCE_SUFFIXES = (".py", ".j2", ".toml", ".tex", ".sty", ".lff", ".ttf", ".otf")
 _LIBRARIES = ("numpy", "scipy", "matplotlib", "ezdxf", "shapely", "jinja2", "fonttools", "pyparsing")
@@ -226,6 +227,8 @@ class BuildCache:
         self.tex_key = _digest("tex", str(task_path))
         self.figures_reused = 0     # figures copied from the cache in this build (the note's figures)
         self.figures_saved = 0      # figures saved and stored in this build
+        self.sections_reused = 0    # the note's sections whose text came from the cache
+        self.sections = 0           # the note's sections (composed or kept)
         self._read_digests: dict[tuple, str | None] = {}   # a sheet's read → its digest, this build
 
     # -- whole builds ------------------------------------------------------------------------
@@ -246,20 +249,47 @@ class BuildCache:
         self._store_dir("builds", self.build_key, tmp)
 
     # -- LaTeX's auxiliary files ---------------------------------------------------------------
+    #: The preamble of the last build's note, kept in its ``tex/`` entry (not copied to the build).
+    TEX_PREAMBLE = ".reportgen-preamble"
+
     def restore_tex(self, build_dir: Path) -> bool:
         entry = self.root / "tex" / self.tex_key
         if not (entry / ".complete").is_file():
             return False
         try:
-            _copy_tree(entry, build_dir)
+            build_dir.mkdir(parents=True, exist_ok=True)
+            for item in entry.iterdir():
+                if item.is_dir():
+                    _copy_tree(item, build_dir / item.name)
+                elif item.name not in (".complete", self.TEX_PREAMBLE):
+                    shutil.copyfile(item, build_dir / item.name)
         except OSError:
             return False
-        (build_dir / ".complete").unlink(missing_ok=True)
         return True
 
-    def store_tex(self, build_dir: Path) -> None:
-        if build_dir.is_dir():
-            self._store_dir("tex", self.tex_key, build_dir, replace=True)
+    def tex_preamble(self) -> str | None:
+        """The preamble of the note whose auxiliary files :meth:`restore_tex` restores (through
+        its line ``\\begin{document}``), or None when the entry keeps none."""
+        entry = self.root / "tex" / self.tex_key
+        if not (entry / ".complete").is_file():
+            return None
+        try:
+            return (entry / self.TEX_PREAMBLE).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            return None
+
+    def store_tex(self, build_dir: Path, preamble: str | None = None) -> None:
+        """Keep LaTeX's working folder of this build (and ``preamble``, its note's preamble)."""
+        if not build_dir.is_dir():
+            return
+
+        def fill(part: Path) -> None:
+            _copy_tree(build_dir, part)
+            if preamble is not None:
+                (part / self.TEX_PREAMBLE).write_text(preamble, encoding="utf-8")
+
+        if _publish(self.root / "tex" / self.tex_key, fill):
+            _prune(self.root / "tex", KEEP["tex"])
 
     # -- sheet previews ------------------------------------------------------------------------
     def _preview_path(self, dxf: Path) -> Path:
@@ -283,9 +313,9 @@ class BuildCache:
             return
         _prune(dst.parent, KEEP["previews"])
 
-    # -- whole sheets ---------------------------------------------------------------------------
-    def _sheet_base(self, identity: str) -> Path:
-        return self.root / "sheets" / _digest("sheet", self.code, identity)
+    # -- what is kept under what it read: whole sheets, the note's sections -------------------
+    def _variants_base(self, kind: str, identity: str) -> Path:
+        return self.root / kind / _digest(kind, self.code, identity)
 
     def _digest_of(self, project: object, read: tuple, mask: bool) -> str | None:
         from .read_trace import read_digest
@@ -293,14 +323,95 @@ class BuildCache:
         memo = (read, mask)
         if memo not in self._read_digests:
             try:
-                self._read_digests[memo] = read_digest(project, read, mask_masses=mask)
+                found = self._scene_digest(project, read, mask) if read[0] == "scenes" else None
+                self._read_digests[memo] = found or read_digest(project, read, mask_masses=mask)
+                if read[0] == "scenes" and found is None:
+                    self._keep_scene_digest(project, read, mask, self._read_digests[memo])
             except Exception:  # noqa: BLE001 - a stage that fails now, or data without a canonical form: no hit
                 self._read_digests[memo] = None
         return self._read_digests[memo]
 
+    # -- a scene's digest kept under its inputs' ----------------------------------------------
+    _SCENE_INPUTS = ".inputs.json"     # in a scene's entry: what it reads (kept by pruning: a dot)
+
+    def _scene_entry(self, name: str) -> Path:
+        return self.root / "scenes" / _digest("scene-inputs", self.code, name)
+
+    def _scene_key(self, project: object, mask: bool, inputs: list[tuple]) -> str | None:
+        """The digest of the values of a scene's ``inputs`` on ``project`` (masses never left out:
+        a scene may draw them), with the mask its own digest is made with."""
+        import json
+
+        digests = [self._digest_of(project, r, False) for r in inputs]
+        if any(d is None for d in digests):
+            return None
+        return _digest("scene", json.dumps(inputs), str(mask), *[d for d in digests if d is not None])
+
+    def _scene_digest(self, project: object, read: tuple, mask: bool) -> str | None:
+        """The digest of the scene ``read`` names, kept under the digest of what it reads
+        (:func:`reportgen.read_trace.scene_inputs`), when the values it reads on ``project`` are
+        those it was kept under: the scene need not be made. None otherwise."""
+        import json
+
+        entry = self._scene_entry(read[1])
+        try:
+            found_inputs = json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return None
+        if not isinstance(found_inputs, list):       # a scene not kept by its inputs (opaque)
+            return None
+        inputs = [tuple(r) for r in found_inputs]
+        key = self._scene_key(project, mask, inputs)
+        if key is None:
+            return None
+        try:
+            found = (entry / key).read_text(encoding="utf-8").strip()
+        except OSError:
+            return None
+        _touch(entry / key)
+        return found or None
+
+    def _keep_scene_digest(self, project: object, read: tuple, mask: bool, digest: str | None) -> None:
+        """Keep ``digest`` of the scene ``read`` names under the digest of its inputs (found once
+        per code: the scene made again on a recording view of the project)."""
+        import json
+
+        from .read_trace import scene_inputs
+
+        if digest is None or len(read) != 2:
+            return
+        entry = self._scene_entry(read[1])
+        try:
+            known = json.loads((entry / self._SCENE_INPUTS).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            known = scene_inputs(project, read[1])
+            try:                       # null: not kept by its inputs (not tried again with this code)
+                entry.mkdir(parents=True, exist_ok=True)
+                _write_atomic(entry / self._SCENE_INPUTS, json.dumps(known))
+            except OSError:
+                return
+        if not isinstance(known, list):
+            return
+        inputs = [tuple(r) for r in known]
+        key = self._scene_key(project, mask, inputs)
+        if key is None:
+            return
+        try:
+            _write_atomic(entry / key, digest)
+        except OSError:
+            return
+        _prune(entry, 16)                     # a few values of each scene (an edit undone is a hit)
+        _touch(entry)
+        _prune(entry.parent, KEEP["scenes"])
+
+    def scene_kept(self, project: object, name: str) -> bool:
+        """Whether the digest of ``project.scenes.<name>`` is known without making it."""
+        return self._scene_digest(project, ("scenes", name), False) is not None \
+            or self._scene_digest(project, ("scenes", name), True) is not None
+
     def _variant(self, project: object, reads: list[tuple]) -> str | None:
-        """The name of the variant of a sheet whose ``reads`` have the values they have on
-        ``project`` (None when one of them cannot be digested)."""
+        """The name of the variant of a sheet (or section) whose ``reads`` have the values they
+        have on ``project`` (None when one of them cannot be digested)."""
         from .read_trace import masks_masses
 
         mask = masks_masses(reads)
@@ -310,17 +421,17 @@ class BuildCache:
         import json
         return _digest("variant", json.dumps(reads), *[d for d in digests if d is not None])
 
-    def restore_sheet(self, identity: str, project: object, files: dict[str, Path]) -> bool:
-        """Copy the files of the sheet ``identity`` (the sheet module, its number and count, the
-        language) drawn from a project whose every read value (:mod:`reportgen.read_trace`) equals
-        ``project``'s; ``files``: the kept file's name → where it goes. False when there is none."""
+    def find_variant(self, kind: str, identity: str, project: object) -> Path | None:
+        """The entry of ``kind`` (``sheets``, ``sections``) named ``identity`` that was made from a
+        project whose every read value (:mod:`reportgen.read_trace`) equals ``project``'s; None
+        when there is none. Its use is noted (the newest entries are kept)."""
         import json
 
-        base = self._sheet_base(identity)
+        base = self._variants_base(kind, identity)
         try:
             variants = [p for p in base.iterdir() if (p / ".complete").is_file()]
         except OSError:
-            return False
+            return None
         tried: set[str] = set()
         for entry in sorted(variants, key=lambda p: p.stat().st_mtime, reverse=True):
             try:
@@ -332,39 +443,80 @@ class BuildCache:
                 continue
             tried.add(name)
             found = base / name
-            if not (found / ".complete").is_file():
-                continue
-            try:
-                for kept, target in files.items():
-                    _copy_atomic(found / kept, target)
-            except OSError:
-                return False
-            _touch(found)
-            _touch(base)
-            return True
-        return False
+            if (found / ".complete").is_file():
+                _touch(found)
+                _touch(base)
+                return found
+        return None
 
-    def store_sheet(self, identity: str, project: object, reads: list[tuple], files: dict[str, Path]) -> None:
-        """Keep the sheet's ``files`` (name → the file made) under its reads' values on ``project``."""
+    def store_variant(self, kind: str, identity: str, project: object, reads: list[tuple],
+                      fill: Callable[[Path], None], *, replace: bool = False) -> None:
+        """Keep what ``fill(folder)`` writes as the entry of ``kind`` named ``identity`` under its
+        ``reads``' values on ``project`` (``replace``: over an entry of the same values)."""
         import json
 
         name = self._variant(project, reads)
         if name is None:
             return
-        base = self._sheet_base(identity)
+        base = self._variants_base(kind, identity)
         entry = base / name
-        if (entry / ".complete").is_file():
+        if (entry / ".complete").is_file() and not replace:
             return
 
+        def fill_all(part: Path) -> None:
+            fill(part)
+            (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
+
+        if not _publish(entry, fill_all):
+            return
+        _prune(base, 4)                       # a few variants of each (an edit undone is a hit)
+        _prune(base.parent, KEEP[kind])
+
+    def restore_sheet(self, identity: str, project: object, files: dict[str, Path]) -> bool:
+        """Copy the files of the sheet ``identity`` (the sheet module, its number and count, the
+        language) drawn from a project whose every read value (:mod:`reportgen.read_trace`) equals
+        ``project``'s; ``files``: the kept file's name → where it goes. False when there is none."""
+        found = self.find_variant("sheets", identity, project)
+        if found is None:
+            return False
+        try:
+            for kept, target in files.items():
+                _copy_atomic(found / kept, target)
+        except OSError:
+            return False
+        return True
+
+    def store_sheet(self, identity: str, project: object, reads: list[tuple], files: dict[str, Path]) -> None:
+        """Keep the sheet's ``files`` (name → the file made) under its reads' values on ``project``."""
         def fill(part: Path) -> None:
             for kept, made in files.items():
                 shutil.copyfile(made, part / kept)
-            (part / "reads.json").write_text(json.dumps(reads), encoding="utf-8")
 
-        if not _publish(entry, fill):
-            return
-        _prune(base, 4)                       # a few variants of each sheet (an edit undone is a hit)
-        _prune(base.parent, KEEP["sheets"])
+        self.store_variant("sheets", identity, project, reads, fill)
+
+    def restore_section(self, identity: str, project: object) -> dict | None:
+        """What :meth:`store_section` kept of the note's section ``identity`` for a project whose
+        every read value equals ``project``'s; None when nothing."""
+        import json
+
+        found = self.find_variant("sections", identity, project)
+        if found is None:
+            return None
+        try:
+            data = json.loads((found / "section.json").read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return None
+        return data if isinstance(data, dict) else None
+
+    def store_section(self, identity: str, project: object, reads: list[tuple], data: dict) -> None:
+        """Keep ``data`` (JSON: the section as rendered, :mod:`reportgen.commands.note_cache`)
+        under its reads' values on ``project``, over what was kept for the same values."""
+        import json
+
+        def fill(part: Path) -> None:
+            (part / "section.json").write_text(json.dumps(data, ensure_ascii=False), encoding="utf-8")
+
+        self.store_variant("sections", identity, project, reads, fill, replace=True)
 
     # -- the note's figures --------------------------------------------------------------------
     def _figure_path(self, key: str) -> Path:
@@ -478,6 +630,14 @@ def _copy_tree(src: Path, dst: Path) -> None:
             _copy_tree(item, target)
         else:
             shutil.copyfile(item, target)
+
+
+def _write_atomic(dst: Path, text: str) -> None:
+    """Write ``text`` to ``dst`` through a part file renamed into place."""
+    fd, part = tempfile.mkstemp(dir=dst.parent, suffix=".part")
+    with os.fdopen(fd, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(part, dst)
 
 
 def _copy_atomic(src: Path, dst: Path) -> None:

@@ -71,13 +71,19 @@ class TracedNeeds(Needs):
 
 
 class _TracedTask:
-    """``project.task`` for a traced sheet: each section read is recorded."""
+    """``project.task`` for a traced sheet or note section: each section read is recorded;
+    ``task.has(section)`` as the section's presence only."""
 
     def __init__(self, task: Any, trace: Trace) -> None:
         self._task, self._trace = task, trace
 
     def __getattr__(self, name: str) -> Any:
         value = getattr(self._task, name)
+        if name == "has":                      # a section's presence, not its values
+            def has(section: str) -> bool:
+                self._trace.add(("task-has", section))
+                return bool(value(section))
+            return has
         self._trace.add(("task", name) if not callable(value) else OPAQUE)
         return value
 
@@ -108,6 +114,8 @@ def read_value(project: Any, read: tuple) -> Any:
         return getattr(project, read[1])
     if kind == "task":
         return getattr(project.task, read[1])
+    if kind == "task-has":
+        return project.task.has(read[1])
     if kind == "scenes":
         return getattr(project.scenes, read[1])
     if kind == "scenes-call":
@@ -132,3 +140,19 @@ def read_digest(project: Any, read: tuple, *, mask_masses: bool) -> str:
     if read == ("attr", "model"):
         return content_digest(("KinematicModel", project.linkage, project.structure), skip=skip)
     return content_digest(read_value(project, read), skip=skip)
+
+
+def scene_inputs(project: Any, name: str) -> list[tuple] | None:
+    """What the scene ``project.scenes.<name>`` reads of the project (stages, task sections, other
+    scenes), found by making it again on a recording view of the project; None when a read cannot
+    be replayed or the scene cannot be made so. The scene is a function of these values (and of
+    the code): the build cache keeps its digest under theirs, so that a rebuild learns that a scene
+    is the same without making it (:meth:`reportgen.cache.BuildCache.scene_digest`)."""
+    from .scenes.stage import Scenes
+
+    trace = Trace()
+    try:
+        getattr(Scenes(TracedNeeds(project, tuple(sorted(STAGES)), f"scene {name}", trace)), name)
+    except Exception:  # noqa: BLE001 - a scene that needs the real project: not kept by its inputs
+        return None
+    return None if trace.opaque else trace.reads

@@ -214,6 +214,12 @@ class Task:
     control_work: ControlWork | None = None
     source: str = ""
 
+    def has(self, section: str) -> bool:
+        """Whether the task file has the section ``[section]`` (one of the fields above that a file
+        may leave out). What a note or sheet asks when only the section's presence matters: the
+        build cache then records that, not the section's values (:mod:`reportgen.read_trace`)."""
+        return getattr(self, section) is not None
+
     @property
     def kind(self) -> str:
         """The kind of document: [document] kind if given, else "crane" for a task with [crane],

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import copy
 import io
-from typing import Iterable
+from typing import Any, Iterable
 
 #: Tables copied as they are (hinting programs, metrics of the whole font, the grid-fitting table).
 _RAW_TABLES = ("OS/2", "cvt ", "fpgm", "prep", "gasp")
@@ -157,3 +157,47 @@ def source_font(path: str, face: int = 0) -> SourceFont | None:
             found = exc
         _SOURCES[key] = found
     return found if isinstance(found, SourceFont) else None
+
+
+def cut_below(fonttools: Any) -> Any:
+    """A ``get_glyphs_subset`` for matplotlib's PDF backend that cuts the subset from the font read
+    once (:class:`SourceFont`) and asks ``fonttools`` (matplotlib's own, fontTools' subsetter) only
+    for a font it does not cut: the bottom layer under the memory of subsets
+    (:func:`.saving.remember_font_subsets`) and the build cache's subsets on disk
+    (``reportgen/commands/subset_cache.py``). ``fonttools`` already such a layer: returned as is."""
+    from contextlib import nullcontext
+
+    if getattr(fonttools, "reportgen_cut", False):
+        return fonttools
+
+    def get_glyphs_subset(fontfile: Any, glyphs: Any) -> Any:
+        source = source_font(str(fontfile), int(getattr(fontfile, "face_index", 0)))
+        try:
+            found = source.subset(sorted({int(g) for g in glyphs})) if source is not None else None
+        except UnsupportedFont:
+            found = None
+        if found is None:
+            return fonttools(fontfile, glyphs)
+        return nullcontext(CutSubset(CutFont(found[0]), found[1]))
+
+    get_glyphs_subset.reportgen_cut = True              # type: ignore[attr-defined]
+    get_glyphs_subset.reportgen_original = fonttools    # type: ignore[attr-defined]
+    return get_glyphs_subset
+
+
+class CutFont:
+    """A cut subset font as matplotlib's PDF backend uses it: only written out (``save``)."""
+
+    def __init__(self, data: bytes) -> None:
+        self.data = data
+
+    def save(self, file: Any, **_options: Any) -> None:     # reorderTables: the bytes are final
+        file.write(self.data)
+
+
+class CutSubset:
+    """What ``get_glyphs_subset`` yields: the subset font and the old → new glyph numbers."""
+
+    def __init__(self, font: CutFont, glyph_index_map: dict[int, int]) -> None:
+        self.font = font
+        self.glyph_index_map = glyph_index_map

@@ -370,23 +370,6 @@ def _import_pdf_saving() -> None:
         ttLib.getTableClass(tag)
 
 
-class _SubsetFont:
-    """A subset font as matplotlib's PDF backend uses it here: only written out (``save``)."""
-
-    def __init__(self, data: bytes) -> None:
-        self.data = data
-
-    def save(self, file: Any, **_options: Any) -> None:     # reorderTables: the bytes are final
-        file.write(self.data)
-
-
-@dataclass(frozen=True)
-class _Subset:
-    """What ``get_glyphs_subset`` yields: the subset font and the old → new glyph numbers."""
-    font: _SubsetFont
-    glyph_index_map: dict[int, int]
-
-
 #: Subset fonts made in this process: (font file, face, glyphs) → (font bytes, glyph numbers).
 _SUBSETS: dict[tuple[str, int, frozenset[int]], tuple[bytes, dict[int, int]]] = {}
 #: Subsets kept (the oldest forgotten first): a note makes ~70 distinct ones of 10–100 kB, and a
@@ -407,29 +390,24 @@ def remember_font_subsets() -> None:
     written again: the same PDF bytes (tests/speed/test_figure_saving.py)."""
     from matplotlib.backends import _backend_pdf_ps as pdf_ps
 
-    from .font_subset import UnsupportedFont, source_font
+    from .font_subset import CutFont, CutSubset, cut_below
 
     original = pdf_ps.get_glyphs_subset
     if getattr(original, "reportgen_memo", False):
         return
+    if not hasattr(original, "reportgen_original"):    # no layer under it yet (the build cache's
+        original = cut_below(original)                  # subsets on disk put the cut under theirs)
 
     def get_glyphs_subset(fontfile: Any, glyphs: Any) -> Any:
-        face = int(getattr(fontfile, "face_index", 0))
-        key = (str(fontfile), face, frozenset(int(g) for g in glyphs))
+        key = (str(fontfile), int(getattr(fontfile, "face_index", 0)), frozenset(int(g) for g in glyphs))
         found = _SUBSETS.get(key)
         if found is None:
-            source = source_font(str(fontfile), face)
-            try:
-                found = source.subset(sorted(key[2])) if source is not None else None
-            except UnsupportedFont:
-                found = None
-            if found is None:
-                with original(fontfile, glyphs) as subset:
-                    found = (pdf_ps.font_as_file(subset.font).getvalue(), dict(subset.glyph_index_map))
+            with original(fontfile, glyphs) as subset:
+                found = (pdf_ps.font_as_file(subset.font).getvalue(), dict(subset.glyph_index_map))
             _SUBSETS[key] = found
             if len(_SUBSETS) > KEEP_SUBSETS:
                 del _SUBSETS[next(iter(_SUBSETS))]
-        return nullcontext(_Subset(_SubsetFont(found[0]), dict(found[1])))
+        return nullcontext(CutSubset(CutFont(found[0]), dict(found[1])))
 
     get_glyphs_subset.reportgen_memo = True          # type: ignore[attr-defined]
     get_glyphs_subset.reportgen_original = original  # type: ignore[attr-defined]

@@ -247,7 +247,7 @@ def content(project) -> PartContent:
         power = None
     warnings = [{"group": gk, "label": by_key[gk].label, "mu": mu} for gk, mu in ks.transmission_deg.items()
                 if mu < WARN_TRANSMISSION_DEG]
-    ctx = {"has_dynamics": project.task.dynamics is not None, "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
+    ctx = {"has_dynamics": project.task.has("dynamics"), "pos": ks.position, "phi": ks.phi_deg, "mu_l": mu_l, "loads": loads_ctx, "resistance": resistance,
            "groups": groups_ctx, "crank": crank_ctx, "lever": lever_ctx, "cmp": comparison, "cycle": cycle,
            "control": control, "power": power,
            "warnings": warnings, "warn_deg": WARN_TRANSMISSION_DEG,

@@ -110,14 +110,19 @@ def _build_into(tmp: Path, project: Project, progress: "Timeline", store, *, qui
 
 def reuse_line(store, progress: "Timeline") -> str:
     """What a build with the cache took from it: «figures: N from the cache, M saved and kept;
-    sheets: K of S from the cache; xelatex passes: P»."""
+    sections: J of T from the cache; sheets: K of S from the cache; xelatex passes: P», the passes
+    followed by «(the first begun on the kept preamble)» when pass 1 read the last build's preamble
+    before the note was written (docs/build.md)."""
     from .pipeline import FROM_CACHE
 
     sheets = [s for s in progress.spans if s.name.startswith("sheet ")]
     reused = sum(s.name.endswith(FROM_CACHE) for s in sheets)
     passes = f"; xelatex passes: {progress.latex_passes}" if progress.latex_passes else ""
+    if passes and progress.latex_preamble_kept:
+        passes += " (the first begun on the kept preamble)"
+    sections = f"sections: {store.sections_reused} of {store.sections} from the cache; " if store.sections else ""
     return (f"figures: {store.figures_reused} from the cache, {store.figures_saved} saved and kept; "
-            f"sheets: {reused} of {len(sheets)} from the cache{passes}")
+            f"{sections}sheets: {reused} of {len(sheets)} from the cache{passes}")
 
 
 def run(args: argparse.Namespace) -> int:

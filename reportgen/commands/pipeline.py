@@ -58,6 +58,7 @@ class Timeline:
     origin: float = field(default_factory=time.perf_counter)
     current: str | None = None   # the main-lane stage running (named when it fails)
     latex_passes: int = 0        # xelatex passes the note took
+    latex_preamble_kept: bool = False   # pass 1 began on the last build's preamble (before the solve)
 
     @contextmanager
     def stage(self, name: str, lane: str = MAIN) -> Iterator[None]:
@@ -109,27 +110,34 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
     """Solve, write the note, the sheets and results.json into ``tmp``; return the results."""
     from ..results import build_results, dumps
 
-    with timeline.stage("solve"):
-        results = build_results(project)
-    task = project.task
+    early = pdf and latexmk == DEFAULT_LATEXMK
+    # a rebuild's first xelatex pass reads the last build's preamble while the task is solved and
+    # the note composed (it goes on into the body when the note's preamble is the same)
+    started = _start_split_latex(tmp, cache) if early and cache is not None else None
+    pending = started
     child = None
-    todo: list[tuple[str, Any]] = []
-    if sheets and parallel_possible():
-        # forked before the main process imports matplotlib, ezdxf only in the sheets' process: it
-        # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
-        with timeline.stage("before the sheets' fork"):
-            _shared_imports(project)
-            _shared_stages(project)
-            child = _Child.start(project, tmp, None, cache)
-    elif sheets:
-        todo = _sheet_list(project)
-    pending = None
     try:
+        with timeline.stage("solve"):
+            results = build_results(project)
+        task = project.task
+        todo: list[tuple[str, Any]] = []
+        if sheets and parallel_possible():
+            # forked before the main process imports matplotlib, ezdxf only in the sheets' process: it
+            # lists and draws the sheets while the note is composed (the main process never needs ezdxf)
+            with timeline.stage("before the sheets' fork"):
+                _shared_imports(project)
+                _shared_stages(project, cache)
+                child = _Child.start(project, tmp, None, cache)
+        elif sheets:
+            todo = _sheet_list(project)
         if (task.mechanism is not None or task.gears is not None or task.planetary is not None
                 or getattr(task, "crane", None) is not None):
-            tex, pending = _note(project, tmp, timeline, early=pdf and latexmk == DEFAULT_LATEXMK, cache=cache)
+            tex, pending = _note(project, tmp, timeline, early=early, cache=cache, started=started)
             if pdf and pending is None:
                 pending = _start_latex(tex, latexmk, cache)
+        elif pending is not None:           # no note to typeset
+            pending.cancel()
+            pending = None
         if todo and child is None:
             for span in draw_sheets(project, tmp, todo, cache, lane=MAIN):
                 timeline.add(span)
@@ -151,14 +159,39 @@ def run(project: Any, tmp: Path, timeline: Timeline, *, pdf: bool, sheets: bool,
             timeline.add(Span("note: LaTeX", LATEX, pending.started, end))
             timeline.spans.append(Span("wait for LaTeX", MAIN, t0, end))
             if cache is not None:
-                cache.store_tex(tex.parent / "latex-build")
+                cache.store_tex(tex.parent / "latex-build", _preamble(tex))
             pending = None
     finally:
         if child is not None:
             child.kill()
         if pending is not None:
             pending.cancel()
+        if started is not None:
+            started.cancel()        # stopped already unless the build failed while it waited
     return results
+
+
+def _start_split_latex(tmp: Path, cache: Any) -> Any:
+    """A rebuild's first xelatex pass, started on the preamble of the task's last build with that
+    build's auxiliary files (:func:`latex_templates.build.start_split_passes`); None when the cache
+    keeps no such build."""
+    from latex_templates.build import BUILD_DIR, start_split_passes
+
+    preamble = cache.tex_preamble()
+    if preamble is None or not cache.restore_tex(tmp / BUILD_DIR):
+        return None
+    return start_split_passes(tmp / "report.tex", preamble)
+
+
+def _preamble(tex: Path) -> str | None:
+    """The note's preamble through its line ``\\begin{document}`` (kept for the next rebuild)."""
+    from latex_templates.passes import split_note
+
+    try:
+        parts = split_note(tex.read_text(encoding="utf-8"))
+    except OSError:
+        return None
+    return parts[0] if parts is not None else None
 
 
 def _shared_imports(project: Any) -> None:
@@ -173,13 +206,17 @@ def _shared_imports(project: Any) -> None:
     Strings(project.task.document.language or "ru")
 
 
-def _shared_stages(project: Any) -> None:
+def _shared_stages(project: Any, cache: Any = None) -> None:
     """Compute before the fork the costly stages that both the note and a sheet read, so that the
     two processes do not each compute them: the meshing picture with its designations placed
     (≈ 0.2 s of CPU; section 4 and the gears' sheet, both made whenever the task has a gear pair).
     The note reads it anyway, so the main process does no more than it would; the cheaper scenes
-    are left to whichever process reads them."""
+    are left to whichever process reads them. Not when the build cache knows the picture's digest
+    from the gear pair's (:meth:`reportgen.cache.BuildCache.scene_kept`): then section 4 and sheet
+    4 are likely kept, and neither needs the picture."""
     if project.task.gears is not None and getattr(project.task, "kind", "") != "crane":
+        if cache is not None and cache.scene_kept(project, "meshing"):
+            return
         _ = project.scenes.meshing
 
 
@@ -189,7 +226,7 @@ def _sheet_list(project: Any) -> list[tuple[str, Any]]:
 
 
 def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
-          cache: Any = None) -> tuple[Path, Any]:
+          cache: Any = None, started: Any = None) -> tuple[Path, Any]:
     """Compose the sections and write report.tex (once), then save the figures it refers to
     (split over two processes where there is a second processor).
 
@@ -197,23 +234,36 @@ def _note(project: Any, tmp: Path, timeline: Timeline, *, early: bool = False,
     starts before the figures are saved, on placeholders of their sizes (a figure kept by the
     build cache: its PDF), and goes on once they are (:mod:`latex_templates.passes`); with the
     auxiliary files of the task's last build restored from the cache and every figure of its
-    placeholder's page box, that first pass is often the only one. Returned with report.tex,
-    else None."""
+    placeholder's page box, that first pass is often the only one. ``started``: that first pass
+    started already on the last build's preamble (:func:`_start_split_latex`), used when the
+    note's preamble is the same, else stopped. Returned with report.tex, else None."""
     with timeline.stage("note: imports"):          # matplotlib, the parts (beside the sheets' own)
         _note_imports(project)
-    from latex_templates.figures.saving import queued
+    from latex_templates.figures.saving import KeptFigure, queued
     from latex_templates.passes import media_box
 
     with queued(cache) as figures:
-        tex = _note_text(project, tmp, timeline)
+        tex = _note_text(project, tmp, timeline, cache, figures)
     pending = None
     split = None
     boxes: dict[Path, bytes | None] = {}
+    from . import subset_cache
+    if cache is not None and any(not isinstance(fig, KeptFigure) for fig, _ in figures.items):
+        subset_cache.use(cache)                # a figure to save: its font subsets from the cache
+    else:
+        subset_cache.use(None)                 # (a process building again without the cache)
     try:
-        if early and len(figures):
-            _restore_latex(tex, cache)
+        if started is not None and early and started.note_written():
+            pending = started                   # pass 1 has read its preamble
+            timeline.latex_preamble_kept = True
+        elif started is not None:
+            started.cancel()                    # another preamble: a pass on this note (aux files restored)
+        if early and (len(figures) or pending is not None):
+            if pending is None:
+                if started is None:
+                    _restore_latex(tex, cache)
+                pending = _start_passes(tex)    # pass 1 reads its preamble meanwhile
             targets = [target for _, target in figures.items]
-            pending = _start_passes(tex)        # pass 1 reads its preamble meanwhile
             with timeline.stage("note: figure sizes"):
                 if parallel_possible():      # measured in two processes, each then saves its share
                     split = figures.start_split(_fork_figures_ready, cache)
@@ -275,8 +325,10 @@ def _fork_figures_ready(work: Any) -> "_Child":
     return _Child.fork(work, "note's figures", ready=True)
 
 
-def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
-    """Compose the sections (their figures drawn, queued for saving) and write report.tex."""
+def _note_text(project: Any, tmp: Path, timeline: Timeline, cache: Any = None, queue: Any = None) -> Path:
+    """Compose the sections (their figures drawn, queued for saving) and write report.tex. With
+    the build cache, a section whose parts read what they read when it was kept is taken from it
+    (:mod:`.note_cache`)."""
     from latex_templates import NoteBuilder
     from latex_templates.assignment import assignment_section, introduction_paragraphs
     from latex_templates.compose import compose
@@ -288,14 +340,23 @@ def _note_text(project: Any, tmp: Path, timeline: Timeline) -> Path:
             return note_builder(project).render(tmp)
     with timeline.stage("note: sections"):
         strings = Strings(project.task.document.language or "ru")
-        sections, left_out = compose(project, strings)
-        note = NoteBuilder(project.task.document, designation=strings.designation(project.task.document),
-                           introduction=introduction_paragraphs(project, left_out),
-                           conclusions=[c for s in sections for c in s.conclusions],
-                           assignment=assignment_section(project))
+        kept = None
+        if cache is not None and queue is not None:
+            from .note_cache import CachingNoteBuilder, KeptSections
+            kept = KeptSections(cache, project, strings, queue)
+        sections, left_out = compose(project, strings, kept=kept)
+        options: dict[str, Any] = dict(designation=strings.designation(project.task.document),
+                                       introduction=introduction_paragraphs(project, left_out),
+                                       conclusions=[c for s in sections for c in s.conclusions],
+                                       assignment=assignment_section(project))
+        note = (NoteBuilder(project.task.document, **options) if kept is None
+                else CachingNoteBuilder(project.task.document, kept=kept, **options))
         for s in sections:
             note.add_section(s.section)
-        return note.render(tmp)
+        tex = note.render(tmp)
+        if kept is not None:
+            cache.sections_reused, cache.sections = len(kept.reused), len(sections)
+        return tex
 
 
 def _start_latex(tex: Path, latexmk: str, cache: Any) -> Any:

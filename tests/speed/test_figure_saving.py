@@ -98,7 +98,8 @@ def test_a_font_subset_made_once_writes_the_bytes_of_one_made_anew(tmp_path, mon
 
     monkeypatch.setattr(saving, "_SUBSETS", {})
     fonttools = pdf_ps.get_glyphs_subset                # matplotlib's, unless a save installed ours
-    fonttools = getattr(fonttools, "reportgen_original", fonttools)
+    while hasattr(fonttools, "reportgen_original"):
+        fonttools = fonttools.reportgen_original
     by_fonttools, cut = [], []
 
     def counted(fontfile, glyphs):

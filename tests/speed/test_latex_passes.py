@@ -303,3 +303,48 @@ def test_an_error_in_the_preamble_is_reported_while_pass_1_waits_for_the_placeho
         pending.wait()
     assert "nosuchpackagexyz" in exc.value.problem
     assert str(tex) in exc.value.kept and "bad.log" in exc.value.kept
+
+
+@needs_tex
+def test_the_split_first_pass_writes_the_xdv_and_aux_files_of_a_plain_pass(tmp_path):
+    """A rebuild's pass 1 reads the last build's preamble before the note is written, then the
+    note's body from a file of its own (``passes.split_stub``): the bytes of a plain pass."""
+    text = "\\documentclass{article}\\usepackage{graphicx}\n\\begin{document}\n" + FIGURED.split("\\begin{document}")[1]
+    (tmp_path / "n.tex").write_text(text, encoding="utf-8")
+    (tmp_path / "f.pdf").write_bytes(passes.placeholder_pdf(100.5, 70.25))
+    preamble, body = passes.split_note(text)
+    assert preamble.endswith("\\begin{document}\n") and preamble + body == text
+    env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1")
+    made = {}
+    for name, cmd in (("plain", passes.xelatex_command("n.tex", "plain")),
+                      ("split", passes.first_pass_command("n.tex", "split", split=True))):
+        (tmp_path / name).mkdir()
+        if name == "split":
+            (tmp_path / name / passes.PREAMBLE_FILE).write_text(passes.split_stub(preamble, name), encoding="utf-8")
+            (tmp_path / name / passes.BODY_FILE).write_text(body, encoding="utf-8")
+        proc = subprocess.run(cmd, cwd=tmp_path, env=env, input=b"\n", capture_output=True)
+        assert proc.returncode == 0, proc.stdout[-2000:]
+        made[name] = {p.name: p.read_bytes() for p in (tmp_path / name).iterdir()
+                      if p.suffix != ".log" and not p.name.startswith(passes.SPLIT_PREFIX)}
+    assert set(made["plain"]) == {"n.aux", "n.toc", "n.xdv"}
+    assert made["split"] == made["plain"]
+    assert passes.split_note("\\documentclass{article}\\begin{document}x\\end{document}\n") is None
+
+
+@needs_tex
+def test_a_split_first_pass_on_another_preamble_is_stopped_and_leaves_the_aux_files(tmp_path):
+    """The note's preamble is not the one the split pass read: ``note_written`` says so, the pass
+    is stopped (its two files removed, the restored auxiliary files as they were)."""
+    from latex_templates.build import BUILD_DIR, start_split_passes
+
+    tex = tmp_path / "report.tex"
+    build_dir = tmp_path / BUILD_DIR
+    build_dir.mkdir()
+    (build_dir / "report.aux").write_text("\\relax \n", encoding="utf-8")
+    pending = start_split_passes(tex, "\\documentclass{article}\n\\begin{document}\n")
+    assert pending is not None
+    tex.write_text("\\documentclass[12pt]{article}\n\\begin{document}\nx\n\\end{document}\n", encoding="utf-8")
+    assert not pending.note_written()
+    pending.cancel()
+    assert sorted(p.name for p in build_dir.iterdir() if not p.name.endswith(".log")) == ["report.aux"]
+    assert (build_dir / "report.aux").read_text(encoding="utf-8") == "\\relax \n"

@@ -141,9 +141,10 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
                    "CPU: user + system time of the process and its children (the sheets' and figures' processes, "
                    "latexmk, xelatex) — on 2 processors the wall time cannot be less than half of it")
     t.notes.append("incremental: each run changes one number of the task file (δ; the last link's mass) to a value "
-                   "not built before, in the same file, after the builds above; the figures and sheets whose inputs "
-                   "did not change come from the cache (keyed by content: docs/build.md), LaTeX starts from the last "
-                   "build's aux files")
+                   "not built before, in the same file, after the builds above; the figures, the note's sections and "
+                   "the sheets whose inputs did not change come from the cache (keyed by content and by what they read: "
+                   "docs/build.md), LaTeX's first pass starts before the solve on the last build's preamble and aux "
+                   "files and is the only one unless the aux files change")
     t.notes.append("cold: `--no-cache`, nothing read from or written to the cache (compiled templates, previews, "
                    "LaTeX's aux files); warm and incremental: the cache as a student's second build has it")
     t.notes.append(_load_note())
