@@ -25,6 +25,8 @@ import copy
 import io
 from typing import Any, Iterable
 
+from reportgen.errors import ReportgenError
+
 #: Tables copied as they are (hinting programs, metrics of the whole font, the grid-fitting table).
 _RAW_TABLES = ("OS/2", "cvt ", "fpgm", "prep", "gasp")
 #: The names fontTools' subsetter keeps by default (``name_IDs``: family, style, full name, version,
@@ -36,7 +38,7 @@ _NAME_LANGUAGE = 0x0409
 _RECOMMENDED = range(4)
 
 
-class UnsupportedFont(ValueError):
+class UnsupportedFont(ReportgenError, ValueError):
     """The font is not one :class:`SourceFont` cuts (no TrueType outlines): fontTools subsets it."""
 
     def __init__(self, path: str, reason: str) -> None:
