@@ -8,7 +8,9 @@ A subset is a pure function of the font file, its face and the glyph set, as
 :func:`latex_templates.figures.saving.remember_font_subsets` (the same within one process) relies
 on; this layer under it keeps the bytes and the glyph numbers on disk, keyed by the code's
 fingerprint (fontTools' and matplotlib's versions, the fonts installed) and those three. The bytes
-written into the PDF are the ones fontTools wrote (tests/speed/test_subset_cache.py).
+written into the PDF are the ones the layer under it wrote — the subset cut from the font read once
+(latex_templates/figures/font_subset.py), or fontTools' for a font it does not cut
+(tests/speed/test_subset_cache.py).
 """
 from __future__ import annotations
 
@@ -71,7 +73,8 @@ def _install() -> None:
     if _INSTALLED or getattr(pdf_ps.get_glyphs_subset, "reportgen_memo", False):
         return
     _INSTALLED = True
-    original = pdf_ps.get_glyphs_subset
+    from latex_templates.figures.font_subset import cut_below
+    original = cut_below(pdf_ps.get_glyphs_subset)   # subsets cut from the font read once (cpu helper)
 
     def get_glyphs_subset(fontfile: Any, glyphs: Any) -> Any:
         folder = _FOLDER
