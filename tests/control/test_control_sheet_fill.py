@@ -34,6 +34,7 @@ from reportgen.scenes.positions import bounds
 from reportgen.taskfile import load_task
 
 from labels.readback import TOUCH_MM, sheet_texts
+from sheet1.legibility import dxf_lines
 
 TABLES = range(1, 23)
 #: Texts of the scheme keep at least this far apart, mm.
@@ -142,30 +143,10 @@ def scheme_texts(drawn, doc) -> list[tuple[str, object]]:
 
 
 def drawn_lines(doc, rect) -> list:
-    """Every line drawn in ``rect`` (LINE, LWPOLYLINE, CIRCLE, ARC; a SOLID, an arrowhead, by its
-    outline), sheet mm, clipped to it."""
-    from shapely.geometry import LineString, Point
-    out = []
-    msp = doc.modelspace()
-    for e in msp.query("LINE"):
-        out.append(LineString([tuple(e.dxf.start)[:2], tuple(e.dxf.end)[:2]]))
-    for e in msp.query("LWPOLYLINE"):
-        pts = [tuple(q)[:2] for q in e.get_points("xy")]
-        if len(pts) > 1:
-            out.append(LineString(pts + ([pts[0]] if e.closed else [])))
-    for e in msp.query("CIRCLE"):
-        out.append(Point(tuple(e.dxf.center)[:2]).buffer(float(e.dxf.radius), 64).exterior)
-    for e in msp.query("ARC"):
-        c, r = tuple(e.dxf.center)[:2], float(e.dxf.radius)
-        a0, sweep = float(e.dxf.start_angle), (float(e.dxf.end_angle) - float(e.dxf.start_angle)) % 360.0 or 360.0
-        n = max(int(sweep / 3.0), 2)
-        out.append(LineString([(c[0] + r * math.cos(math.radians(a0 + sweep * t / n)),
-                                c[1] + r * math.sin(math.radians(a0 + sweep * t / n))) for t in range(n + 1)]))
-    for e in msp.query("SOLID"):
-        pts = [tuple(e.dxf.get(f"vtx{k}"))[:2] for k in range(3)]
-        out.append(LineString(pts + [pts[0]]))
+    """Every line drawn in ``rect`` (sheet 1's read-back, :func:`sheet1.legibility.dxf_lines`),
+    sheet mm, clipped to it."""
     area = rect.polygon()
-    return [g for g in (line.intersection(area) for line in out) if not g.is_empty]
+    return [g for g in (line.intersection(area) for line in dxf_lines(doc)) if not g.is_empty]
 
 
 def scheme_text_findings(project, drawn, doc) -> list[str]:
