@@ -19,6 +19,7 @@ Pure: no presentation import (the LaTeX strings are plain text).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Callable
 
 from .errors import ParameterError
 from .calc import (
@@ -64,7 +65,9 @@ class Balance:
     meaning: str = ""
     partial: str = "\\Sigma"
     partial_unit: str = ""
-    partial_meaning: str = ""
+    #: a partial sum's meaning, or a function of the loads it sums (each term's force or power, in
+    #: order) giving it: five partial sums explained alike read as one line printed five times
+    partial_meaning: str | Callable[[tuple[Var, ...]], str] = ""
     per_line: int = 3
     #: the meaning of the total of the partial sums (``partial`` alone): not a partial sum itself
     total_meaning: str = ""
@@ -117,8 +120,10 @@ class Balance:
                 expr = " ".join(e for e, _ in chunk).removeprefix("+ ").strip()
                 named: dict[str, Var | CalcRecord] = {k: v for _, d in chunk for k, v in d.items()}
                 n = c // self.per_line
+                loads = tuple(v for _, d in chunk for k, v in d.items() if k[0] in "FX" and isinstance(v, Var))
+                meaning = self.partial_meaning(loads) if callable(self.partial_meaning) else self.partial_meaning
                 rec = record(f"{self.partial}_{{{n + 1}}}", expr, self.partial_unit, *_vars(named),
-                             meaning=self.partial_meaning)
+                             meaning=meaning)
                 parts.append(rec)
                 final_items.append((f"+ S{n}", {f"S{n}": rec}))
         if len(final_items) > self.per_line:
@@ -126,7 +131,7 @@ class Balance:
             expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()
             named = {k: v for _, d in final_items for k, v in d.items()}
             total = record(self.partial, expr, self.partial_unit, *_vars(named),
-                           meaning=self.total_meaning or self.partial_meaning)
+                           meaning=self.total_meaning or (self.partial_meaning if isinstance(self.partial_meaning, str) else ""))
             parts.append(total)
             final_items = [("+ T", {"T": total})]
         expr = " ".join(e for e, _ in final_items).removeprefix("+ ").strip()

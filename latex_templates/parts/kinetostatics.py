@@ -30,7 +30,14 @@ NEEDS = ("linkage", "structure", "kinetostatics", "resistance", "balancing_cycle
 
 #: Terms of one summed moment equation per printed line; longer sums are split into partial sums.
 TERMS_PER_RECORD = 3
-#: Points of the M_ур(φ1) curve over one turn.
+
+
+def _partial_meaning(loads: tuple[Var, ...]) -> str:
+    """«сумма моментов сил F_пс, G_1, G_2»: a partial sum named by the loads it sums (the note printed
+    «частичная сумма моментов» five times in one «где» list)."""
+    if not loads:
+        return tr("kinetostatics.m30")
+    return tr("kinetostatics.m30f", forces=Tex(", ".join(v.latex for v in loads)))
 
 
 def available(project) -> bool:
@@ -215,7 +222,7 @@ def content(project) -> PartContent:
             bal = Balance(f"\\sum M_{{{sp.centre}}}^{{({sp.link})}}", f"R^{{\\tau}}_{{{sp.name[1:]}}}", "Н",
                           -1, l, _balance_terms(terms) + _couples(extra, mu_l, sp.link),
                           Tex(tr("kinetostatics.m43", v1=Tex(sym(sp.name)))),
-                          partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                          partial=f"\\Sigma^{{({sp.link})}}", partial_unit="Н·мм", partial_meaning=_partial_meaning,
                           total_meaning=tr("kinetostatics.m30t"), per_line=TERMS_PER_RECORD)
             sol = bal.solve()
             parts, rec = list(sol.parts), sol.result
@@ -347,7 +354,7 @@ def _slot_step(ks, grp, gg, counter, mu_l: Var, read_mags: dict[str, float]) -> 
     name = pair_name(k2, k3)
     sol = Balance(f"\\sum M_{{{frame[0].joint}}}^{{({k3})}}", sym(name), "Н", 1, arm,
                   tuple(terms) + extra, Tex(active().get("marks.slot.reaction").format(R=Tex(sym(name)))),
-                  partial=f"\\Sigma^{{({k3})}}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  partial=f"\\Sigma^{{({k3})}}", partial_unit="Н·мм", partial_meaning=_partial_meaning,
                   total_meaning=tr("kinetostatics.m30t"),
                   per_line=TERMS_PER_RECORD).solve()
     exact = float(np.asarray(P.on(k3)[0]) @ d)
@@ -467,7 +474,7 @@ def _crank(ks, read_mags, counter, mu_l, figures, body) -> dict:
     sol = Balance(f"\\sum M_{{{r.crank_axis}}}", "F_{\\text{ур}}", "Н", 1, OA,
                   _balance_terms(terms) + _couples(extra, mu_l, d),
                   tr("kinetostatics.m39") + r.crank_pin + tr("kinetostatics.m26"),
-                  partial="\\Sigma^{(1)}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  partial="\\Sigma^{(1)}", partial_unit="Н·мм", partial_meaning=_partial_meaning,
                   total_meaning=tr("kinetostatics.m30t"), per_line=TERMS_PER_RECORD).solve()
     parts, F = list(sol.parts), sol.result
     _check(F, c.balancing_force_measured, "F_ур (groups)")
@@ -518,7 +525,7 @@ def _lever(project, ks, counter, figures) -> dict:
     # F_ур at the image of the pin: its moment about p is +F·pa when the crank turns counter-clockwise
     sol = Balance("\\sum M_{p}", "F_{\\text{ур}}^{\\text{Ж}}", "Н", 1 if lev.omega1 >= 0 else -1, pa,
                   _balance_terms(terms) + extra, tr("kinetostatics.m12"),
-                  partial="\\Sigma^{(\\text{Ж})}", partial_unit="Н·мм", partial_meaning=tr("kinetostatics.m30"),
+                  partial="\\Sigma^{(\\text{Ж})}", partial_unit="Н·мм", partial_meaning=_partial_meaning,
                   total_meaning=tr("kinetostatics.m30t"), per_line=TERMS_PER_RECORD).solve()
     parts, F = list(sol.parts), sol.result
     _check(F, L.balancing_force_measured, "F_ур (lever)")

@@ -118,3 +118,19 @@ def test_the_shift_of_F_i_is_laid_off_as_a_drawing_is_read(example, tmp_path):
         assert len((text.split("{,}") + [""])[1]) <= 1, text
         assert float(text.replace("{,}", ".")) == pytest.approx(x.h_mm_measured, abs=1e-9)
         assert abs(x.h_mm_measured / READING_MM - round(x.h_mm_measured / READING_MM)) < 1e-9
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_where_list_explains_two_partial_sums_alike(example, tmp_path):
+    """A moment equation split into partial sums Σ₁ … Σₙ explains each by the loads it sums: the
+    press's (2.42) printed «— частичная сумма моментов, Н·мм» five times in one «где» list."""
+    tex = section_note(project_of(example)).render(tmp_path).read_text(encoding="utf-8")
+    lists = re.findall(r"\\begin\{wherelist\}(.*?)\\end\{wherelist\}", tex, flags=re.S)
+    assert lists
+    for body in lists:
+        meanings = []
+        for item in re.split(r"\\item\[[^\]]*\]", body)[1:]:
+            m = re.match(r"\s*\$(.*?)\$(.*)", item, flags=re.S)
+            if m and m.group(1).startswith("\\Sigma"):
+                meanings.append(m.group(2).strip())
+        assert len(meanings) == len(set(meanings)), meanings
