@@ -21,7 +21,7 @@ from drawings.style import TEXT_STYLE, TEXT_STYLE_FONT, ensure_sheet_font
 pytestmark = pytest.mark.slow
 
 OSIFONT = Path("/usr/share/fonts/truetype/osifont/osifont.ttf")
-SCALE_RE = re.compile(r"^\d+(,\d+)?:\d+(,\d+)?$")
+SCALE_RE = re.compile(r"^\d+([,.]\d+)?:\d+([,.]\d+)?$")      # «1:2,5»; «1:2.5» in English
 
 
 def test_the_font_is_a_debian_package_of_make_system():
