@@ -27,7 +27,13 @@ def _figures(n: int) -> list:
     return figs
 
 
-def test_two_processes_write_the_bytes_of_one_by_one_saving(tmp_path):
+def _saved_one_by_one_and_queued(tmp_path):
+    """Five figures saved one by one into ``seq/``, and the same five queued for ``par/``; fonts
+    subset the one way a build subsets them (the queue installs it; a test run alone had the
+    one-by-one saves on fontTools' subsetter, other bytes)."""
+    from latex_templates.figures.saving import remember_font_subsets
+
+    remember_font_subsets()
     seq, par = tmp_path / "seq", tmp_path / "par"
     seq.mkdir()
     par.mkdir()
@@ -36,6 +42,11 @@ def test_two_processes_write_the_bytes_of_one_by_one_saving(tmp_path):
     queue = FigureQueue()
     for i, fig in enumerate(_figures(5)):
         queue.add(fig, par / f"f{i}.pdf")
+    return seq, par, queue
+
+
+def test_two_processes_write_the_bytes_of_one_by_one_saving(tmp_path):
+    seq, par, queue = _saved_one_by_one_and_queued(tmp_path)
     queue.save(fork=pipeline._fork_figures)
     assert len(queue) == 0
     names = sorted(p.name for p in seq.iterdir())
@@ -129,14 +140,7 @@ def test_split_writes_every_placeholder_first_then_the_bytes_of_one_by_one_savin
     page (its box is the saved figure's), and finish() leaves the bytes of saving one by one."""
     from latex_templates.passes import media_box
 
-    seq, par = tmp_path / "seq", tmp_path / "par"
-    seq.mkdir()
-    par.mkdir()
-    for i, fig in enumerate(_figures(5)):
-        save_pdf(fig, seq / f"f{i}.pdf")
-    queue = FigureQueue()
-    for i, fig in enumerate(_figures(5)):
-        queue.add(fig, par / f"f{i}.pdf")
+    seq, par, queue = _saved_one_by_one_and_queued(tmp_path)
     split = queue.start_split(pipeline._fork_figures_ready)
     assert split.mine and split.theirs
     # each target, not the folder's listing: the other process may already be saving its share
