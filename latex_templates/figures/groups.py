@@ -72,11 +72,13 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
                                 [tuple(c) for c in corners], True))
     # every other joint of the structure on the group's links (D of a rocker C-B-D whose D drives
     # the next group, issue 12): its hinge and letter, as the scheme draws it
+    # (another named point of its links, not a joint: its letter only)
     joined = {j.name for j in linkage.joints}
     for name in names:
-        if name in joined and name not in letters:
+        if name not in letters:
             p = pts[name]
-            ax.add_patch(Circle(vec2(p), r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
+            if name in joined:
+                ax.add_patch(Circle(vec2(p), r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
             letters[name] = p
     taken: list = []
     for name, p in letters.items():                  # one letter a point, away from the group's middle
