@@ -4,6 +4,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -67,6 +68,11 @@ def test_batch_three_variants_one_broken(tmp_path, capsys, monkeypatch):
     assert float(rows[0]["Py"]) * 0.32 == pytest.approx(float(rows[0]["My"]), rel=1e-5)
     for t in (1, 5, 22):
         assert (out / f"answer-key-table-{t}.pdf").read_bytes().startswith(b"%PDF")
+    # the Russian key prints its numbers as the note does: decimal comma, true minus
+    key = subprocess.run(["pdftotext", "-layout", str(out / "answer-key-table-1.pdf"), "-"],
+                         capture_output=True, text=True, check=True).stdout
+    assert re.search(r"\d,\d", key) and "\u2212" in key, key
+    assert not re.search(r"\d\.\d", key) and not re.search(r"(?<![\w/])-\d", key), key
     # a re-run does not solve again what did not change
     import reportgen.commands.batch as b
     calls = []
