@@ -13,7 +13,7 @@ Without ``-o`` the task is printed. An existing file is never overwritten withou
 word of another language reaches the title page or the title blocks (issue 12). An example copied
 into another language gets that ``[document]`` (the personal fields left empty) and loses its
 ``[mechanism] name`` (the note then names the mechanism in the language's words); otherwise the
-example is copied byte for byte.
+example is copied byte for byte (a control work's mechanism name is written in the language).
 """
 from __future__ import annotations
 
@@ -153,15 +153,22 @@ def in_language(text: str, language: str) -> str:
             end -= 1                   # the comments before the next table stay with it
         skip |= set(range(doc_at, end))
     mech_at = next((i for i, name in heads if name == "mechanism"), None)
+    names: set[int] = set()
     if mech_at is not None:
-        skip |= {j for j in range(mech_at + 1, ends[mech_at]) if re.match(r"^\s*name\s*=", lines[j])}
+        names = {j for j in range(mech_at + 1, ends[mech_at]) if re.match(r"^\s*name\s*=", lines[j])}
+    cw = data.get("control_work")
+    # a control work's mechanism keeps a name, in the language (the table's and variant's numbers)
+    renamed = (f"name = {toml_value(_defaults(language)['control_mechanism'].format(**cw))}"
+               if data.get("document", {}).get("kind") == "control-work" and cw else None)
     first = heads[0][0] if heads else len(lines)
     for i, line in enumerate(lines):
         if doc_at is None and i == first:
             out += block
         if i == doc_at:
             out += block[:-1]          # the blank line before the next table is the text's own
-        if i in skip:
+        if i in names and renamed is not None:
+            out.append(renamed)
+        if i in skip or i in names:
             continue
         out.append(line)
     result = "\n".join(out) + "\n"

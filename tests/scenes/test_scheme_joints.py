@@ -24,7 +24,8 @@ from reportgen.taskfile import load_task  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 TASKS = {name: ROOT / "examples" / name / "task.toml"
          for name in ("press", "shaper", "conveyor", "crank-slider", "class3", "control-work")}
-TASKS["crank-rocker-offset-slider"] = ROOT / "tests" / "data" / "crank-rocker-offset-slider.toml"
+TASKS.update({name: ROOT / "tests" / "data" / f"{name}.toml"
+              for name in ("crank-rocker-offset-slider", "crank-rocker", "shaper-short-crank")})
 _PROJECTS: dict[str, Project] = {}
 
 
