@@ -20,7 +20,7 @@ from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
 from ..taskfile import load_task
 from .outdir import check_output_folder, keep_failed, replace_folder
-from .modes import as_made_ordinarily
+from ..file_modes import as_made_ordinarily
 
 if TYPE_CHECKING:
     from .pipeline import Timeline

@@ -10,7 +10,7 @@ from ..errors import OptionError
 from ..project import Project
 from ..results import build_results, dumps
 from ..taskfile import load_task
-from .modes import as_made_ordinarily
+from ..file_modes import as_made_ordinarily
 
 
 def register(sub) -> None:
