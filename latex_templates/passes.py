@@ -93,7 +93,8 @@ def split_stub(preamble: str, build_dir: str) -> str:
 #: driver ends, never an auxiliary file).
 STANDBY_DIR = SPLIT_PREFIX + "next"
 #: How much lower the standby pass reads its preamble than the passes that typeset (``nice``): it
-#: takes the processor time they, the figures and the sheets leave.
+#: takes the processor time they, the figures and the sheets leave. Only where the driver may give
+#: it the passes' priority back (:func:`_may_raise_priority_to`); else it runs at their priority.
 STANDBY_NICENESS = 10
 
 
@@ -118,7 +119,8 @@ class _Standby:
                WAIT_HOOK + r"\input " + tex.name]
         self.proc = subprocess.Popen(cmd, cwd=self.work, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL)
         self._niceness = _niceness()
-        _set_niceness(self.proc.pid, self._niceness + STANDBY_NICENESS)
+        if _may_raise_priority_to(self._niceness):   # else it would typeset its body at the low priority
+            _set_niceness(self.proc.pid, self._niceness + STANDBY_NICENESS)
 
     def run(self) -> int:
         """Pass 2 on the auxiliary files pass 1 left in the build folder; its status."""
@@ -156,6 +158,20 @@ def _niceness() -> int:
         return os.getpriority(os.PRIO_PROCESS, 0)
     except (AttributeError, OSError):
         return 0
+
+
+def _may_raise_priority_to(niceness: int) -> bool:
+    """Whether this process may give a process back the niceness ``niceness`` after lowering its
+    priority: as the superuser, or within the resource limit ``RLIMIT_NICE`` (ceiling 20 − limit)."""
+    try:
+        import resource
+
+        if os.geteuid() == 0:
+            return True
+        soft = resource.getrlimit(resource.RLIMIT_NICE)[0]
+        return soft == resource.RLIM_INFINITY or 20 - soft <= niceness
+    except (ImportError, AttributeError, OSError, ValueError):
+        return False
 
 
 def _set_niceness(pid: int, value: int) -> None:
