@@ -100,7 +100,8 @@ STANDBY_NICENESS = 10
 
 class _Standby:
     """Pass 2 started ahead: it reads its preamble (≈ 0.7 s of a pass's 1.2) at a low priority while
-    pass 1 typesets, and waits at ``\\begin{document}`` (:data:`WAIT_HOOK`, before the ``.aux`` is
+    pass 1 typesets — begun as soon as pass 1's .aux differs from the one it found (at once when
+    there was none: a cold build), never while it may be the last pass — and waits at ``\\begin{document}`` (:data:`WAIT_HOOK`, before the ``.aux`` is
     read) in an output folder of its own. When pass 1 has changed the auxiliary files,
     :meth:`run` copies them there, lets it go on and moves what it wrote into the build folder:
     the files a pass in the build folder writes, the same bytes (TeX reads the auxiliary files from
@@ -251,11 +252,19 @@ def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes], *, split: 
     before = _aux_state(build_dir) if build_dir.is_dir() else None
     said_at_start: bytes | None = None               # what was said when the last pass started
     real_passes = early_passes = 0
-    ahead: list[_Standby] = []                        # pass 2, started when pass 1 reads the body
+    ahead: list[_Standby] = []                        # pass 2, begun while pass 1 reads the body
+    aux = build_dir / (tex.stem + ".aux")
+    last_aux = before.get(aux.name) if before is not None else None
 
-    def start_standby() -> None:
-        if standby:
-            ahead.append(_Standby(tex, build_dir_name))
+    def start_standby() -> bool:
+        """Begin pass 2 unless pass 1 has written only what it found so far (it may be the last):
+        False, asked again while pass 1 runs."""
+        if not standby:
+            return True
+        if last_aux is not None and _written_so_far(aux, last_aux):
+            return False
+        ahead.append(_Standby(tex, build_dir_name))
+        return True
 
     try:
         while True:
@@ -326,11 +335,27 @@ def first_pass_command(tex_name: str, build_dir: str, *, split: bool = False) ->
             f"-output-directory={build_dir}", f"-jobname={tex_name[:-4]}", WAIT_HOOK + r"\input " + source]
 
 
+#: How often (s) the driver looks at what pass 1 has written of the .aux (:func:`_written_so_far`).
+BODY_POLL = 0.02
+
+
+def _written_so_far(aux: Path, last: bytes) -> bool:
+    """Whether the .aux pass 1 is writing is, so far, the start of the one it found (read at
+    ``\\begin{document}``, then written anew, page by page): if so, the pass may leave the
+    auxiliary files as they were and be the last; once it differs (a page moved), pass 2 is
+    needed."""
+    try:
+        now = aux.read_bytes()
+    except OSError:
+        return True
+    return last.startswith(now)
+
+
 def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = False,
-                on_body: Callable[[], None] | None = None) -> int:
+                on_body: Callable[[], bool] | None = None) -> int:
     """Pass 1, started at once and let on into the document's body once the placeholders are
-    there (then ``on_body()`` is called: the standby pass 2 starts); stopped (:data:`CANCELLED`)
-    when the build fails before."""
+    there; meanwhile ``on_body()`` is asked until it says True (the standby pass 2 begun, or not
+    wanted); stopped (:data:`CANCELLED`) when the build fails before."""
     cmd = first_pass_command(tex.name, build_dir_name, split=split)
     if cmd is None:
         signal.placed.wait()
@@ -351,8 +376,11 @@ def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = Fa
     except OSError:                               # stopped already: its status and log say why
         pass
     else:
-        if on_body is not None and proc.poll() is None:
-            on_body()
+        while on_body is not None and proc.poll() is None and not on_body():
+            try:
+                proc.wait(BODY_POLL)
+            except subprocess.TimeoutExpired:
+                pass
     return proc.wait()
 
 
