@@ -92,22 +92,18 @@ def split_stub(preamble: str, build_dir: str) -> str:
 #: The standby pass's output folder, inside the build folder (:class:`_Standby`; removed when the
 #: driver ends, never an auxiliary file).
 STANDBY_DIR = SPLIT_PREFIX + "next"
-#: How much lower the standby pass reads its preamble than the passes that typeset (``nice``): it
-#: takes the processor time they, the figures and the sheets leave. Only where the driver may give
-#: it the passes' priority back (:func:`_may_raise_priority_to`); else it runs at their priority.
-STANDBY_NICENESS = 10
 
 
 class _Standby:
-    """Pass 2 started ahead: it reads its preamble (≈ 0.7 s of a pass's 1.2) at a low priority while
-    pass 1 typesets — begun as soon as pass 1's .aux differs from the one it found (at once when
-    there was none: a cold build), never while it may be the last pass — and waits at ``\\begin{document}`` (:data:`WAIT_HOOK`, before the ``.aux`` is
-    read) in an output folder of its own. When pass 1 has changed the auxiliary files,
-    :meth:`run` copies them there, lets it go on and moves what it wrote into the build folder:
-    the files a pass in the build folder writes, the same bytes (TeX reads the auxiliary files from
-    its output folder first, as latexmk's ``-outdir`` relies on), so only the body's ≈ 0.45 s
-    follow pass 1 (tests/speed/test_latex_passes.py). When pass 1 is the last, it is stopped
-    (:meth:`cancel`): its preamble's CPU spent at the low priority, nothing written."""
+    """Pass 2 begun ahead. Begun as soon as pass 1's .aux differs from the one it found (at once when
+    there was none: a cold build) — when pass 2 is certain, so its work is never spent in vain and
+    it runs at the passes' own priority — it reads its preamble (≈ 0.7 s of a pass's 1.2) while
+    pass 1 typesets and waits at ``\\begin{document}`` (:data:`WAIT_HOOK`, before the ``.aux`` is
+    read) in an output folder of its own. When pass 1 ends, :meth:`run` copies the auxiliary files
+    it left there, lets the standby go on and moves what it wrote into the build folder: the files
+    a pass in the build folder writes, the same bytes (TeX reads the auxiliary files from its
+    output folder first, as latexmk's ``-outdir`` relies on), so only the body's ≈ 0.45 s follow
+    pass 1 (tests/speed/test_latex_passes.py). A build that fails stops it (:meth:`cancel`)."""
 
     def __init__(self, tex: Path, build_dir_name: str) -> None:
         self.work = tex.parent
@@ -119,15 +115,11 @@ class _Standby:
                f"-output-directory={build_dir_name}/{STANDBY_DIR}", f"-jobname={tex.stem}",
                WAIT_HOOK + r"\input " + tex.name]
         self.proc = subprocess.Popen(cmd, cwd=self.work, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL)
-        self._niceness = _niceness()
-        if _may_raise_priority_to(self._niceness):   # else it would typeset its body at the low priority
-            _set_niceness(self.proc.pid, self._niceness + STANDBY_NICENESS)
 
     def run(self) -> int:
         """Pass 2 on the auxiliary files pass 1 left in the build folder; its status."""
         for name, data in _aux_state(self.build_dir).items():
             (self.dir / name).write_bytes(data)
-        _set_niceness(self.proc.pid, self._niceness)     # back to the passes' priority, where allowed
         print(PASS_LINE, flush=True)
         try:
             assert self.proc.stdin is not None
@@ -152,35 +144,6 @@ class _Standby:
             except OSError:
                 pass
         shutil.rmtree(self.dir, ignore_errors=True)
-
-
-def _niceness() -> int:
-    try:
-        return os.getpriority(os.PRIO_PROCESS, 0)
-    except (AttributeError, OSError):
-        return 0
-
-
-def _may_raise_priority_to(niceness: int) -> bool:
-    """Whether this process may give a process back the niceness ``niceness`` after lowering its
-    priority: as the superuser, or within the resource limit ``RLIMIT_NICE`` (ceiling 20 − limit)."""
-    try:
-        import resource
-
-        if os.geteuid() == 0:
-            return True
-        soft = resource.getrlimit(resource.RLIMIT_NICE)[0]
-        return soft == resource.RLIM_INFINITY or 20 - soft <= niceness
-    except (ImportError, AttributeError, OSError, ValueError):
-        return False
-
-
-def _set_niceness(pid: int, value: int) -> None:
-    """A process's niceness; raising its priority again may not be allowed (it then stays lower)."""
-    try:
-        os.setpriority(os.PRIO_PROCESS, pid, min(value, 19))
-    except (AttributeError, OSError):
-        pass
 
 
 def _run(cmd: list[str], cwd: Path) -> int:
