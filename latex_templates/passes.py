@@ -26,7 +26,9 @@ after the pass running. Exit status: 0, or the failing program's status (its log
 """
 from __future__ import annotations
 
+import os
 import re
+import shutil
 import subprocess
 import sys
 import threading
@@ -35,6 +37,10 @@ from typing import Callable
 
 #: Passes on the real figures before giving up on stable auxiliary files (latexmk's default is 5).
 MAX_PASSES = 5
+#: Start pass 2 ahead, its preamble read beside pass 1's body (:class:`_Standby`); the
+#: environment variable turns it off (``=0``: to compare, or where processors are scarce).
+STANDBY = True
+STANDBY_ENV = "REPORTGEN_LATEX_STANDBY"
 #: Files of the output folder that are not auxiliary input of the next pass.
 _NOT_AUX = {".log", ".xdv", ".fls", ".pdf", ".fdb_latexmk"}
 CANCELLED = 3
@@ -83,6 +89,63 @@ def split_stub(preamble: str, build_dir: str) -> str:
     return preamble + f"\\csname @@input\\endcsname {build_dir}/{BODY_FILE}\n"
 
 
+#: The standby pass's output folder, inside the build folder (:class:`_Standby`; removed when the
+#: driver ends, never an auxiliary file).
+STANDBY_DIR = SPLIT_PREFIX + "next"
+
+
+class _Standby:
+    """Pass 2 begun ahead. Begun as soon as pass 1's .aux differs from the one it found (at once when
+    there was none: a cold build) — when pass 2 is certain, so its work is never spent in vain and
+    it runs at the passes' own priority — it reads its preamble (≈ 0.7 s of a pass's 1.2) while
+    pass 1 typesets and waits at ``\\begin{document}`` (:data:`WAIT_HOOK`, before the ``.aux`` is
+    read) in an output folder of its own. When pass 1 ends, :meth:`run` copies the auxiliary files
+    it left there, lets the standby go on and moves what it wrote into the build folder: the files
+    a pass in the build folder writes, the same bytes (TeX reads the auxiliary files from its
+    output folder first, as latexmk's ``-outdir`` relies on), so only the body's ≈ 0.45 s follow
+    pass 1 (tests/speed/test_latex_passes.py). A build that fails stops it (:meth:`cancel`)."""
+
+    def __init__(self, tex: Path, build_dir_name: str) -> None:
+        self.work = tex.parent
+        self.build_dir = self.work / build_dir_name
+        self.dir = self.build_dir / STANDBY_DIR
+        shutil.rmtree(self.dir, ignore_errors=True)
+        self.dir.mkdir()
+        cmd = ["xelatex", "-no-pdf", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
+               f"-output-directory={build_dir_name}/{STANDBY_DIR}", f"-jobname={tex.stem}",
+               WAIT_HOOK + r"\input " + tex.name]
+        self.proc = subprocess.Popen(cmd, cwd=self.work, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL)
+
+    def run(self) -> int:
+        """Pass 2 on the auxiliary files pass 1 left in the build folder; its status."""
+        for name, data in _aux_state(self.build_dir).items():
+            (self.dir / name).write_bytes(data)
+        print(PASS_LINE, flush=True)
+        try:
+            assert self.proc.stdin is not None
+            self.proc.stdin.write(b"\n")
+            self.proc.stdin.close()
+        except OSError:                               # stopped already: its status and log say why
+            pass
+        status = self.proc.wait()
+        for p in sorted(self.dir.iterdir()):
+            if p.is_file():
+                os.replace(p, self.build_dir / p.name)
+        shutil.rmtree(self.dir, ignore_errors=True)
+        return status
+
+    def cancel(self) -> None:
+        if self.proc.poll() is None:
+            self.proc.kill()
+        self.proc.wait()
+        if self.proc.stdin is not None:
+            try:
+                self.proc.stdin.close()
+            except OSError:
+                pass
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+
 def _run(cmd: list[str], cwd: Path) -> int:
     return subprocess.run(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL).returncode
 
@@ -126,7 +189,8 @@ class Signal:
         return self._said or b""
 
 
-def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes], *, split: bool = False) -> int:
+def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes], *, split: bool = False,
+          standby: bool | None = None) -> int:
     """The passes until the auxiliary files are stable on figures known to have their real page
     boxes, then xdvipdfmx. Returns an exit status.
 
@@ -140,43 +204,67 @@ def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes], *, split: 
     :data:`SAME_BOXES` makes every pass count as one on the real figures (xelatex reads nothing of
     a figure but its page box, the same in both): a stable pass already made is the last.
     :data:`FIGURES_REAL` (a box may differ) counts only the passes started after it was said, so at
-    least one more runs."""
+    least one more runs. ``standby`` (default :data:`STANDBY`, the environment's
+    :data:`STANDBY_ENV` ``=0`` turns it off): pass 2 reads its preamble beside pass 1's body
+    (:class:`_Standby`) — the same bytes, the count of passes the same."""
+    if standby is None:
+        standby = STANDBY and os.environ.get(STANDBY_ENV, "") != "0"
     work = tex.parent
     build_dir = work / build_dir_name
     signal = Signal(read1)
     before = _aux_state(build_dir) if build_dir.is_dir() else None
     said_at_start: bytes | None = None               # what was said when the last pass started
     real_passes = early_passes = 0
-    while True:
-        # pass 1 counts as one on the placeholders whenever the byte came (the build starts the
-        # driver before it saves the figures): the count of passes does not depend on a race
-        said_at_start = signal.poll() if early_passes + real_passes else None
-        if early_passes + real_passes:
-            status = _xelatex(tex, build_dir_name)
-        else:
-            try:
-                status = _first_pass(tex, build_dir_name, signal, split)
-            finally:
-                if split:
-                    for name in (PREAMBLE_FILE, BODY_FILE):
-                        (build_dir / name).unlink(missing_ok=True)
-        if status != 0:
-            return status
-        if said_at_start:
-            real_passes += 1
-        else:
-            early_passes += 1
-        after = _aux_state(build_dir)
-        stable = after == before
-        before = after
-        said = signal.poll()
-        if said is None and (stable or early_passes >= MAX_PASSES):
-            said = signal.wait()                     # nothing more to do on the placeholders
-        if said is not None and not said:
-            return CANCELLED
-        on_real = said == SAME_BOXES or (said == FIGURES_REAL and said_at_start == FIGURES_REAL)
-        if (stable and on_real) or real_passes >= MAX_PASSES:
-            break
+    ahead: list[_Standby] = []                        # pass 2, begun while pass 1 reads the body
+    aux = build_dir / (tex.stem + ".aux")
+    last_aux = before.get(aux.name) if before is not None else None
+
+    def start_standby() -> bool:
+        """Begin pass 2 unless pass 1 has written only what it found so far (it may be the last):
+        False, asked again while pass 1 runs."""
+        if not standby:
+            return True
+        if last_aux is not None and _written_so_far(aux, last_aux):
+            return False
+        ahead.append(_Standby(tex, build_dir_name))
+        return True
+
+    try:
+        while True:
+            # pass 1 counts as one on the placeholders whenever the byte came (the build starts the
+            # driver before it saves the figures): the count of passes does not depend on a race
+            said_at_start = signal.poll() if early_passes + real_passes else None
+            if ahead:
+                status = ahead.pop().run()
+            elif early_passes + real_passes:
+                status = _xelatex(tex, build_dir_name)
+            else:
+                try:
+                    status = _first_pass(tex, build_dir_name, signal, split, on_body=start_standby)
+                finally:
+                    if split:
+                        for name in (PREAMBLE_FILE, BODY_FILE):
+                            (build_dir / name).unlink(missing_ok=True)
+            if status != 0:
+                return status
+            if said_at_start:
+                real_passes += 1
+            else:
+                early_passes += 1
+            after = _aux_state(build_dir)
+            stable = after == before
+            before = after
+            said = signal.poll()
+            if said is None and (stable or early_passes >= MAX_PASSES):
+                said = signal.wait()                     # nothing more to do on the placeholders
+            if said is not None and not said:
+                return CANCELLED
+            on_real = said == SAME_BOXES or (said == FIGURES_REAL and said_at_start == FIGURES_REAL)
+            if (stable and on_real) or real_passes >= MAX_PASSES:
+                break
+    finally:
+        for pending in ahead:                            # pass 1 was the last, or the build failed
+            pending.cancel()
     return _run(xdvipdfmx_command(tex.stem, build_dir_name), work)
 
 
@@ -210,9 +298,27 @@ def first_pass_command(tex_name: str, build_dir: str, *, split: bool = False) ->
             f"-output-directory={build_dir}", f"-jobname={tex_name[:-4]}", WAIT_HOOK + r"\input " + source]
 
 
-def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = False) -> int:
+#: How often (s) the driver looks at what pass 1 has written of the .aux (:func:`_written_so_far`).
+BODY_POLL = 0.02
+
+
+def _written_so_far(aux: Path, last: bytes) -> bool:
+    """Whether the .aux pass 1 is writing is, so far, the start of the one it found (read at
+    ``\\begin{document}``, then written anew, page by page): if so, the pass may leave the
+    auxiliary files as they were and be the last; once it differs (a page moved), pass 2 is
+    needed."""
+    try:
+        now = aux.read_bytes()
+    except OSError:
+        return True
+    return last.startswith(now)
+
+
+def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = False,
+                on_body: Callable[[], bool] | None = None) -> int:
     """Pass 1, started at once and let on into the document's body once the placeholders are
-    there; stopped (:data:`CANCELLED`) when the build fails before."""
+    there; meanwhile ``on_body()`` is asked until it says True (the standby pass 2 begun, or not
+    wanted); stopped (:data:`CANCELLED`) when the build fails before."""
     cmd = first_pass_command(tex.name, build_dir_name, split=split)
     if cmd is None:
         signal.placed.wait()
@@ -232,6 +338,12 @@ def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = Fa
         proc.stdin.close()
     except OSError:                               # stopped already: its status and log say why
         pass
+    else:
+        while on_body is not None and proc.poll() is None and not on_body():
+            try:
+                proc.wait(BODY_POLL)
+            except subprocess.TimeoutExpired:
+                pass
     return proc.wait()
 
 

@@ -22,6 +22,20 @@ from .errors import ReportgenError, ReportgenInputError
 # Sub-command modules, in the order `reportgen --help` lists them.
 DEBUG_ENV = "REPORTGEN_DEBUG"  # set to print the traceback of an internal error
 
+#: The BLAS libraries' thread pools, one thread unless the user set a number: reportgen's linear algebra
+#: is small (many 2×2…6×6 systems), so a second thread never helps, and OpenBLAS's worker thread
+#: spins on a free processor after each call — CPU taken from the build's other processes (the
+#: sheets', the figures', xelatex) on a 2-processor machine, and ≈ 10 % of `reportgen solve`'s
+#: CPU (docs/build.md «BLAS threads»). Read by the library when numpy is first imported.
+BLAS_THREADS_ENV = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def single_threaded_blas() -> None:
+    """Ask the BLAS library for one thread (:data:`BLAS_THREADS_ENV`), unless the user set it."""
+    for name in BLAS_THREADS_ENV:
+        os.environ.setdefault(name, "1")
+
+
 COMMANDS: tuple[str, ...] = ("build", "solve", "new", "batch", "check", "gear", "planetary", "crane", "bench")
 
 
@@ -48,6 +62,8 @@ def make_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    if "numpy" not in sys.modules:   # the command modules import numpy: one BLAS thread first
+        single_threaded_blas()
     parser = make_parser(sys.argv[1:] if argv is None else argv)
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):

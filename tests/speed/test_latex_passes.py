@@ -348,3 +348,63 @@ def test_a_split_first_pass_on_another_preamble_is_stopped_and_leaves_the_aux_fi
     pending.cancel()
     assert sorted(p.name for p in build_dir.iterdir() if not p.name.endswith(".log")) == ["report.aux"]
     assert (build_dir / "report.aux").read_text(encoding="utf-8") == "\\relax \n"
+
+
+@needs_tex
+def test_pass_2_begun_ahead_writes_the_bytes_of_pass_2_run_after_pass_1(tmp_path):
+    """The standby pass 2 (its preamble read beside pass 1's body, in a folder of its own, given
+    the auxiliary files pass 1 wrote) leaves the build folder as the plain pass 2 does: the same
+    .xdv, auxiliary files and PDF, the same count of passes; and when pass 1 is the last (its
+    auxiliary files stable), the standby is stopped and its folder removed."""
+    (tmp_path / "f.pdf").write_bytes(passes.placeholder_pdf(100.5, 70.25))
+    made, lines = {}, {}
+    for standby in ("1", "0"):
+        work = tmp_path / f"standby{standby}"
+        work.mkdir()
+        (work / "n.tex").write_text(FIGURED.replace("f.pdf", "../f.pdf"), encoding="utf-8")
+        (work / "b").mkdir()
+        env = dict(os.environ, SOURCE_DATE_EPOCH="1767225600", FORCE_SOURCE_DATE="1",
+                   **{passes.STANDBY_ENV: standby})
+        for run in ("first", "again"):         # no aux files: two passes; then the stable one alone
+            proc = subprocess.run([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=work,
+                                  input=passes.SAME_BOXES, capture_output=True, env=env)
+            assert proc.returncode == 0, proc.stderr[-2000:]
+            lines[standby, run] = proc.stdout.decode().count(passes.PASS_LINE)
+            assert not (work / "b" / passes.STANDBY_DIR).exists()
+            made[standby, run] = {p.name: p.read_bytes() for p in (work / "b").iterdir() if p.suffix != ".log"}
+    assert set(made["0", "first"]) == {"n.aux", "n.toc", "n.xdv", "n.pdf"}
+    assert lines["1", "first"] == lines["0", "first"] == 2
+    assert lines["1", "again"] == lines["0", "again"] == 1
+    assert made["1", "first"] == made["0", "first"] and made["1", "again"] == made["0", "again"]
+    assert "A" in made["1", "first"]["n.toc"].decode()
+
+
+@needs_tex
+def test_a_standby_pass_is_stopped_with_the_driver_when_the_build_fails(tmp_path):
+    """The build fails after pass 1 began its body (the placeholders said, then the input closed
+    without a word of the figures): the driver stops after pass 1, and so does the standby pass 2,
+    which had begun — its folder removed, no PDF."""
+    import time
+
+    (tmp_path / "n.tex").write_text(FIGURED, encoding="utf-8")
+    (tmp_path / "f.pdf").write_bytes(passes.placeholder_pdf(100.5, 70.25))
+    (tmp_path / "b").mkdir()
+    proc = subprocess.Popen([sys.executable, str(Path(passes.__file__)), "n.tex", "b"], cwd=tmp_path,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    try:
+        assert proc.stdin is not None
+        proc.stdin.write(passes.PLACEHOLDERS)
+        proc.stdin.flush()
+        standby, deadline = tmp_path / "b" / passes.STANDBY_DIR, time.monotonic() + 120
+        while not standby.is_dir() and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.02)
+        assert standby.is_dir()                     # pass 2 began ahead, beside pass 1's body
+        out, _ = proc.communicate(b"", timeout=120)  # the build failed: the input closed
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == passes.CANCELLED
+    assert out.decode().count(passes.PASS_LINE) == 1
+    assert not standby.exists()
+    assert not (tmp_path / "b" / "n.pdf").exists()

@@ -28,5 +28,44 @@ def test_solve_imports_no_presentation_and_no_other_command(tmp_path):
     modules = report["modules"]
     heavy = sorted(m for m in modules if m.split(".")[0] in HEAVY)
     assert heavy == []
-    commands = sorted(m for m in modules if m.startswith("reportgen.commands.") and m.count(".") == 2)
+    from reportgen.cli import COMMANDS
+
+    # the other commands' modules (a helper of the commands' package, such as modes.py, may be used)
+    commands = sorted(m for m in modules if m.startswith("reportgen.commands.") and m.count(".") == 2
+                      and m.rsplit(".", 1)[1] in COMMANDS)
     assert commands == ["reportgen.commands.solve"]
+
+
+THREADS_PROBE = """
+import json, os, sys
+from reportgen import cli
+status = cli.main(["solve", sys.argv[1], "--json", sys.argv[2], "--quiet"])
+threads = len(os.listdir("/proc/self/task"))
+print(json.dumps({"status": status, "threads": threads, "env": os.environ.get("OPENBLAS_NUM_THREADS")}))
+"""
+
+
+def _threads(tmp_path: Path, env: dict[str, str]) -> dict:
+    import os
+
+    clean = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
+    out = subprocess.run([sys.executable, "-c", THREADS_PROBE, str(PRESS), str(tmp_path / "r.json")],
+                         capture_output=True, text=True, cwd=tmp_path, timeout=300, env={**clean, **env})
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def test_the_command_line_runs_numpy_with_one_blas_thread_unless_the_user_set_a_number(tmp_path):
+    """OpenBLAS starts a worker thread per processor when numpy is imported, and it spins on a free
+    processor after each call (CPU above the wall time of `reportgen solve`): the command line asks
+    for one thread before the command's modules import numpy; a number the user set is kept."""
+    import os
+
+    if not Path("/proc/self/task").is_dir():
+        import pytest
+        pytest.skip("needs Linux's /proc/self/task")
+    ours = _threads(tmp_path, {})
+    assert ours["status"] == 0 and ours["env"] == "1" and ours["threads"] == 1
+    if (os.cpu_count() or 1) > 1:
+        theirs = _threads(tmp_path, {"OPENBLAS_NUM_THREADS": "2"})
+        assert theirs["env"] == "2" and theirs["threads"] >= 2

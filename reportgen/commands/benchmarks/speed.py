@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import shutil
 import statistics
 import subprocess
@@ -137,6 +138,9 @@ def builds_table(task_path: Path, quick: bool, runs: int = 3) -> Table:
             reuse = [line.strip() for out in outs[-1:] for line in out.splitlines() if line.strip().startswith("figures:")]
             if reuse:
                 t.notes.append(f"{name} changed, the last run: {reuse[0]}")
+            counts = [m.group(1) for out in outs for m in [re.search(r"xelatex passes: (\d+)", out)] if m]
+            if counts:      # a run whose pages moved needs a second pass: the spread of the wall times
+                t.notes.append(f"{name} changed: xelatex passes of each run: {', '.join(counts)}")
     t.notes.append("each run a fresh process (imports included); the machine is shared, so the spread is shown; "
                    "CPU: user + system time of the process and its children (the sheets' and figures' processes, "
                    "latexmk, xelatex) — on 2 processors the wall time cannot be less than half of it")
@@ -262,7 +266,10 @@ def solver_table(task_path: Path, quick: bool) -> Table:
         t.add("`reportgen solve TASK --json OUT` as a process (imports included)", f"{m:.0f} ({lo:.0f}–{hi:.0f})",
               f"{statistics.median(ps_cpu) * 1e3:.0f}", str(len(ps)))
         t.notes.append(f"`reportgen solve` as a process: CPU (user + system) {statistics.median(ps_cpu) * 1e3:.0f} ms "
-                       "median; its wall time above that is the wait for a processor on a shared machine")
+                       "median; its wall time above that is the wait for a processor on a shared machine; "
+                       f"BLAS threads: {os.environ.get('OPENBLAS_NUM_THREADS', 'not set')} (the command line asks "
+                       "for one: OpenBLAS's second thread spun on the free processor, CPU above the wall time, "
+                       "docs/build.md «BLAS threads»)")
     t.notes.append("in process: a new Project each run (the model built again), [analysis] positions set to "
                    "360; the kinetostatics at all of them, the dynamics on its own 360-step grid; CPU: the "
                    f"process's own time (`time.process_time`), comparable on a loaded machine (1-minute load "
