@@ -203,9 +203,8 @@ def _start_cold_latex(project: Any, tmp: Path) -> Any:
     from latex_templates.render import Strings
 
     try:
-        strings = Strings(task.document.language or "ru")
-        preamble = NoteBuilder(task.document, designation=strings.designation(task.document),
-                               strings=strings).preamble()
+        designation = Strings(task.document.language or "ru").designation(task.document)   # as _note_text's
+        preamble = NoteBuilder(task.document, designation=designation).preamble()
     except ReportgenError:
         return None
     return None if preamble is None else start_split_passes(tmp / "report.tex", preamble, restored=False)
