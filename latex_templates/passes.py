@@ -21,6 +21,11 @@ until the auxiliary files are stable, at least one of them after the byte, and `
 makes the PDF from the last. The commands are latexmk's own, so the PDF is the same bytes; a
 placeholder of a slightly wrong size costs at most one more pass, never a different PDF.
 
+With no auxiliary files at the start (a cold build: pass 1 writes the .aux, so a second pass
+follows), pass 2 is started as soon as pass 1 has read its preamble and reads its own meanwhile,
+in a folder of its own, waiting at ``\begin{document}`` until pass 1 has ended
+(:class:`_NextPass`): the same command and bytes, without its preamble after pass 1.
+
 Standard input closed without that byte (the build failed elsewhere): the driver stops (status 3)
 after the pass running. Exit status: 0, or the failing program's status (its log says why).
 """
@@ -138,9 +143,10 @@ def drive(tex: Path, build_dir_name: str, read1: Callable[[], bytes], *, split: 
     waits at ``\\begin{document}`` for the placeholders (:func:`_first_pass`). While nothing is said
     of the figures (they are being saved), the passes go on on the placeholders until the auxiliary
     files are stable there: a pass that left them as it found them is not followed by another.
-    ``split``: pass 1 reads :data:`PREAMBLE_FILE` (the last build's preamble, started before the
-    note is written) and then :data:`BODY_FILE`, which the build writes before the placeholders;
-    both are removed when pass 1 ends. The passes after it read the note itself.
+    ``split``: pass 1 reads :data:`PREAMBLE_FILE` (the last build's preamble, or the one a cold
+    build's note will have, started before the note is written) and then :data:`BODY_FILE`, which
+    the build writes before the placeholders; both are removed when pass 1 ends (when a second
+    pass was started early from them, when it ends). The passes after it read the note itself.
     :data:`SAME_BOXES` makes every pass count as one on the real figures (xelatex reads nothing of
     a figure but its page box, the same in both): a stable pass already made is the last.
     :data:`FIGURES_REAL` (a box may differ) counts only the passes started after it was said, so at
