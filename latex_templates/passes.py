@@ -259,12 +259,15 @@ def first_pass_command(tex_name: str, build_dir: str, *, split: bool = False) ->
             f"-output-directory={build_dir}", f"-jobname={tex_name[:-4]}", WAIT_HOOK + r"\input " + source]
 
 
-def _said_when_read(stream: Any, read: threading.Event) -> None:
-    """Read a waiting pass's terminal output to its end; ``read`` is set at :data:`PREAMBLE_READ`."""
+def _said_when_read(stream: Any, when_read: Callable[[], None]) -> None:
+    """Read a waiting pass's terminal output to its end, calling ``when_read()`` at its first
+    :data:`PREAMBLE_READ` (the pass waits then: it is still running)."""
     marker = PREAMBLE_READ.encode()
+    said = False
     for line in stream:
-        if line.rstrip() == marker:
-            read.set()
+        if not said and line.rstrip() == marker:
+            said = True
+            when_read()
     stream.close()
 
 
@@ -331,14 +334,22 @@ def _first_pass(tex: Path, build_dir_name: str, signal: Signal, split: bool = Fa
         signal.placed.wait()
         return CANCELLED if signal.poll() == b"" else _xelatex(tex, build_dir_name)
     print(PASS_LINE, flush=True)
-    read = threading.Event()
     proc = subprocess.Popen(cmd, cwd=tex.parent, stdin=subprocess.PIPE,
                             stdout=subprocess.PIPE if when_read is not None else subprocess.DEVNULL)
+    reader = None
     if when_read is not None:
         assert proc.stdout is not None
-        threading.Thread(target=_said_when_read, args=(proc.stdout, read), daemon=True).start()
-        threading.Thread(target=lambda: read.wait() and proc.poll() is None and when_read(),
-                         daemon=True).start()
+        reader = threading.Thread(target=_said_when_read, args=(proc.stdout, when_read), daemon=True)
+        reader.start()
+    try:
+        return _let_on(proc, signal)
+    finally:
+        if reader is not None:
+            reader.join()        # when_read() has returned, if it was called: nothing starts later
+
+
+def _let_on(proc: subprocess.Popen, signal: Signal) -> int:
+    """Let a waiting pass 1 go on once the placeholders are there; its exit status."""
     while not signal.placed.wait(0.05):
         if proc.poll() is not None:               # stopped on an error in the preamble
             break
