@@ -53,6 +53,7 @@ def test_a_note_in_another_language_has_another_preamble():
     assert ru != en
 
 
+@pytest.mark.slow
 @needs_tex
 def test_a_cold_build_starts_its_first_pass_before_the_solve(tmp_path):
     """``pipeline._start_cold_latex``: a split first pass on the note's preamble (no auxiliary
@@ -75,6 +76,7 @@ TOC_NOTE = ("\\documentclass{article}\n\\begin{document}\n\\tableofcontents\n\\s
             "See page \\pageref{b}.\\clearpage\n\\section{Two}\\label{b}\nSee page \\pageref{a}.\n\\end{document}\n")
 
 
+@pytest.mark.slow
 @needs_tex
 def test_a_cold_drive_runs_its_second_pass_read_early_and_writes_latexmk_s_pdf(tmp_path):
     """No auxiliary files: pass 2 is started while pass 1 runs, in its own folder, and goes on
