@@ -135,12 +135,14 @@ class PendingPasses(PendingPdf):
     """xelatex's first pass running on placeholder figures (:mod:`latex_templates.passes`);
     :meth:`figures_ready` lets it go on with the real ones; :meth:`wait` as for latexmk.
     ``preamble``: the preamble a split first pass reads (:func:`start_split_passes`), before the
-    note is written (:meth:`note_written`)."""
+    note is written (:meth:`note_written`); ``restored``: the last build's (its auxiliary files
+    restored), else the one a cold build's note will have."""
 
     def __init__(self, tex: Path, proc: subprocess.Popen, strict_references: bool,
-                 preamble: str | None = None) -> None:
+                 preamble: str | None = None, restored: bool = True) -> None:
         super().__init__(tex, proc, strict_references)
         self.preamble = preamble
+        self.restored = restored     # a split pass on the last build's preamble and auxiliary files
 
     def note_written(self) -> bool:
         """The note is written: for a split first pass, write its body for the pass when its
@@ -153,7 +155,9 @@ class PendingPasses(PendingPdf):
         parts = split_note(self.tex.read_text(encoding="utf-8"))
         if parts is None or parts[0] != self.preamble:
             return False
-        body = self.tex.parent / BUILD_DIR / BODY_FILE
+        build_dir = self.tex.parent / BUILD_DIR
+        _write_provisional_toc(self.tex, build_dir)      # a cold build's (no .aux): before the body is read
+        body = build_dir / BODY_FILE
         part = body.with_name(body.name + ".part")
         part.write_text(parts[1], encoding="utf-8")
         part.replace(body)
@@ -227,13 +231,16 @@ def start_passes(tex_path: Path | str, *, strict_references: bool = True,
 
 
 def start_split_passes(tex_path: Path | str, preamble: str, *, strict_references: bool = True,
-                       source_date_epoch: str | None = None) -> PendingPasses | None:
-    """Start a rebuild's first xelatex pass before its note is written, on ``preamble`` (the last
-    build's, ending with the line ``\\begin{document}``; the auxiliary files of that build restored
-    in ``latex-build/`` already): it reads the preamble (≈ 0.7 s of a pass) while the note is
-    composed, then waits. :meth:`PendingPasses.note_written` gives it the note's body when the
-    note's preamble is the same; the passes then go on as :func:`start_passes`'s. None when TeX is
-    missing (the build's ordinary start says so) or the names do not allow a split pass."""
+                       source_date_epoch: str | None = None, restored: bool = True) -> PendingPasses | None:
+    """Start a first xelatex pass before its note is written, on ``preamble`` (ending with the line
+    ``\\begin{document}``): a rebuild's, on the last build's preamble with the auxiliary files of
+    that build restored in ``latex-build/`` already; with ``restored=False``, a cold build's, on
+    the preamble the note will have (:meth:`latex_templates.note.NoteBuilder.preamble`) and no
+    auxiliary files. It reads the preamble (≈ 0.7 s of a pass) while the note is composed, then
+    waits. :meth:`PendingPasses.note_written` gives it the note's body when the note's preamble is
+    the same (and, with no auxiliary files, writes the provisional contents first); the passes
+    then go on as :func:`start_passes`'s. None when TeX is missing (the build's ordinary start says
+    so) or the names do not allow a split pass."""
     import sys
 
     from .passes import PREAMBLE_FILE, first_pass_command, split_stub
@@ -243,14 +250,15 @@ def start_split_passes(tex_path: Path | str, preamble: str, *, strict_references
     build_dir = work / BUILD_DIR
     if (any(shutil.which(program) is None for program in ("xelatex", "xdvipdfmx"))
             or first_pass_command(tex.name, BUILD_DIR, split=True) is None
-            or not (build_dir / (tex.stem + ".aux")).is_file()):
+            or (restored and not (build_dir / (tex.stem + ".aux")).is_file())):
         return None
+    build_dir.mkdir(exist_ok=True)
     (build_dir / PREAMBLE_FILE).write_text(split_stub(preamble, BUILD_DIR), encoding="utf-8")
     driver = Path(__file__).with_name("passes.py")
     proc = subprocess.Popen([sys.executable, str(driver), tex.name, BUILD_DIR, "--split"], cwd=work,
                             env=tex_env(source_date_epoch), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, errors="replace", start_new_session=True)
-    return PendingPasses(tex, proc, strict_references, preamble)
+    return PendingPasses(tex, proc, strict_references, preamble, restored)
 
 
 def _write_provisional_toc(tex: Path, build_dir: Path) -> None:

@@ -123,14 +123,8 @@ from reportgen.task import Document
         if self.assignment is not None:
             assignment = self._render_section(env, self.assignment, base, out).body
         rendered = [self._render_section(env, sec, base, out) for sec in self.sections]
-        babel = LANGUAGES[self.language]
-        babel_languages = babel if babel == "english" else f"english,{babel}"
-        text = env.get_template("note.tex.j2").render(
-            **base, sections=rendered, assignment=assignment,
-            introduction=self.introduction, conclusions=self.conclusions,
-            references=self.references, frame=self.frame, designation=self.designation,
-            bottom_margin_mm=27 if self.frame == "eskd" else 20,
-            babel_languages=babel_languages, extra_preamble=Tex(self.extra_preamble))
+        text = env.get_template("note.tex.j2").render(**base, **self._note_options(), sections=rendered,
+                                                      assignment=assignment)
         bad = [r for r in self.symbols.records if not evaluate_displayed(r).ok]
         if bad:
             raise InternalError("note", "printed formulas do not reproduce their printed results: "
@@ -145,6 +139,32 @@ from reportgen.task import Document
         tex_path = out / "report.tex"
         tex_path.write_text(text, encoding="utf-8")
         return tex_path
+
+    def _note_options(self) -> dict[str, Any]:
+        """What note.tex.j2 reads besides the sections and the assignment."""
+        babel = LANGUAGES[self.language]
+        return dict(introduction=self.introduction, conclusions=self.conclusions,
+                    references=self.references, frame=self.frame, designation=self.designation,
+                    bottom_margin_mm=27 if self.frame == "eskd" else 20,
+                    babel_languages=babel if babel == "english" else f"english,{babel}",
+                    extra_preamble=Tex(self.extra_preamble))
+
+    def preamble(self) -> str | None:
+        """The preamble :meth:`render` writes, through its line ``\\begin{document}``, made
+        without the sections (nothing of them reaches it: it is the document's settings, the
+        language's words, the designation and the frame), so that a build can start xelatex's
+        first pass on it before the sections are composed
+        (:func:`latex_templates.build.start_split_passes`). A guess the caller checks: the pass
+        goes on only when report.tex's own preamble is the same text
+        (:meth:`latex_templates.build.PendingPasses.note_written`). None when it cannot be made."""
+        from .passes import split_note
+
+        env = make_environment(self.template_dirs)
+        base = {"s": self.strings, "sym": SymbolTracker(), "doc": self.document, "language": self.language}
+        base["m"] = env.get_template("macros.tex.j2").make_module(dict(base))
+        text = env.get_template("note.tex.j2").render(**base, **self._note_options(), sections=[], assignment=None)
+        parts = split_note(self.strings.localize_latex(text))
+        return parts[0] if parts is not None else None
 
     def build(self, out_dir: Path | str, *, latexmk: str = "latexmk",
               strict_references: bool = True) -> BuildReport:
