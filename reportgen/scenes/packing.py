@@ -89,6 +89,12 @@ def _corner_target(region: BaseGeometry, corner: str) -> tuple[float, float]:
     }[corner]
 
 
+def _rect_corner(rect: Rect, corner: str) -> tuple[float, float]:
+    """:func:`_corner_target` of a rectangle, without making it a polygon."""
+    return {"top-left": (rect.x0, rect.y1), "top-right": (rect.x1, rect.y1),
+            "bottom-left": (rect.x0, rect.y0), "bottom-right": (rect.x1, rect.y0)}[corner]
+
+
 def _candidates(region: BaseGeometry, placed: Sequence[Rect], w: float, h: float,
                 gap: float) -> Iterable[tuple[float, float]]:
     """Lower-left corners worth trying: flush with the region's bounds or next to placed views."""
@@ -121,17 +127,21 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
             raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
         tx, ty = _corner_target(region, req.preferred)
         best: tuple[float, Rect] | None = None
+        bx0, by0, bx1, by1 = grown.bounds
         for cx, cy in _candidates(region, done, req.width, req.height, gap):
             rect = Rect.from_size(cx, cy, req.width, req.height)
-            if not grown.contains(rect.polygon()):
+            # the cheap tests first (the outcome is the same: a rect must pass them all)
+            if rect.x0 < bx0 or rect.y0 < by0 or rect.x1 > bx1 or rect.y1 > by1:
+                continue                       # outside the bounds: not inside the region
+            rx, ry = rect.center if req.preferred == "center" else _rect_corner(rect, req.preferred)
+            d = (rx - tx) ** 2 + (ry - ty) ** 2
+            if best is not None and d >= best[0] - MM_ROUNDOFF:
                 continue
             if any(rect.overlaps(p.expanded(gap - MM_EPS)) for p in done):
                 continue
-            rx, ry = rect.center if req.preferred == "center" else _corner_target(
-                rect.polygon(), req.preferred)
-            d = (rx - tx) ** 2 + (ry - ty) ** 2
-            if best is None or d < best[0] - MM_ROUNDOFF:
-                best = (d, rect)
+            if not grown.contains(rect.polygon()):
+                continue
+            best = (d, rect)
         if best is None:
             free = region.area - sum(r.width * r.height for r in done)
             raise BuildError(

@@ -1,7 +1,8 @@
-"""reportgen.scenes.packing.try_pack tests a view's candidates at once (numpy) since sheet 1's small
-plans became a required view (issue 12: the scale's choice tries every scale and size, in every
-catalogue language). It must choose exactly what the one-by-one loop chose: the loop below is the
-one it replaced (the oracle), compared on random fields, views already placed and requests."""
+"""reportgen.scenes.packing.try_pack tests a view's candidates at once (numpy), and pack tests the
+cheap conditions before the polygon's, since sheet 1's small plans became a required view (issue 12:
+the scale's choice tries every scale and size, in every catalogue language). They must choose
+exactly what the loops they replaced chose: those loops are below (the oracles), compared on random
+fields, views already placed and requests."""
 from __future__ import annotations
 
 import itertools
@@ -9,8 +10,10 @@ import itertools
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from reportgen.errors import BuildError
 from reportgen.scenes.boxes import free_field
-from reportgen.scenes.packing import CORNERS, MM_EPS, MM_ROUNDOFF, Rect, Request, _corner_target, try_pack, walls
+from reportgen.scenes.packing import (CORNERS, MM_EPS, MM_ROUNDOFF, Rect, Request, _candidates, _corner_target, pack,
+                                      try_pack, walls)
 
 
 def _loop(region, requests, gap, placed):
@@ -71,3 +74,39 @@ def test_the_loop_and_the_vectorised_packing_agree_on_a_crowded_sheet():
     placed = [Rect(30.0, 300.0, 300.0, 584.0), Rect(400.0, 300.0, 831.0, 584.0)]
     requests = [Request("a", 90.0, 100.0, c) for c in CORNERS] + [Request("b", 100.0, 90.0, "center")]
     assert try_pack(region, requests, placed=placed) == _loop(region, requests, 10.0, placed)
+
+
+def _pack_loop(region, requests, gap, placed):
+    """The loop pack was: the polygon's containment first, then the others, then the distance."""
+    done, out = list(placed), []
+    grown = region.buffer(MM_EPS)
+    for req in requests:
+        tx, ty = _corner_target(region, req.preferred)
+        best = None
+        for cx, cy in _candidates(region, done, req.width, req.height, gap):
+            rect = Rect.from_size(cx, cy, req.width, req.height)
+            if not grown.contains(rect.polygon()):
+                continue
+            if any(rect.overlaps(p.expanded(gap - MM_EPS)) for p in done):
+                continue
+            rx, ry = rect.center if req.preferred == "center" else _corner_target(rect.polygon(), req.preferred)
+            d = (rx - tx) ** 2 + (ry - ty) ** 2
+            if best is None or d < best[0] - MM_ROUNDOFF:
+                best = (d, rect)
+        if best is None:
+            return None
+        done.append(best[1])
+        out.append(best[1])
+    return out
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.sampled_from([(841.0, 594.0), (420.0, 297.0)]), st.lists(spot, max_size=3), st.lists(request, min_size=1, max_size=3))
+def test_pack_chooses_what_its_loop_chose(sheet, spots, requests):
+    region = free_field(*sheet)
+    placed = [Rect.from_size(*s) for s in spots]
+    try:
+        got = pack(region, requests, placed=placed)
+    except BuildError:
+        got = None
+    assert got == _pack_loop(region, requests, 10.0, placed)
