@@ -179,7 +179,8 @@ def fits(region: BaseGeometry, placed: Sequence[Rect], plan_sizes: Sequence[tupl
         return False
     trials: dict[tuple, list[Request]] = {}
     for a, options in enumerate((plan_blocks(sizes, pairs), [apart_blocks(sizes, pairs)])[:2 if apart else 1]):
-        for grid in extras or [None]:
+        choices: list[SmallGrid | None] = list(extras) or [None]
+        for grid in choices:
             extra = [_small_block(grid)] if grid is not None else []
             for i, blocks in enumerate(options):
                 for t, trial in enumerate(_trials(blocks + extra)):
