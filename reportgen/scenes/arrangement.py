@@ -21,7 +21,6 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Iterable, Mapping, Sequence
 
-import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ..errors import BuildError
@@ -31,7 +30,7 @@ from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
                     PLAN_TITLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MIN_MM, SCHEME_LETTERS_MM,
                     SCHEME_MIN_WIDTH_MM,
-                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, SMALL_PLAN_MM, TABLE_ROW_MM,
+                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, TABLE_ROW_MM,
                     TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
 from .small_plans import SmallGrid, small_grids
@@ -352,11 +351,10 @@ def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, lan
     """The width (mm) of sheet 1's table «Масштабы» from its own lines — the rows
     drawings.sheets.kinematics.scale_rows writes: μl with the scheme's ratio, the μv and μa of the
     plan positions (positions sharing a μ on one line), the small velocity plans' μv (the widest
-    of the crank vectors ``SMALL_PLAN_MM`` the sheet may choose), the ``diagrams``' scales and pole
+    of their sizes, ``project.scenes.small_plan_sets``), the ``diagrams``' scales and pole
     distances — measured as the sheet measures them (:mod:`.lettering`), in ``language`` (default
     the task's); ``given``: the control work's one position, its plans named without a number."""
     from ..numbers import plain, significant
-    from ..plans import round_scale
     from .lettering import scales_table_width as width
     names: list[tuple[str, str]] = [("scheme", ratio)]
     values: list[tuple[str, str]] = [("value_l", significant(1.0 / k, 4))]
@@ -369,10 +367,8 @@ def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, lan
                          (one if len(positions) == 1 else many, ", ".join(str(j) for j in sorted(positions))))
             values.append((unit, mu))
     if small:
-        kin = project.kinematics
-        v_tip = float(np.hypot(*np.asarray(kin.points[project.linkage.drive_tip].vel[0])))
         names.append(("small", str(len(project.phi) - 1)))
-        values += [("value_v", significant(round_scale(v_tip, mm), 4)) for mm in SMALL_PLAN_MM]
+        values += [("value_v", significant(plans[0].scale, 4)) for plans in project.scenes.small_plan_sets]
     symbols = ["μl", "μv", "μa"]
     if diagrams is not None:
         kind = "m" if diagrams.unit == "м" else "rad"        # a slider's s, v, a or a rocker's ψ, ω, ε
@@ -532,6 +528,8 @@ def fits_at(project, b: tuple[float, float, float, float], k: float, ratio: str,
     """Whether :func:`layout_at` finds a layout (the same trials, stopping at the first that fits)."""
     options = _small_options(project)
     grids = options[small][1] if options else ()
+    if options and not grids:
+        return False                        # no grid of the small plans fits the field's width
     hints = project.scenes.__dict__.setdefault("_fit_hints", [])
     for views in _views_at(project, b, k, ratio, language):
         if grids and not fits(views.region, views.placed, views.sizes, views.names, hints=hints):

@@ -25,6 +25,9 @@ from .lettering import small_plans_lettering
 SMALL_CELL_PAD_MM, SMALL_NUMBER_MM = 9.0, 5.0
 #: The block's title and caption strips, mm; a title in two lines takes ``SMALL_TITLE_LINE_MM`` more.
 SMALL_TITLE_MM, SMALL_CAPTION_MM, SMALL_TITLE_LINE_MM = 14.0, 12.0, 8.0
+#: No point of a small plan stands farther from the pole than this many times the crank's vector's
+#: largest length (the examples' farthest: 2,9 times, the short-crank shaper's).
+SMALL_PLAN_FAR = 4.0
 #: The grids tried have 1 to this many rows.
 SMALL_GRID_ROWS = 6
 
@@ -39,10 +42,15 @@ class SmallGrid:
 
 
 def small_plans(project, crank_mm: float) -> tuple[Plan, ...]:
-    """Velocity plans of every position at one round μv, the crank's vector at most ``crank_mm``."""
+    """Velocity plans of every position at one round μv, the crank's vector at most ``crank_mm`` and
+    no point of any position farther than ``SMALL_PLAN_FAR`` × ``crank_mm`` from the pole (as the
+    plans' ``PLAN_MAX_MM``: near a toggle a link's velocity is a thousand times the crank's, and the
+    plans at the crank's μv would not fit the sheet at all)."""
     kin = project.kinematics
     v_tip = float(np.hypot(*np.asarray(kin.points[project.linkage.drive_tip].vel[0])))
-    mu = round_scale(v_tip, crank_mm)
+    moving = [*kin.points.values(), *kin.coms.values()]
+    v_far = max(float(np.hypot(*np.asarray(m.vel, float).T).max()) for m in moving)
+    mu = max(round_scale(v_tip, crank_mm), round_scale(v_far, SMALL_PLAN_FAR * crank_mm))
     return tuple(build_plans(project.linkage, project.structure, kin, j, mu_v=mu)[0] for j in range(len(project.phi)))
 
 

@@ -172,3 +172,22 @@ def test_the_sheets_print_one_small_plans_scale_in_every_language(pair, tmp_path
         sheet.save(tmp_path / f"{lang}.dxf")
         printed[lang] = small_caption(ezdxf.readfile(tmp_path / f"{lang}.dxf"), sheet.views["plans_all"].rect)
     assert len({v.replace(",", ".") for v in printed.values()}) == 1, printed
+
+
+def test_a_mechanism_near_a_toggle_keeps_its_small_plans():
+    """A slotted lever whose pivot stands 1,01 crank radii from the crank's axis: the rocker's
+    velocity is up to a thousand times the crank pin's, and at the crank's μv (a 20 mm crank vector)
+    the plans were metres long, so main dropped them. The small plans' μv also keeps every point
+    within ``SMALL_PLAN_FAR`` crank vectors of the pole (as the plans' PLAN_MAX_MM)."""
+    import sys
+    sys.path.insert(0, str(ROOT / "tests" / "hard_cases"))
+    from test_hard_stages import slotted_lever
+
+    from reportgen.scenes.boxes import SMALL_PLAN_MM
+    from reportgen.scenes.small_plans import SMALL_PLAN_FAR, plan_extent
+    from reportgen.taskfile import loads_task
+    project = Project(loads_task(slotted_lever(0.1, 0.101)))
+    assert_small_plans_in_the_field(project, project.scenes.sheet_layout.rects)
+    plans = project.scenes.sheet_layout.small
+    reach = max(max(abs(c) for c in plan_extent(p)) for p in plans)
+    assert reach <= SMALL_PLAN_FAR * max(SMALL_PLAN_MM) + 1e-6
