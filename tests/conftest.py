@@ -56,6 +56,13 @@ SLOW_TESTS = (
     "tests/sheet1/test_plan_pairs_layout.py::test_drawn_at_the_notes_scale_with_the_small_plans",
     "tests/sheet1/test_plan_pairs_layout.py::test_each_acceleration_plan_beside_its_velocity_plan",
     "tests/sheet1/test_plan_pairs_layout.py::test_nothing_overlaps_or_leaves_the_field",
+    # sheet 1's small plans: drawn for every linkage example and test task, the core's layout with 1–3
+    # plan positions and any plan positions, their μv in ru, uk and en (issue 12)
+    "tests/sheet1/test_small_plans_required.py::test_every_task_draws_all_its_small_plans_in_the_field",
+    "tests/sheet1/test_small_plans_required.py::test_the_core_reserves_the_small_plans_for_every_number_of_plan_positions",
+    "tests/sheet1/test_small_plans_required.py::test_any_plan_positions_keep_the_small_plans",
+    "tests/sheet1/test_small_plans_required.py::test_the_small_plans_scale_is_the_same_in_every_language",
+    "tests/sheet1/test_small_plans_required.py::test_the_sheets_print_one_small_plans_scale_in_every_language",
     "tests/kinetostatics_presentation/test_kst_sheet.py::test_kst_sheet_audit_and_overlaps",
     "tests/dynamics_presentation/test_dyn_note.py::test_analysed_position_is_the_solvers",
     "tests/dynamics_presentation/test_dyn_note.py::test_numbers_are_the_results",

@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import nearest_points
 
@@ -17,7 +16,6 @@ from drawings.primitives import Transform, format_significant
 from drawings.sheet import Sheet, View
 from reportgen.geometry import vec2
 from drawings.scenes import kinematics_labels as rl
-from reportgen.errors import BuildError
 from reportgen.tolerances import MM_ROUNDOFF
 from reportgen.plans import Plan
 from ..words import tr
@@ -45,9 +43,8 @@ def helpers(plan: Plan, image_keys: set[str]) -> set[str]:
     return {k for k in plan.points if k not in image_keys and k != pole(plan)}
 
 
-def extent(plan: Plan) -> tuple[float, float, float, float]:
-    arr = np.array(list(plan.points.values()), float)
-    return float(arr[:, 0].min()), float(arr[:, 1].min()), float(arr[:, 0].max()), float(arr[:, 1].max())
+#: The bounds of a plan's points, mm from its pole (the core's).
+from reportgen.scenes.small_plans import plan_extent as extent  # noqa: E402
 
 
 def view_size(plan: Plan, title: str) -> tuple[float, float, tuple[float, float]]:
@@ -247,11 +244,11 @@ def _small_label(view: View, p: tuple[float, float], label: rl.Label, height: fl
     return False
 
 
-#: Title and caption strips of the small plans' view, mm; a title in two lines takes
-#: ``SMALL_TITLE_LINE_MM`` more.
-SMALL_TITLE_MM, SMALL_CAPTION_MM, SMALL_TITLE_LINE_MM = 14.0, 12.0, 8.0
-#: Height of the small plans' title and caption letters, mm.
-SMALL_TITLE_H = 5.0
+#: The small plans' view: title and caption strips, a second title line, the letters' height, mm
+#: (the core's: it reserves their block with these, reportgen.scenes.small_plans).
+from reportgen.scenes.lettering import SMALL_TITLE_H, SMALL_TITLE_PAD_MM  # noqa: E402
+from reportgen.scenes.small_plans import (SMALL_CAPTION_MM, SMALL_TITLE_LINE_MM, SMALL_TITLE_MM,  # noqa: E402,F401
+                                          small_cell, title_strip)
 
 
 def small_title(plans: list[Plan]) -> str:
@@ -259,51 +256,22 @@ def small_title(plans: list[Plan]) -> str:
 
 
 def title_lines(text: str, width: float, height: float = SMALL_TITLE_H) -> list[str]:
-    """``text`` in one line if it fits ``width`` (less 10 mm), else split at the space that makes
-    the longer of two lines shortest."""
-    if style.text_width(text, height) + 10.0 <= width or " " not in text:
+    """``text`` in one line if it fits ``width`` (less ``SMALL_TITLE_PAD_MM``), else split at the
+    space that makes the longer of two lines shortest (the core reserves the room by the same rule,
+    reportgen.scenes.lettering.title_lines)."""
+    if style.text_width(text, height) + SMALL_TITLE_PAD_MM <= width or " " not in text:
         return [text]
     words = text.split(" ")
     splits = [(" ".join(words[:k]), " ".join(words[k:])) for k in range(1, len(words))]
     return list(min(splits, key=lambda ab: max(style.text_width(t, height) for t in ab)))
 
 
-def _lines_width(lines: list[str]) -> float:
-    return max(style.text_width(t, SMALL_TITLE_H) for t in lines) + 10.0
-
-
 def small_title_strip(lines: list[str]) -> float:
-    return SMALL_TITLE_MM + SMALL_TITLE_LINE_MM * (len(lines) - 1)
+    return title_strip(len(lines))
 
 
 def small_caption(plans: list[Plan]) -> str:
     return tr("sheets.kp02", v1=format_significant(plans[0].scale, 4))
-
-
-def small_cell(plans: list[Plan]) -> tuple[float, float]:
-    """Width and height of one cell of the small plans' grid (the largest plan, its letters and
-    its number), mm."""
-    ext = np.array([extent(p) for p in plans])
-    pad = 9.0
-    cw = float((ext[:, 2] - ext[:, 0]).max()) + 2 * pad
-    ch = float((ext[:, 3] - ext[:, 1]).max()) + 2 * pad + 5.0
-    return cw, ch
-
-
-def small_grids(plans: list[Plan], max_width: float) -> list[tuple[int, float, float]]:
-    """Grids of the small plans to try: (columns, width, height) for 1–6 rows."""
-    cw, ch = small_cell(plans)
-    n = len(plans)
-    out: list[tuple[int, float, float]] = []
-    for rows in range(1, 7):
-        cols = math.ceil(n / rows)
-        if any(c == cols for c, _, _ in out) or cols * cw > max_width:
-            continue
-        rows = math.ceil(n / cols)
-        lines = title_lines(small_title(plans), cols * cw)
-        w = max(cols * cw, _lines_width(lines), style.text_width(small_caption(plans), SMALL_TITLE_H) + 10.0)
-        out.append((cols, w, rows * ch + small_title_strip(lines) + SMALL_CAPTION_MM))
-    return out
 
 
 def place_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], cols: int,
@@ -333,16 +301,3 @@ def place_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], col
         sub = View(sheet, f"plans_all/{i}", cell, tr)
         draw_plan(sub, plan, image_keys, f"{i}", names=False, letter_height=3.5, small=True, letters=letters)
     return holder
-
-
-def add_small_plans(sheet: Sheet, plans: list[Plan], image_keys: set[str], preferred: str,
-                    letters: set[str] | None = None) -> View | None:
-    """All velocity plans in one view packed near ``preferred``; None if the sheet has no room."""
-    for cols, w, h in small_grids(plans, sheet.frame.width):
-        try:
-            holder = sheet.add_view("plans_all", w, h, preferred=preferred)
-        except BuildError:
-            continue
-        del sheet.views["plans_all"]
-        return place_small_plans(sheet, plans, image_keys, cols, holder.rect, letters)
-    return None

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 
 from drawings import style
 from drawings.layout import LAYOUT_LIMIT, Rect
@@ -16,15 +15,16 @@ from drawings.words import decimal_mark
 from drawings.scenes import kinematics_diagrams as kd
 from drawings.scenes import kinematics_plans as kp
 from drawings.scenes import kinematics_scheme as ks
-from reportgen.errors import BuildError, InternalError
+from reportgen.errors import BuildError
 from reportgen.diagrams import Diagrams
-from reportgen.plans import Plan, build_plans, round_scale
+from reportgen.plans import Plan
 from reportgen.project import Project
 # the arrangement of this sheet is the core's (it decides the plan of positions' scale from it): the
 # names below stay importable from here
 from reportgen.scenes.arrangement import (Arrangement, Block, SheetLayout, apart_blocks, arrange,  # noqa: F401
                                           plan_blocks, plan_view_names)
 from reportgen.scenes.boxes import GROW_PLANS_MM, PAIR_GAP, SCHEME_PADS_MM, VIEW_GAP  # noqa: F401
+from reportgen.scenes.small_plans import small_plans as core_small_plans
 from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed",
@@ -43,7 +43,7 @@ def __getattr__(name: str):
 
 #: The small velocity plans: the crank's vector is at most this long, mm (the core's: it reserves
 #: the table of scales for their μv).
-from reportgen.scenes.boxes import SMALL_PLAN_MM  # noqa: E402
+from reportgen.scenes.boxes import SMALL_PLAN_MM  # noqa: E402,F401
 
 
 def available(project: Project) -> bool:
@@ -67,9 +67,8 @@ def image_keys(project: Project) -> set[str]:
 
 def draw(project: Project, number: int, count: int, *, control: bool = False) -> Sheet:
     """The sheet as the core arranged it (``project.scenes.sheet_layout``): the plan of positions at
-    the scale the note prints (``project.scenes.positions``), every view in the core's rectangle; the
-    sheet adds only its small plans among the plans (:func:`reportgen.scenes.arrangement.arrange`,
-    never another scale). ``control``: the control work's one sheet (:mod:`drawings.sheets.control`):
+    the scale the note prints (``project.scenes.positions``), every view — the small plans at the
+    core's μv among them — in the core's rectangle (never another scale). ``control``: the control work's one sheet (:mod:`drawings.sheets.control`):
     the lever instead of the diagrams and the small plans, on A1 or A3 as ``[control_work] sheet``
     says."""
     layout = project.scenes.sheet_layout
@@ -109,61 +108,31 @@ def draw_at(project: Project, number: int, count: int, data: ks.SchemeData,
         r = layout.rects["diagrams"]
         view = sheet.place_view("diagrams", r, Transform(1.0, (0.0, 0.0), (r.x0, r.y0)))
         kd.draw_diagrams(view, d, scene, len(project.phi), start, st.working_deg)
-    # the plans of every plan position (the note's scales; the analysed one first), the table of scales
+    # the plans of every plan position (the note's scales; the analysed one first), the small plans
+    # (every position's velocity plan, the core's choice of μv and place), the table of scales
     keys = image_keys(project)
     pairs = dict(project.plans_by_position)   # the note's (the control work on A3: the core's A3 scales)
-    small_cache: dict[float, list[Plan]] = {}
-
-    def small_of(crank_mm: float) -> list[Plan] | None:
-        if control:
-            return None
-        if crank_mm not in small_cache:
-            small_cache[crank_mm] = small_plans(project, crank_mm)
-        return small_cache[crank_mm]
     plan_views: list[tuple[str, Plan, str]] = []
     for j, (vplan, aplan) in pairs.items():     # the control work's one position: no number (the scheme's title names it)
         names = plan_view_names(j, first=(j == data.analysed))
         plan_views += [(names[0], vplan, tr("control.sheet.vplan_a3") if control else tr("sheets.sk103", i=j)),
                        (names[1], aplan, tr("control.sheet.aplan_a3") if control else tr("sheets.sk104", i=j))]
-    # the table's rows name the small plans too, whose μv the arrangement chooses: the table's view
-    # is the core's (for its most rows) and filled once the small plans are known
-    candidates = [scale_rows(1.0 / k, scale_text, pairs, d, small_of(c), given=control) for c in SMALL_PLAN_MM]
-    candidates.append(scale_rows(1.0 / k, scale_text, pairs, d, None, given=control))
-    table = None
+    small = None if layout.small is None else list(layout.small)
     if "scales" in layout.rects:     # the control work on A3: every view prints its scale under it
+        # the core reserved the table for the widest μv of the small plans' sizes: the columns too
+        candidates = [scale_rows(1.0 / k, scale_text, pairs, d, list(s), given=control)
+                      for s in ([] if control else project.scenes.small_plan_sets)]
+        candidates.append(scale_rows(1.0 / k, scale_text, pairs, d, None, given=control))
         r = layout.rects["scales"]
         table = sheet.place_view("scales", r, Transform(1.0, (0.0, 0.0), (r.x0, r.y0)))
-    arrangement = layout_plans(sheet, layout, small_of)
-    if table is not None:
-        fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, arrangement.small, given=control),
+        fill_scales_table(table, scale_rows(1.0 / k, scale_text, pairs, d, small, given=control),
                           _table_widths(candidates, table.rect.width))
     for name, plan, title in plan_views:
-        kp.place_plan_view(sheet, name, plan, keys, title, arrangement.rects[name])
-    if arrangement.small is not None:
-        kp.place_small_plans(sheet, arrangement.small, keys, arrangement.cols, arrangement.rects["plans_all"],
+        kp.place_plan_view(sheet, name, plan, keys, title, layout.rects[name])
+    if small is not None:
+        kp.place_small_plans(sheet, small, keys, layout.small_cols, layout.rects["plans_all"],
                              small_plan_letters(project))
     return sheet
-
-
-def layout_plans(sheet: Sheet, layout: SheetLayout, small_of) -> Arrangement:
-    """The plans where the core put them; with the small plans (sheet 1) the core's arrangement
-    again with them among the plans, at the largest crank vector of ``SMALL_PLAN_MM`` whose plans
-    fit (it cannot fail: without them it is the core's)."""
-    if small_of(SMALL_PLAN_MM[0]) is None:
-        return Arrangement(layout.rects, None, 0, 0.0)
-
-    def smalls():
-        seen: set[float] = set()
-        for crank_mm in SMALL_PLAN_MM:
-            small = small_of(crank_mm)
-            if small is None or small[0].scale in seen:
-                continue                  # the same round μv as a larger crank vector
-            seen.add(small[0].scale)
-            yield small, kp.small_grids(small, sheet.frame.width)
-    found = arrange(layout.field, layout.placed, layout.plan_sizes, layout.names, smalls)
-    if found is None:
-        raise InternalError("sheet 1", "the core's arrangement of the plans does not fit without the small plans")
-    return found
 
 
 def place_scheme_view(sheet: Sheet, b: tuple[float, float, float, float], k: float, rect: Rect,
@@ -187,12 +156,9 @@ def small_plan_letters(project: Project) -> set[str]:
 
 
 def small_plans(project: Project, crank_mm: float) -> list[Plan]:
-    """Velocity plans of every position at one round scale, the crank's vector ≤ ``crank_mm``."""
-    kin = project.kinematics
-    tip = project.linkage.drive_tip
-    v_tip = float(np.hypot(*np.asarray(kin.points[tip].vel[0])))
-    mu = round_scale(v_tip, crank_mm)
-    return [build_plans(project.linkage, project.structure, kin, j, mu_v=mu)[0] for j in range(len(project.phi))]
+    """Velocity plans of every position at one round scale, the crank's vector ≤ ``crank_mm`` (the
+    core's, :func:`reportgen.scenes.small_plans.small_plans`)."""
+    return list(core_small_plans(project, crank_mm))
 
 
 def _lower_title(title: str) -> str:

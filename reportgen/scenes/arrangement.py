@@ -1,14 +1,18 @@
 """The arrangement of sheet 1 and of the control work's one sheet, and with it the scale of the plan
 of positions (issue 12, «Scales»): the core decides once at which ГОСТ scale the sheet can draw the
 mechanism — the largest one not above the scheme's box (:meth:`SceneBoxes.scheme_for`) at which
-the scheme's view, the other views (the s–v–a diagrams or Zhukovsky's lever, the table «Масштабы»)
-and the plans of the plan positions all fit in the free field — and the note and the sheet both
-print it; the sheet draws its views in the rectangles found here and never tries another scale.
+the scheme's view, the other views (the s–v–a diagrams or Zhukovsky's lever, the table «Масштабы»),
+the plans of the plan positions and sheet 1's small velocity plans all fit in the free field — and
+the note and the sheet both print it; the sheet draws its views in the rectangles found here and
+never tries another scale.
 
 Pure geometry in sheet mm: the views' sizes come from the scenes and the numbers of
 :mod:`.boxes` (the lettering's room per language included), the packing from :mod:`.packing`.
-The small velocity plans of sheet 1 are the sheet's own (they never decide the scale: they are
-dropped where they do not fit): the sheet passes them to :func:`arrange` as ``smalls``.
+Sheet 1's small velocity plans (:mod:`.small_plans`) are a required view (issue 12: added only
+where they happened to fit, class3 with three plan positions lost them): the scale is the largest
+at which the sheet fits with them at their smallest; their μv is then the largest of their sizes
+at which the sheet fits in every catalogue language (:func:`small_choice`), so that it never
+depends on the language of the sheet's words.
 """
 from __future__ import annotations
 
@@ -17,7 +21,6 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Iterable, Mapping, Sequence
 
-import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ..errors import BuildError
@@ -27,13 +30,14 @@ from .boxes import (GROW_PLANS_MM, LEVER_PAD_MM, LEVER_STRIPS_MM, LEVER_TITLE_MM
                     PLAN_MIN_WIDTH_MM, PLAN_PAD_MM, PLAN_STRIP_MM, PLAN_TITLE_A3_MM, PLAN_TITLE_DIGIT_MM,
                     PLAN_TITLE_MM, SCHEME_CAPTION_STRIP_MM, SCHEME_LETTERS_MIN_MM, SCHEME_LETTERS_MM,
                     SCHEME_MIN_WIDTH_MM,
-                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, SMALL_PLAN_MM, TABLE_ROW_MM,
+                    SCHEME_PADS_MM, SCHEME_TITLE_STRIP_MM, SHEET_MM, TABLE_ROW_MM,
                     TABLE_TITLE_MM, VIEW_GAP, control_sheet, free_field, lettering_room)
 from .packing import Rect, Request, grow, pack, room, spread, try_pack
+from .small_plans import SmallGrid, small_grids
 
-#: The small plans the sheet may add: (what to draw, its grids to try as (columns, width, height)),
-#: in the order of preference; :func:`arrange` keeps the first that fits.
-Smalls = Callable[[], Iterable[tuple[Any, Sequence[tuple[int, float, float]]]]]
+#: The small plans to place: (what to draw, its grids to try), in the order of preference;
+#: :func:`arrange` keeps the first that fits.
+Smalls = Callable[[], Iterable[tuple[Any, Sequence[SmallGrid]]]]
 
 
 @dataclass(frozen=True)
@@ -139,32 +143,101 @@ def _trials(blocks: list[Block]) -> list[list[tuple[Block, str]]]:
 
 
 def arrange(region: BaseGeometry, placed: Sequence[Rect], plan_sizes: Sequence[tuple[float, float]],
-            names: Sequence[tuple[str, str]] | None = None, smalls: Smalls | None = None) -> Arrangement | None:
+            names: Sequence[tuple[str, str]] | None = None, smalls: Smalls | None = None,
+            required: bool = False, apart: bool = True) -> Arrangement | None:
     """Where the plans of the plan positions (and the small plans, if ``smalls`` gives any) go in
     ``region`` (the free field) clear of the views ``placed`` already: the small plans at the first
-    of ``smalls`` that fits (else dropped); among the ways that fit, the one that leaves the most
-    room around every view; then the views are moved to share out the room. A position's two plans
-    stay one block (:func:`plan_blocks`); only where no such way fits (a small sheet) is every plan
-    placed on its own (:func:`apart_blocks`). None: the plans do not fit at all."""
+    of ``smalls`` that fits (else, unless ``required``, left out); among the ways that fit, the one
+    that leaves the most room around every view; then the views are moved to share out the room.
+    A position's two plans stay one block (:func:`plan_blocks`); only where no such way fits (a
+    small sheet) is every plan placed on its own (:func:`apart_blocks`; never unless ``apart``). None:
+    the plans (with the small plans if ``required``) do not fit at all."""
     sizes, pairs = list(plan_sizes), list(names) if names is not None else None
-    for options in (plan_blocks(sizes, pairs), [apart_blocks(sizes, pairs)]):
-        best = _best(region, list(placed), options, smalls)
+    for options in (plan_blocks(sizes, pairs), [apart_blocks(sizes, pairs)])[:2 if apart else 1]:
+        best = _best(region, list(placed), options, smalls, required)
         if best is not None:
             return best
     return None
 
 
-def _best(region, placed: list[Rect], options: list[list[Block]], smalls: Smalls | None) -> Arrangement | None:
+def fits(region: BaseGeometry, placed: Sequence[Rect], plan_sizes: Sequence[tuple[float, float]],
+         names: Sequence[tuple[str, str]] | None = None, grids: Sequence[SmallGrid] = (), apart: bool = True,
+         hints: list | None = None) -> bool:
+    """Whether the plans (and a small plans' block of one of ``grids``, if any) fit in ``region``
+    clear of ``placed`` in some way :func:`arrange` tries (every plan on its own only if ``apart``):
+    the same trials, stopping at the first that fits (the scale's choice asks this of every scale
+    and size it tries). A grid that does not fit beside ``placed`` on its own, or whose area with
+    the plans' exceeds the room, is not tried. ``hints``: the trials that fitted before (kept up to
+    date here), tried first — the answer is the same, found sooner."""
+    sizes, pairs = list(plan_sizes), list(names) if names is not None else None
+    free = region.area - sum((r.width + VIEW_GAP) * (r.height + VIEW_GAP) for r in placed)
+    plans = sum(w * h for w, h in sizes)
+    extras = [g for g in grids if plans + g.width * g.height <= free + MM_EPS
+              and try_pack(region, [Request("plans_all", g.width, g.height)], gap=VIEW_GAP, placed=placed) is not None]
+    if grids and not extras:
+        return False
+    trials: dict[tuple, list[Request]] = {}
+    for a, options in enumerate((plan_blocks(sizes, pairs), [apart_blocks(sizes, pairs)])[:2 if apart else 1]):
+        choices: list[SmallGrid | None] = list(extras) or [None]
+        for grid in choices:
+            extra = [_small_block(grid)] if grid is not None else []
+            for i, blocks in enumerate(options):
+                for t, trial in enumerate(_trials(blocks + extra)):
+                    key = (a, grid.cols if grid is not None else 0, i, t)
+                    trials[key] = [Request(b.name, b.width, b.height, c) for b, c in trial]
+    packer = _Packer(region, placed)
+    hinted = [key for key in (hints or []) if key in trials]
+    for key in itertools.chain(hinted, (key for key in trials if key not in hinted)):
+        if packer.pack(trials[key]) is not None:
+            if hints is not None:
+                if key in hints:
+                    hints.remove(key)
+                hints.insert(0, key)
+            return True
+    return False
+
+
+class _Packer:
+    """:func:`try_pack` of many trials in one field clear of the same views: the trials share their
+    first views (the same plans at the same corners, the small plans elsewhere), so each prefix of
+    requests is packed once (``try_pack`` packs one request after another: packing a prefix and then
+    the next request on it is the same)."""
+
+    def __init__(self, region: BaseGeometry, placed: Sequence[Rect]) -> None:
+        self.region, self.placed = region, list(placed)
+        self.memo: dict[tuple[Request, ...], list[Rect] | None] = {(): []}
+
+    def pack(self, requests: Sequence[Request]) -> list[Rect] | None:
+        key = tuple(requests)
+        if key in self.memo:
+            return self.memo[key]
+        head = self.pack(key[:-1])
+        found = None
+        if head is not None:
+            last = try_pack(self.region, key[-1:], gap=VIEW_GAP, placed=[*self.placed, *head])
+            found = None if last is None else [*head, *last]
+        self.memo[key] = found
+        return found
+
+
+def _small_block(grid: SmallGrid) -> Block:
+    return Block("plans_all", grid.width, grid.height, (("plans_all", 0.0, 0.0, grid.width, grid.height),))
+
+
+def _best(region, placed: list[Rect], options: list[list[Block]], smalls: Smalls | None,
+          required: bool = False) -> Arrangement | None:
     """The arrangement with the most room round its views among ``options`` (ways to put the
-    plans), with the first small plans of ``smalls`` that fit, else without them."""
-    for small, grids in itertools.chain(smalls() if smalls is not None else (), [(None, [(0, 0.0, 0.0)])]):
+    plans), with the first small plans of ``smalls`` that fit, else (unless ``required``) without
+    them."""
+    without = [] if required else [(None, [SmallGrid(0, 0.0, 0.0)])]
+    packer = _Packer(region, placed)
+    for small, grids in itertools.chain(smalls() if smalls is not None else (), without):
         best: Arrangement | None = None
-        for cols, sw, sh in grids:
-            extra = [Block("plans_all", sw, sh, (("plans_all", 0.0, 0.0, sw, sh),))] if small is not None else []
+        for grid in grids:
+            extra = [_small_block(grid)] if small is not None else []
             for blocks in options:
                 for trial in _trials(blocks + extra):
-                    rects = try_pack(region, [Request(b.name, b.width, b.height, c) for b, c in trial],
-                                     gap=VIEW_GAP, placed=placed)
+                    rects = packer.pack([Request(b.name, b.width, b.height, c) for b, c in trial])
                     if rects is None:
                         continue
                     free = room(region, rects, gap=VIEW_GAP, placed=placed)
@@ -176,7 +249,7 @@ def _best(region, placed: list[Rect], options: list[list[Block]], smalls: Smalls
                             sx, sy = r.width / b.width, r.height / b.height     # grown
                             for name, dx, dy, w, h in b.parts:
                                 parts[name] = Rect.from_size(r.x0 + dx * sx, r.y0 + dy * sy, w * sx, h * sy)
-                        best = Arrangement(MappingProxyType(parts), small, cols, free)
+                        best = Arrangement(MappingProxyType(parts), small, grid.cols, free)
         if best is not None:
             return best
     return None
@@ -278,11 +351,10 @@ def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, lan
     """The width (mm) of sheet 1's table «Масштабы» from its own lines — the rows
     drawings.sheets.kinematics.scale_rows writes: μl with the scheme's ratio, the μv and μa of the
     plan positions (positions sharing a μ on one line), the small velocity plans' μv (the widest
-    of the crank vectors ``SMALL_PLAN_MM`` the sheet may choose), the ``diagrams``' scales and pole
+    of their sizes, ``project.scenes.small_plan_sets``), the ``diagrams``' scales and pole
     distances — measured as the sheet measures them (:mod:`.lettering`), in ``language`` (default
     the task's); ``given``: the control work's one position, its plans named without a number."""
     from ..numbers import plain, significant
-    from ..plans import round_scale
     from .lettering import scales_table_width as width
     names: list[tuple[str, str]] = [("scheme", ratio)]
     values: list[tuple[str, str]] = [("value_l", significant(1.0 / k, 4))]
@@ -295,10 +367,8 @@ def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, lan
                          (one if len(positions) == 1 else many, ", ".join(str(j) for j in sorted(positions))))
             values.append((unit, mu))
     if small:
-        kin = project.kinematics
-        v_tip = float(np.hypot(*np.asarray(kin.points[project.linkage.drive_tip].vel[0])))
         names.append(("small", str(len(project.phi) - 1)))
-        values += [("value_v", significant(round_scale(v_tip, mm), 4)) for mm in SMALL_PLAN_MM]
+        values += [("value_v", significant(plans[0].scale, 4)) for plans in project.scenes.small_plan_sets]
     symbols = ["μl", "μv", "μa"]
     if diagrams is not None:
         kind = "m" if diagrams.unit == "м" else "rad"        # a slider's s, v, a or a rocker's ψ, ω, ε
@@ -314,9 +384,10 @@ def scales_table_width(project, k: float, ratio: str, diagrams, small: bool, lan
 class SheetLayout:
     """The sheet's views at the plan of positions' scale ``k`` (mm per metre, ``ratio`` «1:N»):
     ``rects`` of every view by name (``scheme``; ``diagrams`` or ``lever``; ``scales``, the table, if
-    the sheet has one; the plans ``plan_v``, ``plan_a``, ``plan_v_<j>`` …), the views ``placed``
-    before the plans (the sheet adds its small plans among the plans with :func:`arrange`), the
-    plans' ``plan_sizes`` and view ``names`` in :func:`plan_blocks`' order."""
+    the sheet has one; the plans ``plan_v``, ``plan_a``, ``plan_v_<j>`` …; sheet 1's small plans
+    ``plans_all``), the views ``placed`` before the plans, the plans' ``plan_sizes`` and view
+    ``names`` in :func:`plan_blocks`' order; sheet 1's ``small`` plans (None on the control work's
+    sheet) drawn in ``small_cols`` columns."""
     sheet: str                       # "A1" or "A3"
     k: float
     ratio: str
@@ -327,6 +398,8 @@ class SheetLayout:
     table_rows: int
     #: where the model's lower-left bound stands from the scheme view's lower-left corner, mm
     scheme_origin: tuple[float, float] = SCHEME_PADS_MM[:2]
+    small: tuple[Any, ...] | None = None
+    small_cols: int = 0
 
     @property
     def scale(self) -> Scale:
@@ -343,15 +416,40 @@ class SheetLayout:
 LEVER_CORNERS = ("top-right", "bottom-left")
 
 
-def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: str) -> SheetLayout | None:
-    """Sheet 1 (or the control work's sheet) with the plan of positions at ``k``: every view
-    placed as the sheet places it — the scheme top left, the diagrams top right (the lever top
-    right, else bottom left: ``LEVER_CORNERS``), the table bottom right, then the plans
-    (:func:`arrange`) — or None where they do not all fit."""
+@dataclass(frozen=True)
+class _Views:
+    """The views placed before the plans at one scale (one way of placing them): their rectangles,
+    the plans' sizes and names, the table's rows, the scheme's origin."""
+    fmt: str
+    region: BaseGeometry
+    rects: Mapping[str, Rect]
+    placed: tuple[Rect, ...]
+    sizes: tuple[tuple[float, float], ...]
+    names: tuple[tuple[str, str], ...]
+    rows: int
+    origin: tuple[float, float]
+
+
+def _views_at(project, b: tuple[float, float, float, float], k: float, ratio: str,
+              language: str | None = None) -> tuple[_Views, ...]:
+    """:func:`_placed_views`, once per scale and language (the choice asks it of every size)."""
+    cache = project.scenes.__dict__.setdefault("_views_at", {})
+    key = (b, k, ratio, language or project.task.document.language)
+    if key not in cache:
+        cache[key] = tuple(_placed_views(project, b, k, ratio, key[-1]))
+    return cache[key]
+
+
+def _placed_views(project, b: tuple[float, float, float, float], k: float, ratio: str,
+                  language: str | None = None) -> Iterable[_Views]:
+    """Sheet 1 (or the control work's sheet) at ``k`` with the views other than the plans placed as
+    the sheet places them — the scheme top left, the diagrams top right (the lever top right, else
+    bottom left: ``LEVER_CORNERS``), the table bottom right — each way that places them all, with the
+    lettering's room of ``language`` (default the task's)."""
     task = project.task
     control = control_sheet(task)
     fmt = control or "A1"
-    lang = task.document.language
+    lang = language or task.document.language
     region = free_field(*SHEET_MM[fmt])
     if control:
         scene = project.scenes.positions_at(k, ratio)
@@ -373,33 +471,78 @@ def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: st
     pairs = project.plans_by_position
     rows = table_rows(pairs, small=not control, diagrams=diagrams is not None)
     # the A3 field has no room for the table: each view prints its scale
-    table = [] if fmt == "A3" else [Request("scales", scales_table_width(project, k, ratio, diagrams, small=not control, given=bool(control)),
+    table = [] if fmt == "A3" else [Request("scales", scales_table_width(project, k, ratio, diagrams, small=not control,
+                                                                         language=lang, given=bool(control)),
                                             TABLE_ROW_MM * (rows + 1) + TABLE_TITLE_MM, "bottom-right")]
     a3 = fmt == "A3"
     titles = lettering_room(PLAN_TITLE_A3_MM if a3 else PLAN_TITLE_MM, lang)
     least = PLAN_MIN_WIDTH_A3_MM if a3 else PLAN_MIN_WIDTH_MM
-    names = [plan_view_names(j, first=(j == project.analysed)) for j in pairs]
-    sizes = [plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
-             for j, pair in pairs.items() for plan, title in zip(pair, titles)]
+    names = tuple(plan_view_names(j, first=(j == project.analysed)) for j in pairs)
+    sizes = tuple(plan_view_size(plan, title + (0.0 if a3 else PLAN_TITLE_DIGIT_MM * (len(str(j)) - 1)), least)
+                  for j, pair in pairs.items() for plan, title in zip(pair, titles))
     if not _may_fit(region, [scheme, *(second[0] if second else ()), *table], sizes):
-        return None
+        return
     for other in second or [()]:
-        requests = [scheme, *other, *table]
         placed: list[Rect] = []
         rects: dict[str, Rect] = {}
         try:
-            for req in requests:          # one by one, as the sheet reserves them (Sheet.add_view)
+            for req in [scheme, *other, *table]:     # one by one, as the sheet reserves them (Sheet.add_view)
                 rect = pack(region, [req], gap=VIEW_GAP, placed=placed)[0]
                 placed.append(rect)
                 rects[req.name] = rect
         except BuildError:
             continue
-        found = arrange(region, placed, sizes, names)
+        yield _Views(fmt, region, MappingProxyType(rects), tuple(placed), sizes, names, rows, view.origin)
+
+
+def _small_options(project) -> tuple[tuple[tuple[Any, ...], tuple[SmallGrid, ...]], ...]:
+    """Sheet 1's small plans at each of their sizes (``project.scenes.small_plan_sets``, the largest
+    drawing first) with their grids; none on the control work's sheet."""
+    if control_sheet(project.task):
+        return ()
+    x0, _, x1, _ = free_field(*SHEET_MM["A1"]).bounds
+    return tuple((plans, small_grids(plans, x1 - x0)) for plans in project.scenes.small_plan_sets)
+
+
+def layout_at(project, b: tuple[float, float, float, float], k: float, ratio: str, small: int = -1,
+              language: str | None = None) -> SheetLayout | None:
+    """Sheet 1 (or the control work's sheet) with the plan of positions at ``k``: every view
+    placed as the sheet places it (:func:`_views_at`), then the plans and sheet 1's small plans —
+    the ``small``-th of their sizes (:func:`_small_options`; default the smallest drawing) — where
+    they leave the most room (:func:`arrange`); None where they do not all fit."""
+    options = _small_options(project)
+    required = options[small] if options else None
+    for views in _views_at(project, b, k, ratio, language):
+        found = arrange(views.region, views.placed, views.sizes, views.names,
+                        (lambda: [required]) if required is not None else None, required=required is not None,
+                        apart=_apart(options, small))
         if found is not None:
-            rects.update(found.rects)
-            return SheetLayout(fmt, k, ratio, MappingProxyType(rects), tuple(placed), tuple(sizes), tuple(names), rows,
-                               view.origin)
+            rects = {**views.rects, **found.rects}
+            return SheetLayout(views.fmt, k, ratio, MappingProxyType(rects), views.placed, views.sizes, views.names,
+                               views.rows, views.origin, found.small, found.cols)
     return None
+
+
+def fits_at(project, b: tuple[float, float, float, float], k: float, ratio: str, small: int = -1,
+            language: str | None = None) -> bool:
+    """Whether :func:`layout_at` finds a layout (the same trials, stopping at the first that fits)."""
+    options = _small_options(project)
+    grids = options[small][1] if options else ()
+    if options and not grids:
+        return False                        # no grid of the small plans fits the field's width
+    hints = project.scenes.__dict__.setdefault("_fit_hints", [])
+    for views in _views_at(project, b, k, ratio, language):
+        if grids and not fits(views.region, views.placed, views.sizes, views.names, hints=hints):
+            continue                        # the plans alone do not fit: the quick answer
+        if fits(views.region, views.placed, views.sizes, views.names, grids, _apart(options, small), hints):
+            return True
+    return False
+
+
+def _apart(options: Sequence, small: int) -> bool:
+    """Whether the plans may be placed each on its own (:func:`apart_blocks`, the last resort of a
+    small sheet): not to make room for a larger drawing of the small plans than their smallest."""
+    return not options or small in (-1, len(options) - 1)
 
 
 def _may_fit(region, requests: Sequence[Request], sizes: Sequence[tuple[float, float]]) -> bool:
@@ -415,16 +558,70 @@ def _may_fit(region, requests: Sequence[Request], sizes: Sequence[tuple[float, f
 #: The smallest drawing of the mechanism worth trying, mm (its larger side): below it the plan of
 #: positions is a blot, and a sheet that needs it does not fit.
 LEAST_SCHEME_MM = 15.0
+#: The languages of the catalogues whose lettering the core knows (:mod:`.boxes`, :mod:`.lettering`):
+#: the small plans' μv is one that fits sheet 1 in each of them. The widest lettering first (the
+#: likeliest not to fit: the choice stops at the first language a size does not fit).
+LANGUAGES = tuple(sorted(PLAN_TITLE_MM, key=lambda lang: -sum(PLAN_TITLE_MM[lang])))
+
+
+@dataclass(frozen=True)
+class SheetChoice:
+    """The scale of the plan of positions (``k`` mm per metre, ``ratio`` «1:N») and the size of
+    sheet 1's small plans (``small``: the index among :func:`_small_options`, -1 none) chosen for a
+    project; :func:`layout_at` arranges the sheet at them."""
+    k: float
+    ratio: str
+    small: int = -1
+
+
+def first_scale(project, b: tuple[float, float, float, float], scales: Sequence[tuple[float, str]],
+                language: str | None = None) -> tuple[float, str] | None:
+    """The first of ``scales`` (largest first) at which the whole sheet fits in ``language``'s
+    lettering (sheet 1 with its small plans at their smallest drawing); None if none does down to a
+    drawing ``LEAST_SCHEME_MM`` big."""
+    for k, ratio in scales:
+        if max(b[2] - b[0], b[3] - b[1]) * k < LEAST_SCHEME_MM:
+            break
+        if fits_at(project, b, k, ratio, language=language):
+            return k, ratio
+    return None
+
+
+def small_choice(project, b: tuple[float, float, float, float], scales: Sequence[tuple[float, str]],
+                 chosen: tuple[float, str]) -> int:
+    """The size of sheet 1's small plans (index among :func:`_small_options`): the largest drawing
+    up to which every size fits the sheet in every catalogue language (``LANGUAGES``), each at the
+    scale it would draw the mechanism (``chosen`` for the task's; :func:`first_scale` for the
+    others), from the smallest drawing up. The scale of a construction must not depend on the
+    language of its words (issue 12: the press's were 0,04 in ru and 0,05 in en, sized in the room
+    each language's longer or shorter titles left)."""
+    options = _small_options(project)
+    if not options:
+        return -1
+    own = project.task.document.language
+    at: dict[str, tuple[float, str]] = {}
+    for lang in dict.fromkeys((*LANGUAGES, own)):
+        found = chosen if lang == own else first_scale(project, b, scales, lang)
+        if found is not None:              # a language that cannot draw the sheet at all has no say
+            at[lang] = found
+    index = len(options) - 1               # the smallest drawing fits at each language's scale
+    while index > 0 and all(fits_at(project, b, *at[lang], small=index - 1, language=lang) for lang in at):
+        index -= 1
+    return index
+
+
+def choose_scale(project, b: tuple[float, float, float, float], scales: Sequence[tuple[float, str]]
+                 ) -> SheetChoice | None:
+    """The scale of the plan of positions (the first of ``scales`` at which the whole sheet fits,
+    :func:`first_scale`) and the small plans' size (:func:`small_choice`); None if no scale fits."""
+    found = first_scale(project, b, scales)
+    if found is None:
+        return None
+    return SheetChoice(*found, small_choice(project, b, scales, found))
 
 
 def choose_layout(project, b: tuple[float, float, float, float], scales: Sequence[tuple[float, str]]
                   ) -> SheetLayout | None:
-    """The first of ``scales`` (largest first) at which the whole sheet fits; None if none does
-    down to a drawing ``LEAST_SCHEME_MM`` big."""
-    for k, ratio in scales:
-        if max(b[2] - b[0], b[3] - b[1]) * k < LEAST_SCHEME_MM:
-            break
-        found = layout_at(project, b, k, ratio)
-        if found is not None:
-            return found
-    return None
+    """The sheet arranged at :func:`choose_scale`'s choice; None if no scale fits."""
+    choice = choose_scale(project, b, scales)
+    return None if choice is None else layout_at(project, b, choice.k, choice.ratio, choice.small)

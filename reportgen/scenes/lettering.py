@@ -67,3 +67,44 @@ def scales_table_width(language: str, names: Iterable[tuple[str, str]], values: 
     second = column([chars["header_name"], *(chars[k] + len(t) for k, t in names)])
     third = column([chars["header_value"], *(chars[k] + len(t) for k, t in values)])
     return first + second + third
+
+
+#: Sheet 1's small velocity plans (drawings.scenes.kinematics_plans): their title «Планы скоростей
+#: положений 0–N» and caption «μv = … (м/с)/мм», 5 mm high. Per language, the characters of each word
+#: of the title (split at single spaces; the last word takes the last position's number) and of the
+#: caption's fixed part (its μv left out). tests/scenes/test_lettering.py derives them from the
+#: catalogues.
+SMALL_PLANS_CHARS: Mapping[str, Mapping[str, tuple[int, ...]]] = {
+    "ru": {"title": (5, 9, 9, 2), "caption": (14,)},
+    "uk": {"title": (5, 10, 8, 2), "caption": (14,)},
+    "en": {"title": (8, 8, 2, 9, 2), "caption": (14,)},
+}
+#: The small plans' title and caption letters, mm, and the room beside a line of them (5 mm each side).
+SMALL_TITLE_H, SMALL_TITLE_PAD_MM = 5.0, 10.0
+
+
+def title_lines(words: Sequence[int], width: float, height: float = SMALL_TITLE_H) -> tuple[int, ...]:
+    """The characters of each line of a title whose words have ``words`` characters, lettered
+    ``height`` mm high over a view ``width`` mm wide: one line if it fits with its pad
+    (``SMALL_TITLE_PAD_MM``) or has no space, else two, split at the space that makes the longer
+    line shortest (as drawings.scenes.kinematics_plans.title_lines splits the text itself)."""
+    one = sum(words) + len(words) - 1
+    if one * SHEET_ADVANCE * height + SMALL_TITLE_PAD_MM <= width or len(words) < 2:
+        return (one,)
+    splits = [(sum(words[:k]) + k - 1, sum(words[k:]) + len(words) - k - 1) for k in range(1, len(words))]
+    return min(splits, key=max)
+
+
+def small_plans_lettering(last: str, mu: str, width: float) -> tuple[int, float]:
+    """The lines of the small plans' title (the last position ``last``) over a grid ``width`` mm wide
+    and the width its title and caption (``mu`` the μv as printed) need, mm, in every catalogue
+    language at once: a construction's size (and so its scale) must not depend on the language of
+    its words (issue 12), so the room reserved is the widest language's."""
+    lines, need = 1, 0.0
+    for chars in SMALL_PLANS_CHARS.values():
+        title = (*chars["title"][:-1], chars["title"][-1] + len(last))
+        split = title_lines(title, width)
+        lines = max(lines, len(split))
+        need = max(need, text_width("x" * max(split), SMALL_TITLE_H) + SMALL_TITLE_PAD_MM,
+                   text_width("x" * (chars["caption"][0] + len(mu)), SMALL_TITLE_H) + SMALL_TITLE_PAD_MM)
+    return lines, need

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Iterable, Sequence
 
+import numpy as np
 from shapely.geometry import box
 from shapely.geometry.base import BaseGeometry
 
@@ -80,12 +81,18 @@ class Request:
 
 
 def _corner_target(region: BaseGeometry, corner: str) -> tuple[float, float]:
-    x0, y0, x1, y1 = region.bounds
+    x0, y0, x1, y1 = _bounds(region)
     return {
         "top-left": (x0, y1), "top-right": (x1, y1),
         "bottom-left": (x0, y0), "bottom-right": (x1, y0),
         "center": ((x0 + x1) / 2.0, (y0 + y1) / 2.0),
     }[corner]
+
+
+def _rect_corner(rect: Rect, corner: str) -> tuple[float, float]:
+    """:func:`_corner_target` of a rectangle, without making it a polygon."""
+    return {"top-left": (rect.x0, rect.y1), "top-right": (rect.x1, rect.y1),
+            "bottom-left": (rect.x0, rect.y0), "bottom-right": (rect.x1, rect.y0)}[corner]
 
 
 def _candidates(region: BaseGeometry, placed: Sequence[Rect], w: float, h: float,
@@ -120,17 +127,21 @@ def pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 10.0
             raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
         tx, ty = _corner_target(region, req.preferred)
         best: tuple[float, Rect] | None = None
+        bx0, by0, bx1, by1 = grown.bounds
         for cx, cy in _candidates(region, done, req.width, req.height, gap):
             rect = Rect.from_size(cx, cy, req.width, req.height)
-            if not grown.contains(rect.polygon()):
+            # the cheap tests first (the outcome is the same: a rect must pass them all)
+            if rect.x0 < bx0 or rect.y0 < by0 or rect.x1 > bx1 or rect.y1 > by1:
+                continue                       # outside the bounds: not inside the region
+            rx, ry = rect.center if req.preferred == "center" else _rect_corner(rect, req.preferred)
+            d = (rx - tx) ** 2 + (ry - ty) ** 2
+            if best is not None and d >= best[0] - MM_ROUNDOFF:
                 continue
             if any(rect.overlaps(p.expanded(gap - MM_EPS)) for p in done):
                 continue
-            rx, ry = rect.center if req.preferred == "center" else _corner_target(
-                rect.polygon(), req.preferred)
-            d = (rx - tx) ** 2 + (ry - ty) ** 2
-            if best is None or d < best[0] - MM_ROUNDOFF:
-                best = (d, rect)
+            if not grown.contains(rect.polygon()):
+                continue
+            best = (d, rect)
         if best is None:
             free = region.area - sum(r.width * r.height for r in done)
             raise BuildError(
@@ -151,40 +162,72 @@ def try_pack(region: BaseGeometry, requests: Sequence[Request], *, gap: float = 
     """Like :func:`pack` but returns None when a view does not fit, and fast enough to try many
     arrangements: a rectangle is inside ``region`` when it is inside its bounds and clear of its
     :func:`walls` (exact for a rectilinear region such as the free field of a sheet, cautious
-    otherwise)."""
-    bx0, by0, bx1, by1 = region.bounds
+    otherwise). The candidates of a view are tested at once (numpy arrays, the same arithmetic as
+    one by one): of those inside the bounds and clear of the others, the first in the candidates'
+    order whose distance to the preferred corner no later one undercuts by ``MM_ROUNDOFF``."""
+    bx0, by0, bx1, by1 = _bounds(region)
     notches = walls(region)
+    corners_x, corners_y = _exterior(region)
     done: list[Rect] = list(placed)
     out: list[Rect] = []
     eps = MM_EPS
+    fixed = np.array([(b.x0, b.y0, b.x1, b.y1) for b in (n.expanded(-eps) for n in notches)], float).reshape(-1, 4)
     for req in requests:
         if req.preferred not in CORNERS:
             raise ParameterError("preferred", req.preferred, f"one of {CORNERS}")
         tx, ty = _corner_target(region, req.preferred)
         fx = {"top-left": 0.0, "bottom-left": 0.0, "top-right": 1.0, "bottom-right": 1.0}.get(req.preferred, 0.5)
         fy = {"top-left": 1.0, "top-right": 1.0, "bottom-left": 0.0, "bottom-right": 0.0}.get(req.preferred, 0.5)
-        # the blocked rectangles as tuples, and each candidate's corners as Rect.from_size sets
-        # them, tested as Rect.overlaps does: the same arithmetic without an object per candidate
-        blocked = [(b.x0, b.y0, b.x1, b.y1) for b in
-                   [p.expanded(gap - eps) for p in done] + [n.expanded(-eps) for n in notches]]
         w, h = req.width, req.height
-        best: tuple[float, float, float] | None = None
-        for cx, cy in _candidates(region, done, w, h, gap):
-            if cx < bx0 - eps or cy < by0 - eps or cx + w > bx1 + eps or cy + h > by1 + eps:
-                continue
-            d = (cx + fx * w - tx) ** 2 + (cy + fy * h - ty) ** 2
-            if best is not None and d >= best[0] - MM_ROUNDOFF:
-                continue
-            x1, y1 = cx + w, cy + h
-            if any(cx < b2 and b0 < x1 and cy < b3 and b1 < y1 for b0, b1, b2, b3 in blocked):
-                continue
-            best = (d, cx, cy)
-        if best is None:
+        xs = {bx0, bx1 - w, *corners_x, *(x - w for x in corners_x)}
+        ys = {by0, by1 - h, *corners_y, *(y - h for y in corners_y)}
+        for r in done:
+            xs.update((r.x1 + gap, r.x0 - gap - w, r.x0, r.x1 - w))
+            ys.update((r.y1 + gap, r.y0 - gap - h, r.y0, r.y1 - h))
+        # the candidates as _candidates orders them (x, then y), inside the bounds
+        ax = np.array(sorted(xs), float)
+        ay = np.array(sorted(ys), float)
+        ax = ax[(ax >= bx0 - eps) & (ax + w <= bx1 + eps)]
+        ay = ay[(ay >= by0 - eps) & (ay + h <= by1 + eps)]
+        if not len(ax) or not len(ay):
             return None
-        rect = Rect.from_size(best[1], best[2], w, h)
+        cx = np.repeat(ax, len(ay))
+        cy = np.tile(ay, len(ax))
+        d = (cx + fx * w - tx) ** 2 + (cy + fy * h - ty) ** 2
+        blocked = np.array([(b.x0, b.y0, b.x1, b.y1) for b in (p.expanded(gap - eps) for p in done)],
+                           float).reshape(-1, 4)
+        blocked = np.vstack([blocked, fixed])
+        x1, y1 = cx + w, cy + h
+        hit = ((cx[:, None] < blocked[:, 2]) & (blocked[:, 0] < x1[:, None])
+               & (cy[:, None] < blocked[:, 3]) & (blocked[:, 1] < y1[:, None])).any(axis=1)
+        free = np.flatnonzero(~hit)
+        if not len(free):
+            return None
+        dist = d[free]
+        k = 0                                    # the record scan of the one-by-one loop
+        while True:
+            later = np.flatnonzero(dist[k + 1:] < dist[k] - MM_ROUNDOFF)
+            if not len(later):
+                break
+            k += 1 + int(later[0])
+        rect = Rect.from_size(float(cx[free[k]]), float(cy[free[k]]), w, h)
         done.append(rect)
         out.append(rect)
     return out
+
+
+@lru_cache(maxsize=64)
+def _bounds(region: BaseGeometry) -> tuple[float, float, float, float]:
+    """``region.bounds``, once per region (a shapely call per request cost a tenth of sheet 1's
+    scale choice)."""
+    return tuple(region.bounds)
+
+
+@lru_cache(maxsize=32)
+def _exterior(region: BaseGeometry) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The x and y of the corners of ``region``'s exterior, once per region."""
+    coords = list(region.exterior.coords)
+    return tuple(x for x, _ in coords), tuple(y for _, y in coords)
 
 
 def walls(region: BaseGeometry) -> list[Rect]:

@@ -6,7 +6,8 @@ from functools import cached_property
 from types import MappingProxyType
 from typing import Mapping
 
-from .arrangement import SheetLayout, choose_layout
+from ..errors import InternalError
+from .arrangement import SheetChoice, SheetLayout, choose_scale, layout_at
 from .dynamics import DynamicsScenes, dynamics_scenes
 from .free_body import FreeBody, free_bodies
 from .meshing import MeshingScene, meshing_scene
@@ -33,18 +34,40 @@ class Scenes:
                                 len(self.project.plan_positions), boxes.scheme_for(self.project.task))
 
     @cached_property
+    def sheet_choice(self) -> SheetChoice | None:
+        """The scale of the plan of positions — the largest of :attr:`positions_scales` at which
+        sheet 1 (or the control work's sheet) fits with all its views, sheet 1's small plans
+        included — and the small plans' size (:mod:`.arrangement`); None: no scale fits (the sheet
+        says so). The note reads the scale from here, without the sheet's arrangement."""
+        return choose_scale(self.project, bounds(self.scheme_data, self.project.linkage), self.positions_scales)
+
+    @cached_property
     def sheet_layout(self) -> SheetLayout | None:
-        """Sheet 1's (or the control work's sheet's) views at the largest of :attr:`positions_scales`
-        at which they all fit (:mod:`.arrangement`); None: at none of them (the sheet says so)."""
-        return choose_layout(self.project, bounds(self.scheme_data, self.project.linkage), self.positions_scales)
+        """Sheet 1's (or the control work's sheet's) views arranged at :attr:`sheet_choice`; None:
+        no scale fits."""
+        choice = self.sheet_choice
+        if choice is None:
+            return None
+        found = layout_at(self.project, bounds(self.scheme_data, self.project.linkage), choice.k, choice.ratio,
+                          choice.small)
+        if found is None:                   # fits_at said it fits: the same trials
+            raise InternalError("sheet layout", f"the chosen scale {choice.ratio} does not arrange")
+        return found
 
     @cached_property
     def positions_scale(self) -> tuple[float, str]:
         """The scale of the plan of positions (mm per metre, «1:N»), the one the note and the sheet
-        print: :attr:`sheet_layout`'s; the scheme box's where no arrangement fits (the note can be
+        print: :attr:`sheet_choice`'s; the scheme box's where no arrangement fits (the note can be
         built without the sheet, whose build then stops with a clear error)."""
-        found = self.sheet_layout
+        found = self.sheet_choice
         return (found.k, found.ratio) if found is not None else self.positions_scales[0]
+
+    @cached_property
+    def small_plan_sets(self) -> tuple:
+        """Sheet 1's small velocity plans at each of their sizes, the largest drawing first
+        (:func:`.small_plans.small_plan_sets`)."""
+        from .small_plans import small_plan_sets
+        return small_plan_sets(self.project)
 
     @cached_property
     def lever(self) -> Scene:

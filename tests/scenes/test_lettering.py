@@ -131,3 +131,36 @@ def test_the_examples_tables_are_reserved_from_their_lines(example):
     drawn = _table_drawn(project, layout.k, layout.ratio, project.task.document.language)
     assert drawn <= layout.rects["scales"].width + 1e-9
     assert layout.rects["scales"].width - drawn < 3 * lettering.SHEET_ADVANCE * lettering.TABLE_TEXT_MM + 1e-9
+
+
+# ------------------------------------------------------------------------------------------------
+# sheet 1's small plans: their block's lettering reserve is the same in every language (issue 12)
+
+
+def _small_chars(lang: str) -> dict[str, tuple[int, ...]]:
+    """The small plans' title (its words) and caption (its fixed part) from the catalogue."""
+    with language(lang):
+        title = tr("sheets.kp01", v1="")
+        return {"title": tuple(len(w) for w in title.split(" ")), "caption": (len(tr("sheets.kp02", v1="")),)}
+
+
+@pytest.mark.parametrize("lang", LANGUAGES)
+def test_the_small_plans_words_are_the_catalogues(lang):
+    assert dict(lettering.SMALL_PLANS_CHARS[lang]) == _small_chars(lang)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(20.0, 800.0), st.integers(1, 199), st.sampled_from(("0,04", "0,1", "0,0025", "12,5")))
+def test_the_small_plans_lettering_fits_the_cores_reserve_in_every_language(width, last, mu):
+    """The sheet letters the title over a grid ``width`` mm wide (in two lines where one does not fit)
+    and the caption under it: in no language more lines, nor wider, than the core reserved (one
+    reserve for all languages, so that the small plans' scale cannot depend on the language)."""
+    from drawings.scenes import kinematics_plans as kp
+    lines, need = lettering.small_plans_lettering(str(last), mu, width)
+    for lang in LANGUAGES:
+        with language(lang):
+            drawn = kp.title_lines(tr("sheets.kp01", v1=last), width)
+            caption = style.text_width(tr("sheets.kp02", v1=mu), kp.SMALL_TITLE_H) + kp.SMALL_TITLE_PAD_MM
+        assert len(drawn) <= lines
+        assert max(style.text_width(t, kp.SMALL_TITLE_H) for t in drawn) + kp.SMALL_TITLE_PAD_MM <= need + 1e-9
+        assert caption <= need + 1e-9

@@ -74,26 +74,22 @@ def _distance(p, q) -> float:
     return math.hypot(dx, dy)
 
 
-def test_drawn_at_the_notes_scale_with_the_small_plans(drawn, request):
+def test_drawn_at_the_notes_scale_with_the_small_plans(drawn):
     project, sheet = drawn
     note_scale = project.scenes.positions.scale("μl").value
     assert sheet.views["scheme"].transform.scale == pytest.approx(1.0 / note_scale, rel=1e-12)
-    if request.node.callspec.id != KNOWN_DROPPED:
-        assert "plans_all" in sheet.views, "the small velocity plans were left out"
-
-
-#: Issue 12, left open: class3 with 3 plan positions drops its small velocity plans. The core chooses
-#: the scale from the views without the small plans, and the sheet adds them only where they fit; once
-#: the table «Масштабы» got its real width (2,6 mm wider than the old fixed room) they no longer fit.
-#: The cure is the core reserving the small plans' block when it chooses the scale.
-KNOWN_DROPPED = "class3-3"
+    assert "plans_all" in sheet.views, "the small velocity plans were left out"
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="issue 12: the core's scale choice does not reserve the small plans (class3, 3 positions)")
 def test_class3_with_three_plan_positions_keeps_its_small_plans(tmp_path):
+    """Issue 12: the core chose the scale from the views without the small plans, and the sheet added
+    them only where they fitted; once the table «Масштабы» got its real width (2,6 mm wider than the
+    old fixed room) class3 with three plan positions lost them. The core now reserves them: the
+    scheme drops to the next ГОСТ scale where they need it."""
     project = with_plan_positions("class3", 3, tmp_path)
     assert "plans_all" in sheet1.draw(project, 1, 4).views
+    assert project.scenes.positions_scale[1] == "1:5"      # 1:4 of two plan positions leaves them no room
 
 
 def test_each_acceleration_plan_beside_its_velocity_plan(drawn):
