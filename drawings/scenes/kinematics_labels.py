@@ -18,60 +18,12 @@ from drawings.primitives import Canvas, LabelRecord, descent
 from reportgen.geometry import Vec2 as Vec
 from reportgen.tolerances import ABS_ZERO, AREA_EPS_MM2, MM_ROUNDOFF
 
-#: LaTeX commands that appear in the names of plan components.
-_GREEK = {r"\tau": "τ", r"\omega": "ω", r"\varepsilon": "ε", r"\varphi": "φ", r"\pi": "π",
-          r"\psi": "ψ", r"\mu": "μ"}
-
-
-@dataclass(frozen=True)
-class Rich:
-    """A base text with an optional superscript and subscript (stacked after the base)."""
-    base: str
-    sup: str = ""
-    sub: str = ""
+from drawings.lettering import Rich, flatten as _flatten, from_tex  # noqa: F401  (one home: drawings/lettering.py)
 
 
 def _smaller(height: float) -> float:
     sizes = [h for h in style.TEXT_HEIGHTS if h < height - MM_ROUNDOFF]
     return sizes[-1] if sizes else height
-
-
-def _flatten(tex: str) -> str:
-    """``A_{3}A`` → ``A3A``; Greek commands to letters; braces dropped."""
-    for cmd, ch in _GREEK.items():
-        tex = tex.replace(cmd, ch)
-    return re.sub(r"[{}_^\\ ]", "", tex)
-
-
-def _group(tex: str, start: int) -> tuple[str, int]:
-    """The argument of ^ or _ at ``start``: a braced group or one character."""
-    if start < len(tex) and tex[start] == "{":
-        depth, i = 0, start
-        while i < len(tex):
-            depth += {"{": 1, "}": -1}.get(tex[i], 0)
-            if depth == 0:
-                return tex[start + 1:i], i + 1
-            i += 1
-        return tex[start + 1:], len(tex)
-    return tex[start:start + 1], start + 1
-
-
-def from_tex(tex: str) -> Rich:
-    """A component name as :mod:`reportgen.plans` writes it (``a^{\\tau}_{BA}``) as a :class:`Rich`."""
-    m = re.match(r"^([^_^]*)", tex)
-    base = m.group(1) if m else ""
-    i = len(base)
-    sup = sub = ""
-    while i < len(tex):
-        mark = tex[i]
-        arg, i = _group(tex, i + 1)
-        if mark == "^":
-            sup = _flatten(arg)
-        elif mark == "_":
-            sub = _flatten(arg)
-        else:
-            break
-    return Rich(_flatten(base), sup, sub)
 
 
 def from_letter(key: str, helpers: bool = False) -> Rich:
