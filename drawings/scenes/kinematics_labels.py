@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from typing import Callable, Sequence, TypeAlias
 
 import shapely
@@ -18,60 +17,12 @@ from drawings.primitives import Canvas, LabelRecord, descent
 from reportgen.geometry import Vec2 as Vec
 from reportgen.tolerances import ABS_ZERO, AREA_EPS_MM2, MM_ROUNDOFF
 
-#: LaTeX commands that appear in the names of plan components.
-_GREEK = {r"\tau": "τ", r"\omega": "ω", r"\varepsilon": "ε", r"\varphi": "φ", r"\pi": "π",
-          r"\psi": "ψ", r"\mu": "μ"}
-
-
-@dataclass(frozen=True)
-class Rich:
-    """A base text with an optional superscript and subscript (stacked after the base)."""
-    base: str
-    sup: str = ""
-    sub: str = ""
+from drawings.lettering import Rich, flatten as _flatten, from_tex  # noqa: F401  (one home: drawings/lettering.py)
 
 
 def _smaller(height: float) -> float:
     sizes = [h for h in style.TEXT_HEIGHTS if h < height - MM_ROUNDOFF]
     return sizes[-1] if sizes else height
-
-
-def _flatten(tex: str) -> str:
-    """``A_{3}A`` → ``A3A``; Greek commands to letters; braces dropped."""
-    for cmd, ch in _GREEK.items():
-        tex = tex.replace(cmd, ch)
-    return re.sub(r"[{}_^\\ ]", "", tex)
-
-
-def _group(tex: str, start: int) -> tuple[str, int]:
-    """The argument of ^ or _ at ``start``: a braced group or one character."""
-    if start < len(tex) and tex[start] == "{":
-        depth, i = 0, start
-        while i < len(tex):
-            depth += {"{": 1, "}": -1}.get(tex[i], 0)
-            if depth == 0:
-                return tex[start + 1:i], i + 1
-            i += 1
-        return tex[start + 1:], len(tex)
-    return tex[start:start + 1], start + 1
-
-
-def from_tex(tex: str) -> Rich:
-    """A component name as :mod:`reportgen.plans` writes it (``a^{\\tau}_{BA}``) as a :class:`Rich`."""
-    m = re.match(r"^([^_^]*)", tex)
-    base = m.group(1) if m else ""
-    i = len(base)
-    sup = sub = ""
-    while i < len(tex):
-        mark = tex[i]
-        arg, i = _group(tex, i + 1)
-        if mark == "^":
-            sup = _flatten(arg)
-        elif mark == "_":
-            sub = _flatten(arg)
-        else:
-            break
-    return Rich(_flatten(base), sup, sub)
 
 
 def from_letter(key: str, helpers: bool = False) -> Rich:
@@ -178,11 +129,13 @@ def place_rich(canvas: Canvas, candidates: Sequence[Vec], label: Label, height: 
 def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], label: Label,
                  height: float, inside: Polygon | None = None, optional: bool = False,
                  names: Names = None, avoid: BaseGeometry | None = None,
-                 strict: bool = False) -> Polygon | None:
+                 strict: bool = False, clear: tuple[float, float] = (0.0, 0.0)) -> Polygon | None:
     """Like :func:`place_rich` over several passes of (candidates, lines it may cross): the first
     candidate of the first pass that overlaps no text, stays ``inside`` (and off ``avoid``) and
     crosses at most that many lines wins; otherwise the candidate with the fewest conflicts over
-    all passes (``strict``: none, the label is not drawn — the caller tries a leader next)."""
+    all passes (``strict``: none, the label is not drawn — the caller tries a leader next).
+    ``clear``: (from texts, from lines) the room (mm) a label keeps beyond its box's padding — a
+    clear gap between two names, so that «A» and «2» do not read as «A 2» (issue 12; default none)."""
     boxes = [b for _, b in canvas.annotations.boxes]
     tree = shapely.STRtree(boxes) if boxes else None
 
@@ -197,8 +150,9 @@ def place_passes(canvas: Canvas, passes: Sequence[tuple[Sequence[Vec], int]], la
         for c in candidates:
             poly = rich_box(label, c, height)
             out = 0 if (inside is None or inside.contains(poly)) and (avoid is None or not avoid.intersects(poly)) else 1
-            h = hits(poly)
-            crossings = canvas.annotations.crossings(poly) if out == 0 and h == 0 else 99
+            h = hits(rich_box(label, c, height, 0.5 + clear[0]) if clear[0] else poly)
+            crossings = canvas.annotations.crossings(rich_box(label, c, height, 0.5 + clear[1]) if clear[1] else poly) \
+                if out == 0 and h == 0 else 99
             if out == 0 and h == 0 and crossings <= tolerate:
                 return draw_rich(canvas, c, label, height, names)
             score = (out, h, crossings, rank)
@@ -263,7 +217,8 @@ def _leader_crossings(canvas: Canvas, leader: BaseGeometry) -> int:
 
 def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: Label, height: float,
                     inside: Polygon | None = None, names: BaseGeometry | None = None,
-                    to: BaseGeometry | None = None, anywhere: bool = False) -> Polygon | None:
+                    to: BaseGeometry | None = None, anywhere: bool = False,
+                    clear: tuple[float, float] = (0.0, 0.0)) -> Polygon | None:
     """``label`` away from the point ``p`` (sheet mm) on a thin leader to it (or to the nearest point
     of ``to``, its vector): the first candidate centre whose box overlaps no text, crosses no drawn
     line and stays ``inside``, and whose leader crosses no text; the leader is drawn and kept as a
@@ -282,9 +237,10 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
         poly = rich_box(label, c, height)
         if inside is not None and not inside.contains(poly):
             return None
-        if tree is not None and any(poly.intersection(boxes[j]).area > AREA_EPS_MM2 for j in tree.query(poly)):
+        wide = rich_box(label, c, height, 0.5 + clear[0]) if clear[0] else poly
+        if tree is not None and any(wide.intersection(boxes[j]).area > AREA_EPS_MM2 for j in tree.query(wide)):
             return None
-        if canvas.annotations.crossings(poly):
+        if canvas.annotations.crossings(rich_box(label, c, height, 0.5 + clear[1]) if clear[1] else poly):
             return None
         letters = text_extent(label, c, height)          # the leader touches a letter, not a gap
         q0, q1 = nearest_points(letters, Point(p) if to is None else to)
@@ -426,7 +382,8 @@ def own_point(candidates: Sequence[Vec], label: Label, height: float, p: Vec,
 def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefer_deg: float,
                       others: Sequence[Vec], inside: Polygon | None = None,
                       optional: bool = False, avoid: BaseGeometry | None = None,
-                      far_gaps: Sequence[float] = (8.0, 11.0, 14.0, 18.0), cross: int = 1) -> Polygon | None:
+                      far_gaps: Sequence[float] = (8.0, 11.0, 14.0, 18.0), cross: int = 1,
+                      clear: tuple[float, float] = (0.0, 0.0)) -> Polygon | None:
     """A point's letter: beside ``p`` (within LABEL_NEAR_MM, nearer to it than to the ``others``)
     where it overlaps no text and crosses no line, then crossing up to ``cross`` lines (0: a letter
     is never crossed by a line, issue 12); where no such spot is free, farther out (``far_gaps``) on
@@ -438,12 +395,12 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
     near = own_point(around(p, label, height, prefer_deg, gaps=(0.6, 1.5, 3.0, 4.5, 6.0)),
                      label, height, p, others, LABEL_NEAR_MM - 1.0)
     poly = place_passes(canvas, [(near, k) for k in range(cross + 1)], label, height, inside, optional=True,
-                        names=Point(p), avoid=avoid, strict=cross == 0) if near else None
+                        names=Point(p), avoid=avoid, strict=cross == 0 or any(clear), clear=clear) if near else None
     if poly is not None:
         return poly
     if cross == 0:                  # never crossed: on a leader, anywhere in the region if need be
         poly = place_on_leader(canvas, p, around(p, label, height, prefer_deg, gaps=(6.0, 8.0, 11.0, 14.0, 18.0))
-                               + spread_around(p, 30.0), label, height, inside, anywhere=True)
+                               + spread_around(p, 30.0), label, height, inside, anywhere=True, clear=clear)
         if poly is not None:
             return poly
         fallback = near or around(p, label, height, prefer_deg, gaps=(1.0, 3.0, 6.0))
@@ -456,7 +413,8 @@ def place_point_label(canvas: Canvas, p: Vec, label: Label, height: float, prefe
         return LineString([leader[-1], p])
 
     far = around(p, label, height, prefer_deg, gaps=far_gaps)
-    poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named, avoid=avoid)
+    poly = place_passes(canvas, [(far, 0)], label, height, inside, optional=True, names=named, avoid=avoid,
+                        clear=clear)
     if poly is not None:
         canvas.layout.add_line(leader[0], p, dxfattribs={"layer": "thin"})
         canvas.annotations.add_obstacle(LineString([leader[0], p]))     # later labels keep off it

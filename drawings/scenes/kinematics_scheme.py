@@ -31,6 +31,12 @@ from reportgen.tolerances import ABS_ROUNDOFF, MM_ROUNDOFF, RTOL_EQUAL
 from ..words import tr
 #: Link numbers: radius of the circle, text height, mm.
 LINK_NUMBER_MM = (2.8, 3.5)
+#: The room (mm) the scheme's names keep beyond their boxes' padding: from the other names (their
+#: letters at least NAME_GAP_MM apart: more than the word space of ГОСТ 2.304, 0,6·h, so that
+#: «A» and the position number «2» beside it do not read as one name «A 2», issue 12) and from the
+#: drawn lines (a letter set tight against the crank read as crossed).
+NAME_CLEAR = (1.5, 0.5)
+NAME_GAP_MM = 1.0 + NAME_CLEAR[0]
 
 
 def scheme_data(project: Project, analysed: int) -> SchemeData:
@@ -258,13 +264,14 @@ def _draw_letters(view: View, scene: Scene, k: float, links: BaseGeometry | None
         rich = rl.from_tex(lb.text)
         prefer = 90.0 if lb.text.startswith("S_") else math.degrees(math.atan2(p[1] - c[1], p[0] - c[0]))
         rl.place_point_label(view, p, rich, 5.0, prefer, others, inside=_inside(view), avoid=links,
-                             far_gaps=LETTER_LEADER_MM, cross=0)
+                             far_gaps=LETTER_LEADER_MM, cross=0, clear=NAME_CLEAR)
 
 
 def _draw_numbers(view: View, project: Project, scene: Scene, k: float, links: BaseGeometry | None = None) -> None:
     """The scene's position numbers at the crank pin, outside the crank circle first, nearer to
-    their pin than to any other labelled point, off the links; where no such spot is free, on a
-    thin leader from the pin (:func:`drawings.scenes.kinematics_labels.place_point_label`)."""
+    their pin than to any other labelled point, off the links, crossed by no line and NAME_GAP_MM
+    clear of the other names; where no such spot is free, on a thin leader from the pin
+    (:func:`drawings.scenes.kinematics_labels.place_point_label`, ``cross=0``)."""
     from reportgen.tolerances import LABEL_NEAR_MM
     lk = project.linkage
     o = view.transform(tuple(_pts(project.scenes.scheme_data.kin, 0)[lk.drive_axis]))
@@ -285,10 +292,11 @@ def _draw_numbers(view: View, project: Project, scene: Scene, k: float, links: B
         r = math.dist(p, o)
         cands = [q for q in cands if math.dist(q, o) > r] + [q for q in cands if math.dist(q, o) <= r]
         near = rl.own_point(cands, rich, 3.5, p, pins, LABEL_NEAR_MM - 1.0)
-        if near and rl.place_passes(view, [(near, 0), (near, 1)], rich, 3.5, inside=inside, optional=True,
-                                    names=ShapelyPoint(p), avoid=links) is not None:
+        if near and rl.place_passes(view, [(near, 0)], rich, 3.5, inside=inside, optional=True,
+                                    names=ShapelyPoint(p), avoid=links, strict=True, clear=NAME_CLEAR) is not None:
             continue
-        rl.place_point_label(view, p, rich, 3.5, ang, pins, inside=inside, avoid=links, far_gaps=NUMBER_LEADER_MM)
+        rl.place_point_label(view, p, rich, 3.5, ang, pins, inside=inside, avoid=links, far_gaps=NUMBER_LEADER_MM,
+                             clear=NAME_CLEAR, cross=0)        # never crossed: on a leader where need be
 
 
 def _link_number_spots(view: View, project: Project, data: SchemeData, k: int, i: int) -> list[tuple[float, float]]:
@@ -361,7 +369,7 @@ def _draw_link_numbers(view: View, project: Project, data: SchemeData, links: Ba
         spots += [(c, foot) for c, foot in _link_number_leader_spots(view, project, data, k, data.analysed)]
         for c, foot in spots:
             sq = square(c)
-            if not inside.contains(sq) or ann.hits_box(ShapelyPoint(c).buffer(r + TEXT_GAP_MM, 16)):
+            if not inside.contains(sq) or ann.hits_box(ShapelyPoint(c).buffer(r + NAME_GAP_MM, 16)):
                 continue
             if foot is not None:
                 leader = LineString([_circle_edge(c, foot, r), foot])

@@ -28,6 +28,7 @@ from reportgen.scenes.scene import Polyline as ScenePolyline
 from reportgen.scenes.scene import Scene
 from reportgen.scenes.scene import Segment as SceneSegment
 
+from drawings.lettering import from_tex
 from drawings.scenes import kinematics_labels as rl
 
 #: Room around a view's drawing for labels, and the title / caption strips, mm.
@@ -55,6 +56,15 @@ def plain(name: str) -> str:
         base, point = name.split(":", 1)
         return symbol(f"F{base}({point})")
     return symbol(name.replace("′", "'"))
+
+
+def force_name(lb) -> rl.Rich:
+    """A scene's vector name as the sheet letters it: the note's symbol (``lb.text``,
+    ``R^{\\tau}_{24}``) with its indices raised and lowered, smaller (issue 12: sheet 2 printed
+    «Rτ24» inline where the note prints R^τ_24); a name without a symbol as the solver writes it."""
+    if "_" in lb.text or "^" in lb.text:
+        return from_tex(lb.text)
+    return rl.Rich(plain(lb.anchor.rsplit(":", 1)[1]))
 
 
 @dataclass
@@ -119,11 +129,19 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
                 if kind == "point":
                     rl.place_point_label(view, view.transform(lb.at), rl.Rich(ident), 5.0, 135.0, letters,
                                          inside=inside, cross=0)
-                else:                # a couple's name over its arc
+                else:                # a couple's name over its arc, with its indices (M_{и2})
                     arc = next((e.points for e in scene.entities if e.id == f"{lb.anchor}:arc"
                                 and isinstance(e, ScenePolyline)), ())
-                    place_label(view, [np.asarray(lb.at)] + [np.asarray(q) for q in arc[::3]], plain(ident),
-                                LABEL_MM, names=line_of(lb.anchor))
+                    rich = from_tex(lb.text) if ("_" in lb.text or "^" in lb.text) else rl.Rich(plain(ident))
+                    named = line_of(lb.anchor)
+                    spots = [c for q in [lb.at] + list(arc[::3])
+                             for c in rl.around(view.transform(q), rich, LABEL_MM, 45.0, gaps=(1.0, 3.0, 6.0))]
+                    if named is not None:       # its letters near its arc (the label check's reach)
+                        from reportgen.tolerances import LABEL_NEAR_MM
+                        spots = [c for c in spots
+                                 if rl.text_extent(rich, c, LABEL_MM).distance(named) < LABEL_NEAR_MM - 1.0] or spots
+                    rl.place_passes(view, [(spots, 0), (spots, 1), (spots, 99)], rich, LABEL_MM, inside=inside,
+                                    names=named)
         for lb in scene.labels:
             if lb.role == "link":
                 named = line_of(f"link{lb.text}:")
@@ -135,8 +153,7 @@ def free_body_panel(name: str, title: str, scene: Scene) -> Panel:
         named = [(lb, view.transform(lb.along[0]), view.transform(lb.along[1])) for lb in scene.labels
                  if lb.role == "vector" and lb.along is not None]
         rivals = tuple(LineString([a, b]) for _, a, b in named)      # each name nearer its own arrow
-        place_vector_names(view, [(a, b, rl.Rich(plain(lb.anchor.split(":", 1)[1])), False) for lb, a, b in named],
-                           LABEL_MM, inside, rivals)
+        place_vector_names(view, [(a, b, force_name(lb), False) for lb, a, b in named], LABEL_MM, inside, rivals)
         _title_and_scales(view, title, tr("sheets.kv03", v1=format_significant(scene.scale("μl").value, 4)),
                           tr("fbd.arrows"))
         return view
@@ -189,7 +206,7 @@ def polygon_panel(name: str, title: str, polygon, first: int = 0) -> Panel:
         rivals = tuple(LineString([view.transform(lb.along[0]), view.transform(lb.along[1])])
                        for lb in scene.labels if lb.along is not None)
         place_vector_names(view, [(view.transform(lb.along[0]), view.transform(lb.along[1]),
-                                   rl.Rich(plain(lb.anchor.rsplit(":", 1)[1])), lb.leader)
+                                   force_name(lb), lb.leader)
                                   for lb in scene.labels if lb.along is not None], POLY_LABEL_MM, inside, rivals)
         return view
     return Panel(name, w, h, paint)
@@ -270,7 +287,6 @@ def near_passes(a, b, rich, height: float, rivals: tuple = ()) -> list[tuple[lis
     any — a name is never carried off to where it would read as
     another vector's: nearer to its own vector than to any of the other named vectors ``rivals``
     (LineStrings, sheet mm) that do not lie along it."""
-    from drawings import style
     from reportgen.tolerances import LABEL_NEAR_MM
     near = rl.along(a, b, rich, height)
     middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
@@ -279,13 +295,12 @@ def near_passes(a, b, rich, height: float, rivals: tuple = ()) -> list[tuple[lis
     line = LineString([a, b])
 
     def close(cands: list) -> list:
-        """Those whose text (its box without the width margin: where the letters may end) stays
+        """Those whose letters (:func:`rl.text_extent`: the base and its indices as drawn, not
+        their bounding box — a raised index beside a lowered one leaves a corner empty) stay
         near the vector — a wide name beside a short vector must not hang off its end."""
-        from shapely import affinity
         out = []
         for c in cands:
-            b = rl.rich_box(rich, c, height, pad=0.0)          # its texts start at its left edge
-            text = affinity.scale(b, 1.0 / style.WIDTH_MARGIN, 1.0, origin=(b.bounds[0], c[1]))
+            text = rl.text_extent(rich, c, height)
             d = text.distance(line)
             if d < LABEL_NEAR_MM - 0.5 and all(text.distance(r) >= d + OWN_MARGIN_MM for r in others):
                 out.append(c)
@@ -416,7 +431,7 @@ def lever_panel(name: str, scene: Scene) -> Panel:
             kind, ident = lb.anchor.split(":", 1)
             if kind == "arm":
                 continue            # the arms are numbered by the note's equations (h1, h2, … of section 2)
-            rich = rl.Rich(plain(ident)) if kind == "force" else rl.from_tex(lb.text)
+            rich = force_name(lb)
             items.append((view.transform(lb.along[0]), view.transform(lb.along[1]), rich, False))
         place_vector_names(view, items, POLY_LABEL_MM, inside, rivals)
         return view

@@ -13,6 +13,7 @@ from reportgen.scenes.meshing import (CAPTION, PADDING, VIEW_H, VIEW_W, WINDOW_H
                                      DrawingScale, MeshingScene, ab_on_sheet, label_room, meshing_marks,
                                      meshing_scale, model_bounds, model_centre)
 from drawings import style
+from drawings.lettering import from_tex
 from ..words import decimal_mark, tr
 
 
@@ -54,6 +55,9 @@ def draw_marks(view, marks) -> None:
                       (arc.centre[0] + r1 * c, arc.centre[1] + r1 * s_), "thin")
     view.polyline(marks.angle.points(), "thin")
     for m in marks.marks:
+        if not m.word and ("_" in m.tex or "^" in m.tex):
+            _draw_indexed(view, m, from_tex(m.tex))
+            continue
         text = tr(f"marks.sheet4.{m.text}") if m.word else m.text
         x0, y0, x1, y1 = m.box
         if m.leader:
@@ -73,6 +77,39 @@ def draw_marks(view, marks) -> None:
             view.text(m.text_centre(style.text_width(text, m.height) / k, m.height / k), text, m.height, "center")
     for d in marks.dimensions:
         view.dimension(d.p1, d.p2, offset_mm=d.offset_mm, unit_factor=1.0, text=d.text)
+
+
+def _at(rho, lam, rho_at: float, k: float, per_unit: float, lam_low: float, dx: float) -> tuple[float, float]:
+    """A point (view mm) ``dx`` beside the curve λ(ρ) where ρ is nearest ``rho_at`` (cut at λ's lowest)."""
+    i = min(range(len(rho)), key=lambda j: abs(rho[j] - rho_at))
+    return (rho[i] * k + dx, max(lam[i], lam_low) * per_unit)
+
+
+def _draw_indexed(view, m, rich) -> None:
+    """A designation with an index (r_b1, α_w, s_1, O_1; :func:`drawings.lettering.from_tex`), its
+    index one ГОСТ size smaller and lowered: on a leader, standing on its shelf (the index clear of
+    it) in the middle of its box; else in its box as near to its point as the box allows."""
+    from drawings.scenes import kinematics_labels as rl
+    k = view.transform.scale
+    w, depth, _ = rl.size(rich, m.height)
+    x0, y0, x1, y1 = m.box
+    if m.leader:
+        leader = list(m.leader)
+        elbow, end = leader[-2], leader[-1]
+        right = end[0] >= elbow[0]
+        cx = (x0 + x1) / 2
+        leader[-1] = ((cx + w / 2 / k) if right else (cx - w / 2 / k), elbow[1])
+        view.polyline(leader, "thin")
+        bx, by = view.transform((cx, y0))
+        rl.draw_rich(view, (bx, by + depth + m.height / 2 + SHELF_GAP_MM), rich, m.height)
+    else:
+        c = m.text_centre(w / k, (m.height + depth) / k)
+        cx, cy = view.transform(c)
+        rl.draw_rich(view, (cx, cy + depth / 2), rich, m.height)
+
+
+#: An indexed designation's lowest letters (its index) stand this far over its leader's shelf, mm.
+SHELF_GAP_MM = 0.3
 
 
 #: The names a, P, b of the sliding diagram keep this far from each other and from the λ axis's
@@ -129,11 +166,15 @@ def draw_sliding(sheet, pair, rect, k: float) -> None:
         view.line((x * k, lam_low * per_unit), (x * k, per_unit + 5.0 * level), "thin")
         view.text(at, name, 3.5)
     view.line((g.g * k, -2.0), (g.g * k, 2.0), "thin")
-    view.text((g.g * k, -3.0), "N2", 3.5, "top-center")
-    i1 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.2 * g.g))
-    view.text((rho[i1] * k + 2, max(l1[i1], lam_low) * per_unit), "λ1", 3.5)
-    i2 = min(range(len(rho)), key=lambda i: abs(rho[i] - 0.8 * g.g))
-    view.text((rho[i2] * k - 2, max(l2[i2], lam_low) * per_unit), "λ2", 3.5, "bottom-right")
+    from drawings.scenes import kinematics_labels as rl
+    for tex, (x, y), side in (("N_{2}", (g.g * k, -3.0), 0),
+                              ("\\lambda_{1}", _at(rho, l1, 0.2 * g.g, k, per_unit, lam_low, 2.0), 1),
+                              ("\\lambda_{2}", _at(rho, l2, 0.8 * g.g, k, per_unit, lam_low, -2.0), -1)):
+        rich = from_tex(tex)           # with its index (issue 12): N₂ under its tick, λ₁ and λ₂ beside their curves
+        w, depth, _ = rl.size(rich, 3.5)
+        px, py = view.transform((x, y))
+        centre = (px, py - 3.5 / 2) if side == 0 else (px + side * w / 2, py + depth + 3.5 / 2)
+        rl.draw_rich(view, centre, rich, 3.5)
     # the caption with its diagram (issue 12: at the top of a tall view it stood ~100 mm above
     # it): CAPTION_ABOVE_MM over the λ axis's end and the names a, P, b, from the diagram's left
     mu = 1.0 / per_unit

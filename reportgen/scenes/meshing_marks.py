@@ -186,21 +186,44 @@ def arcs_window(pair, pic: MeshingPicture) -> tuple[float, float, float, float]:
     return (vx0 - 2 * m, vy0 - 3 * m, vx1 + 2 * m, vy1 + 3 * m)
 
 
-def zone_numerals(pic: MeshingPicture, k_sheet: float) -> tuple[tuple[str, str, Point], ...]:
+def zone_numerals(pic: MeshingPicture, k_sheet: float, lines=()) -> tuple[tuple[str, str, Point], ...]:
     """The numerals «I», «II» of the zones of one and two pairs in contact (ident, text, centre in
-    real mm): beside the middle of each zone's line (drawn ZONE_OFFSET_MM to the lower right of ab
-    on the sheet at ``k_sheet``), 0.9·ZONE_OFFSET_MM beyond it."""
+    real mm): beside each zone's line (drawn ZONE_OFFSET_MM to the lower right of ab on the sheet at
+    ``k_sheet``), 0.9·ZONE_OFFSET_MM beyond it at its middle — or, where a drawn line (``lines``,
+    real mm: the circles' arcs through the zone, issue 12) or a numeral placed before would touch
+    it there, the first of :data:`ZONE_NUMERAL_AT` × :data:`ZONE_NUMERAL_BEYOND` that keeps
+    LINE_CLEAR (sheet mm) off them all, else the first that meets none of them."""
     n1, n2 = pic.points["N1"], pic.points["N2"]
     L = math.dist(n1, n2)
     nx, ny = (n2[1] - n1[1]) / L, -(n2[0] - n1[0]) / L          # to the lower right of N1N2
-    d = 1.9 * ZONE_OFFSET_MM / k_sheet
+    tree = shapely.STRtree(list(lines)) if len(lines) else None
+    taken: list[Polygon] = []
     out = []
     for i, z in enumerate(pic.zones):
         if z.pairs == 0:
             continue
-        c = ((z.start[0] + z.end[0]) / 2 + nx * d, (z.start[1] + z.end[1]) / 2 + ny * d)
-        out.append((f"zone{min(z.pairs, 2)}:{i}", "II" if z.pairs >= 2 else "I", (float(c[0]), float(c[1]))))
+        text = "II" if z.pairs >= 2 else "I"
+        w, h = (v / k_sheet for v in text_size(text, ZONE_H))
+        spots = [((z.start[0] + (z.end[0] - z.start[0]) * t + nx * f * ZONE_OFFSET_MM / k_sheet),
+                  (z.start[1] + (z.end[1] - z.start[1]) * t + ny * f * ZONE_OFFSET_MM / k_sheet))
+                 for f in ZONE_NUMERAL_BEYOND for t in ZONE_NUMERAL_AT]
+        c = next((q for gap in (LINE_CLEAR, 0.0) for q in spots
+                  if _clear_of(_grown(_box_at(q, w, h), gap / k_sheet), tree, taken)), spots[0])
+        taken.append(_box_at(c, w, h))
+        out.append((f"zone{min(z.pairs, 2)}:{i}", text, (float(c[0]), float(c[1]))))
     return tuple(out)
+
+
+def _clear_of(poly: Polygon, tree, taken: list[Polygon]) -> bool:
+    """Does ``poly`` meet none of the lines in ``tree`` (an STRtree or None) and none of ``taken``?"""
+    return (tree is None or not tree.query(poly, predicate="intersects").size) \
+        and not any(poly.intersects(t) for t in taken)
+
+
+#: Where along its zone's line a numeral is tried (fractions, the middle first), and how far beyond
+#: ab (multiples of ZONE_OFFSET_MM: the zone's line is at 1, its ticks reach 1.4).
+ZONE_NUMERAL_AT = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.0, 1.0)
+ZONE_NUMERAL_BEYOND = (1.9, 2.2, 2.5, 2.8, 3.2)
 
 
 def _box_at(c: Point, w: float, h: float) -> Polygon:
@@ -409,10 +432,10 @@ def _beside(placer: _Placer, name: str, text: str, tex: str, p: Point, height: f
         if best is not None and best[0] == 0:
             break
     if best is None or best[0] > 0:        # no clear place beside it: on a leader
-        dirs = [prefer_deg + s_ * i * 22.5 for i in range(9) for s_ in ((1, -1) if i else (1,))][:16]
+        dirs = [prefer_deg + s_ * i * 11.25 for i in range(17) for s_ in ((1, -1) if i else (1,))][:32]
         mark = _leader_mark(placer, name, text, tex, [p], dirs, height,
                             own=SPoint(p).buffer(own_radius) if own_radius else None, last_resort=best is None,
-                            inside_teeth=True)
+                            inside_teeth=True, long=True)
         if mark is not None:
             return mark
         assert best is not None
@@ -435,6 +458,11 @@ LEADER_LENGTHS = (6.0, 9.0, 12.0, 16.0, 21.0, 27.0)
 #: picture, and a leader may then be one of LONG_LEADERS.
 LEADER_MAX_MM = LEADER_LENGTHS[-1]
 LONG_LEADERS = (34.0, 42.0, 52.0, 64.0)
+#: A leader is taken at once when its text is crossed by no line and its slanted part and shelf
+#: by at most two (lines across the text, lines across the leader). Lines across the text count
+#: twice through its letters (:data:`GLYPHS`), once through the box's margin only: a text whose
+#: box's margin alone is crossed (1) still reads clear (the box holds the note's text with room).
+GOOD_LEADER = (0, 2)
 
 
 def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Point],
@@ -450,14 +478,17 @@ def _on_leader(placer: _Placer, name: str, text: str, tex: str, anchors: list[Po
 def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[Point],
                  directions: list[float], height: float, word: bool = False,
                  lengths: tuple[float, ...] = LEADER_LENGTHS, own=None, last_resort: bool = True,
-                 inside_teeth: bool = False) -> Mark | None:
+                 inside_teeth: bool = False, long: bool = False) -> Mark | None:
     """A designation on a leader: from one of ``anchors`` (in order of preference) a slanted line of
     one of ``lengths`` (sheet mm: :attr:`_Placer.unit`) in one of ``directions`` (degrees), then a
     shelf under the text. The shortest leader wins whose text and line are free and cross the
     fewest drawn lines (ties: the earlier anchor and direction). ``own``: the region (a tooth, the
     teeth round the pole) the leader may cross to reach its anchor; nowhere does it cross another
-    text or leader (issue 12: αw's leader crossed b's near the pole); with ``last_resort``, where
-    none of ``lengths`` is free, one of LONG_LEADERS. ``inside_teeth``: the text
+    text or leader (issue 12: αw's leader crossed b's near the pole); with ``last_resort`` or
+    ``long``, where none of ``lengths`` is free, one of LONG_LEADERS. A text crossed by a drawn line
+    is the last choice, whatever its leader crosses (issue 12: a circle's arc through «a» and «αw»
+    at the pole, taken for a leader that crossed one line fewer); without ``last_resort`` only
+    such candidates give None. ``inside_teeth``: the text
     and the leader may stand inside a tooth, across no outline (s on its tooth: a leader out of
     the teeth's band was 20–50 mm long on the sheet). Where nothing is free: the first candidate
     (``last_resort``; a test reports it), else None."""
@@ -467,7 +498,9 @@ def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[
     ux, uy = np.cos(rad), np.sin(rad)
     sx = np.where(ux >= 0, 1.0, -1.0)                     # the shelf to the right or to the left
     best = None
-    for L in tuple(lengths) + (LONG_LEADERS if last_resort else ()):
+    for L in tuple(lengths) + (LONG_LEADERS if last_resort or long else ()):
+        if L > max(lengths) and best is not None and best[0][0] <= 1:
+            break           # a short leader with its text clear beats a long one crossing less
         for anchor in anchors:
             # every direction at once (shapely's arrays): the candidates' boxes and leaders
             ex, ey = anchor[0] + ux * L / u, anchor[1] + uy * L / u
@@ -487,17 +520,23 @@ def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[
             b = shapely.bounds(g)
             dx, dy = (b[:, 2] - b[:, 0]) * (1 - GLYPHS) / 2, (b[:, 3] - b[:, 1]) * (1 - GLYPHS) / 2
             glyphs = shapely.box(b[:, 0] + dx, b[:, 1] + dy, b[:, 2] - dx, b[:, 3] - dy)
-            scores = (placer.crossings_many(g) + placer.crossings_many(glyphs)) * 3 + placer.crossings_many(probes[idx])
-            for j, score in zip(idx, scores):
+            # (lines across the text, lines across the leader): a text crossed by a line is never
+            # traded for a leader crossing fewer (issue 12: an arc through «a» and «αw» near P)
+            crossed = placer.crossings_many(glyphs) * 2 + placer.crossings_many(g)
+            on_leader = placer.crossings_many(probes[idx])
+            for j, c_text, c_leader in zip(idx, crossed, on_leader):
+                score = (int(c_text), int(c_leader))
                 if best is None or score < best[0]:
                     leader = LineString([anchor, tuple(mid[j]), tuple(far[j])])
-                    best = (int(score), polys[j], leader, anchor)
-                if score <= 2:
+                    best = (score, polys[j], leader, anchor)
+                if score <= GOOD_LEADER:
                     break
-            if best is not None and best[0] <= 2:
+            if best is not None and best[0] <= GOOD_LEADER:
                 break
-        if best is not None and best[0] <= 2:
+        if best is not None and best[0] <= GOOD_LEADER:
             break
+    if best is not None and best[0][0] > 1 and not last_resort:
+        return None             # only crossed texts: the caller has another way (beside, another wedge)
     if best is None and not last_resort:
         return None
     if best is None:        # no free place: the first candidate (a test reports it)
@@ -506,7 +545,7 @@ def _leader_mark(placer: _Placer, name: str, text: str, tex: str, anchors: list[
         elbow = (anchor[0] + ux * lengths[-1] / u, anchor[1] + uy * lengths[-1] / u)
         end = (elbow[0] + (w if ux >= 0 else -w), elbow[1])
         x0 = min(elbow[0], end[0])
-        best = (0, box(x0, elbow[1] + 0.6 / k, x0 + w, elbow[1] + 0.6 / k + h),
+        best = ((0, 0), box(x0, elbow[1] + 0.6 / k, x0 + w, elbow[1] + 0.6 / k + h),
                 LineString([anchor, elbow, end]), anchor)
     _, poly, leader, anchor = best
     placer.take(poly)
@@ -732,7 +771,7 @@ def place_marks(pair, pic: MeshingPicture, k: float,
     placer._outlines = placer.outlines.union(zone_band)
     shapely.prepare(placer.teeth)
     shapely.prepare(placer._outlines)
-    numerals = zone_numerals(pic, zone_k)
+    numerals = zone_numerals(pic, zone_k, lines + [t.exterior for t in teeth])
     result = MeshingMarks(k=k, marks=(), arcs=(), angle=AngleMark(P, 0.0, 0.0, 0.0), dimensions=(),
                           arcs_window=aw_box, zones=numerals)
     for _, poly in result.zone_boxes(zone_k):

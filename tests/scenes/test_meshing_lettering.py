@@ -4,8 +4,9 @@ long on the sheet, αw's crossing b's). For every example with a gear pair (ru, 
 scene's designations that the sheet and the note both draw (:func:`reportgen.scenes.meshing.meshing_marks`):
 
 - no two leaders cross, and no leader crosses another designation's text;
-- every leader is short: its slanted part at most LEADER_MAX_MM on the sheet, and still visible
-  in the note's reduced figure;
+- every leader is short: its slanted part at most LEADER_MAX_MM on the sheet (but two of the
+  pole's names, whose texts a short leader leaves crossed by the circles meeting at P), and still
+  visible in the note's reduced figure;
 - nothing is piled round the pole: within POLE_MM of P only the names of what is there (P, αw, a, b);
 - a circle's name without a leader stands beside its own circle: nearer to it than to any other
   drawn circle or line.
@@ -22,7 +23,7 @@ from shapely.geometry import LineString, Point, box
 
 from reportgen.project import Project
 from reportgen.scenes.meshing import detail_reduction
-from reportgen.scenes.meshing_marks import LEADER_MAX_MM
+from reportgen.scenes.meshing_marks import LEADER_MAX_MM, LONG_LEADERS
 from reportgen.taskfile import load_task
 from scene_readback import ROOT
 
@@ -61,16 +62,28 @@ def test_no_two_leaders_cross(meshing):
     assert not found, found
 
 
+#: The pole's names that may take one of the first two LONG_LEADERS where every short leader's text
+#: is crossed by a circle (at P the pitch and working circles of both wheels meet: issue 12, an arc
+#: through the press's and the shaper's «a» and «αw» for a short leader); at most this many.
+POLE_NAMES, POLE_LONG = frozenset({"P", "a", "b", "alpha_w"}), 2
+
+
 def test_leaders_short(meshing):
     k = meshing.scale.factor
     r = detail_reduction(meshing.pic, meshing.scale)
+    long = []
     for m in meshing.marks.marks:
         if not m.leader:
             continue
         slant = math.dist(m.leader[0], m.leader[1]) * k          # sheet mm
-        assert slant <= LEADER_MAX_MM + 1e-6, f"{m.name}: a leader of {slant:.0f} mm on the sheet"
+        if slant > LEADER_MAX_MM + 1e-6 and m.name in POLE_NAMES:
+            long.append(m.name)
+            assert slant <= LONG_LEADERS[1] + 1e-6, f"{m.name}: a leader of {slant:.0f} mm on the sheet"
+        else:
+            assert slant <= LEADER_MAX_MM + 1e-6, f"{m.name}: a leader of {slant:.0f} mm on the sheet"
         if m.page_h > 0:
             assert slant * r >= NOTE_LEADER_MIN_MM, f"{m.name}: a leader of {slant * r:.1f} mm in the note"
+    assert len(long) <= POLE_LONG, long
 
 
 def test_nothing_piled_round_the_pole(meshing):

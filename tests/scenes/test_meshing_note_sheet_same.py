@@ -120,6 +120,10 @@ def _sheet_texts(drawn, doc) -> dict[str, list]:
         b = text_box(e)
         if b.intersects(rect):
             out.setdefault(e.plain_text(), []).append(real((b.centroid.x, b.centroid.y)))
+    prefix = f"{view.name}: «"            # a name with indices (r_b1, α_w): its letters' box as placed
+    for name, b in drawn.annotations.boxes:
+        if name.startswith(prefix) and ("_" in name or "^" in name) and b.intersects(rect):
+            out.setdefault(name[len(prefix):-1], []).append(real((b.centroid.x, b.centroid.y)))
     for d in msp.query("DIMENSION"):
         for v in d.virtual_entities():
             if v.dxftype() == "MTEXT":
@@ -135,6 +139,7 @@ def test_designations_at_the_same_places_in_note_and_sheet(built, request, tmp_p
     the note's figure draws is on sheet 4 at the same place relative to the picture (the sheet's
     text inside the note's text box, real mm, with a millimetre of the sheet to spare), and the
     dimension ab's text is on the same side of ab in both."""
+    from drawings.lettering import from_tex
     from scene_readback import drawn_sheet
     project, content, doc = built
     fig, _ = _scene(content)
@@ -146,6 +151,9 @@ def test_designations_at_the_same_places_in_note_and_sheet(built, request, tmp_p
     checked = 0
     for m in fig.reportgen_marks.marks:            # what the note's figure draws
         spelt = tr(f"marks.sheet4.{m.text}") if m.word else m.text
+        if not m.word and ("_" in m.tex or "^" in m.tex):       # lettered with its index
+            from drawings.scenes.kinematics_labels import label_name
+            spelt = label_name(from_tex(m.tex))
         ((c, b),) = note[f"${m.tex}$"]
         places = sheet.get(spelt, [])
         assert places, f"«{spelt}» is in the note's figure, not on sheet 4"

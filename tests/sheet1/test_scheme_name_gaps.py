@@ -1,0 +1,81 @@
+"""The names on the mechanism's scheme keep a clear gap (issue 12: on the press's sheet 1 «O», ①,
+S₁ and «A 2» crowded at the crank's axis — the position number «2» stood 1,9 mm from «A» and read
+as one name). Read back from the DXF of every example's sheet 1 and of the control work's sheet:
+the letters of any two names of the scheme (points, centres of mass, position numbers, crank
+angles, link numbers) are at least ``NAME_GAP_MM`` apart, and no name's letters come nearer than
+LINE_GAP_MM to a drawn line of the scheme other than its own (its leader, its point's hinge or pin
+circle, a link number's circle)."""
+from __future__ import annotations
+
+import ezdxf
+import pytest
+import shapely
+from shapely.geometry import Point
+
+from drawings.scenes.kinematics_scheme import NAME_GAP_MM
+from drawings.sheets import available_sheets
+from reportgen.commands.pipeline import draw_sheet
+from reportgen.project import Project
+from reportgen.taskfile import load_task
+
+from labels.readback import entity_geometry, sheet_texts
+
+from scene_readback import ROOT
+
+EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml") if "crane" not in p.parent.name)
+#: A name's letters keep this far (mm) from the lines that are not its own (the placer keeps 1 mm:
+#: its box's padding and NAME_CLEAR's; the read-back letters are narrower than the box).
+LINE_GAP_MM = 0.5
+#: A line lying within this many mm of a point is that point's own (its hinge, its pin's circle).
+OWN_POINT_MM = 2.5
+
+
+def scheme_defects(sheet, doc, view_name: str = "scheme") -> list[str]:
+    view = sheet.views[view_name]
+    own = set(view.handles)
+    by_handle = {t.handle: t for t in sheet_texts(doc)}
+    names = []
+    for r in sheet.annotations.labels:
+        if r.view != view_name:
+            continue
+        boxes = [by_handle[h].box for h in r.handles if h in by_handle]
+        if boxes:
+            names.append((r.text, shapely.union_all(boxes), r.anchor))
+    lines = [entity_geometry(e) for e in doc.modelspace() if str(e.dxf.handle) in own and e.dxftype() != "TEXT"]
+    lines = [g for g in lines if g is not None]
+    found = []
+    for i, (t, s, _) in enumerate(names):
+        for u, s2, _ in names[i + 1:]:
+            d = s.distance(s2)
+            if d < NAME_GAP_MM - 0.05:
+                found.append(f"«{t}» and «{u}» {d:.2f} mm apart")
+    for t, s, anchor in names:
+        mine = anchor.buffer(OWN_POINT_MM) if isinstance(anchor, Point) else anchor.buffer(0.3)
+        for g in lines:
+            if g.within(mine) or g.distance(s) >= LINE_GAP_MM:
+                continue
+            if g.geom_type in ("LineString", "LinearRing") and g.is_ring and shapely.Polygon(g).contains(s):
+                continue              # a link number's circle round it
+            found.append(f"«{t}» {g.distance(s):.2f} mm from a line {tuple(round(c, 1) for c in g.bounds)}")
+    return found
+
+
+def _cases():
+    out = []
+    for name in EXAMPLES:
+        for stem, _ in available_sheets(Project(load_task(ROOT / "examples" / name / "task.toml"))):
+            if "kinematics" in stem or "control" in stem:
+                out.append(pytest.param(name, stem, id=f"{name}-{stem}"))
+    return out
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name,stem", _cases())
+def test_scheme_names_keep_a_clear_gap(name, stem, tmp_path):
+    project = Project(load_task(ROOT / "examples" / name / "task.toml"))
+    todo = available_sheets(project)
+    number, mod = next((i, m) for i, (s, m) in enumerate(todo, 1) if s == stem)
+    sheet = draw_sheet(project, mod, number, len(todo))
+    sheet.save(tmp_path / "s.dxf")
+    found = scheme_defects(sheet, ezdxf.readfile(tmp_path / "s.dxf"))
+    assert not found, "\n".join(found)
