@@ -8,7 +8,7 @@ note compared a 0,07-mm normal component read to 0,1 mm with its exact value and
 from the DXF (the lever's force names by the sheet's records, their vectors from the lever's scene
 through the view's transform):
 
-- no lever name nearer than ``GAP_MM`` to another text of the lever;
+- no lever name nearer than ``GAP_MM`` to another text of the lever (the placer keeps 1,5 mm);
 - each name within ``LABEL_NEAR_MM`` of its own arrow, or on a leader that ends on its own arrow
   and neither crosses nor runs along another arrow or leader;
 - the plans: every component the note compares with the exact value is read (not computed) and at
@@ -40,8 +40,9 @@ from labels.readback import sheet_texts
 
 TABLES = range(1, 23)
 LANGUAGES = ("ru", "uk")
-#: Two texts of the lever keep at least this far apart (mm, read back: the letters' boxes).
-GAP_MM = 1.0
+#: A lever name keeps at least this far from another text of the lever (mm, read back: the letters' boxes;
+#: main: 1,0 (table 18), 1,04 (table 3), 1,2–1,3 (tables 11, 16, 19)).
+GAP_MM = 1.4
 #: A leader keeps this far (mm) from every arrow but its own, and from the other leaders.
 LEADER_CLEAR_MM = 0.4
 #: The end of a leader lies on its own arrow within this (mm).
