@@ -180,6 +180,11 @@ class Strings:
     def has(self, key: str) -> bool:
         return self._find(key) is not None
 
+    def decimal_mark(self) -> str:
+        """The language's decimal mark in plain text (figures, sheets, the terminal): ``,`` or ``.``
+        (the catalogue's ``format.decimal`` is its math-mode form, ``{,}`` or ``.``)."""
+        return "," if self.raw("format.decimal") == "{,}" else "."
+
     def get(self, key: str) -> Any:
         """The string (or list, or table) at a dotted key, as ``Tex``."""
         return _as_tex(self.raw(key), key, self)
@@ -228,18 +233,34 @@ class Strings:
 
     def designation(self, document: Any, number: int | None = None) -> str:
         """The ЕСКД designation (ГОСТ 2.201) of the note (``number`` None) or of sheet ``number``:
-        ``[document] code`` (its default, the catalogue's ``designation.default_code``, is the
-        language's, Latin letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
+        ``[document] code`` (its default, the catalogue's ``designation.default_code`` — a control
+        work's ``document_defaults.control_code`` of table 0, variant 0 — is the language's, Latin
+        letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
         from dataclasses import replace
 
         from reportgen.task import Document
         if document is None:
             document = Document()
         if document.code == Document().code:          # not given: the language's default letters
-            document = replace(document, code=str(self.get("designation.default_code")))
+            default = (str(self.raw("document_defaults.control_code")).format(table=0, variant=0)
+                       if getattr(document, "kind", "") == "control-work"      # ТММ.КР.00.00 / TMM.CW.00.00
+                       else str(self.get("designation.default_code")))
+            document = replace(document, code=default)
         if number is None:
             return str(document.code) + str(self.get("designation.note_suffix"))
         return str(document.sheet_code(number))
+
+    def titled(self, document: Any, key: str = "document_defaults.title") -> Any:
+        """``document`` with the title the task left out (``[document] title`` at the core's default)
+        in this language: the catalogue's ``key`` (a course project's ``document_defaults.title``,
+        the crane's ``document_defaults.crane_title``, a control work's ``control.sheet.title``), so
+        that an English note never prints the Russian default title (issue 12)."""
+        from dataclasses import replace
+
+        from reportgen.task import Document
+        if document is None or getattr(document, "title", None) != Document().title:
+            return document
+        return replace(document, title=str(self.raw(key)))
 
     def symbol(self, name: str) -> str:
         """A solver's load name or a sheet label (``Fур``, ``Mи2``, ``Адв``) in this language:
@@ -355,7 +376,7 @@ def _ratio(ctx: Any, scale: Any) -> Tex:
     the meshing's DrawingScale) or its text as the core writes it («2,5:1», «1:2.5») — in the note's
     decimal mark: «2,5:1» in ru/uk, «2.5:1» in en (:meth:`reportgen.gost_scales.Scale.text`)."""
     from reportgen.gost_scales import Scale
-    mark = "," if ctx["s"].raw("format.decimal") == "{,}" else "."
+    mark = ctx["s"].decimal_mark()
     return Tex(scale.text(mark) if hasattr(scale, "text") else Scale.parse(str(scale)).text(mark))
 
 
