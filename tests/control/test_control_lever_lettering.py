@@ -27,6 +27,7 @@ from shapely.geometry import LineString
 from drawings.scenes.kinetostatics_views import plain
 from drawings.sheets import control as control_sheet
 from drawings.words import language
+from reportgen.commands.new import task_words
 from reportgen.control.tables import table
 from reportgen.control.task_text import task_text
 from reportgen.plans import LEGIBLE_MM, READ_DEVIATION_BOUND
@@ -52,7 +53,9 @@ ON_ARROW_MM = 0.5
 def _project(folder, number: int, lang: str) -> Project:
     t = table(number)
     path = folder / f"t{number}{lang}.toml"
-    text = task_text(t, t.variant(1), sheet="A3").replace('language = "ru"', f'language = "{lang}"')
+    text = task_text(t, t.variant(1), sheet="A3", words=task_words(lang, number, 1))
+    if f'language = "{lang}"' not in text:
+        text = text.replace('language = "ru"', f'language = "{lang}"')
     assert f'language = "{lang}"' in text
     path.write_text(text, encoding="utf-8")
     return Project(load_task(path))
