@@ -29,6 +29,7 @@ from .scenes.scales import PLAN_SERIES
 from .scenes.scales import round_scale as _round_scale
 from .structure import Group, Structure
 from .errors import NameLookupError
+from .tolerances import MM_ROUNDOFF
 
 #: The crank's vector is drawn 50–100 mm long (the one round-scale rule of
 #: :mod:`reportgen.scenes.scales`, series 1, 2, 2.5, 4, 5), unless another point's vector would then
@@ -41,6 +42,17 @@ CRANK_VECTOR_MAX_MM = 100.0
 PLAN_MAX_MM = 200.0
 #: Resolution of a student's measurement on the plan, mm.
 MEASURE_MM = 0.1
+#: The shortest segment a plan is read by, mm: a segment read to ``MEASURE_MM`` errs by at most
+#: MEASURE_MM/2, i.e. ``READ_DEVIATION_BOUND`` = 2,5 % at this length (a 0,1-mm segment read to
+#: 0,1 mm errs by up to 100 %). Shorter read segments are named in the note and left out of the
+#: comparison with the exact values (docs/kinematics.md «Reading the plans»).
+LEGIBLE_MM = 2.0
+#: The largest deviation of a value read from a legible segment: MEASURE_MM / 2 / LEGIBLE_MM.
+READ_DEVIATION_BOUND = MEASURE_MM / 2.0 / LEGIBLE_MM
+#: Components the course computes by formula and lays off on the plan (aⁿ = ω²·l, aᵏ = 2·ω·V_r),
+#: never reads back: their value is the formula's; one shorter than ``LEGIBLE_MM`` is not laid off
+#: (its end point coincides with its start on the plan).
+COMPUTED_KINDS = ("normal", "coriolis")
 
 
 def round_scale(value: float, max_mm: float = CRANK_VECTOR_MAX_MM) -> float:
@@ -86,7 +98,27 @@ class Plan:
     def measured_mm(self, c: PlanComponent) -> float:
         return round(self.length_mm(c) / MEASURE_MM) * MEASURE_MM
 
+    def computed(self, c: PlanComponent) -> bool:
+        """Is ``c`` computed by formula and laid off (a normal or Coriolis component), not read?"""
+        return c.kind in COMPUTED_KINDS
+
+    def legible(self, c: PlanComponent) -> bool:
+        """Is the segment of ``c`` at least ``LEGIBLE_MM`` long (a reading to 0,1 mm within 2,5 %)?"""
+        return self.length_mm(c) >= LEGIBLE_MM - MM_ROUNDOFF
+
+    def drawn(self, c: PlanComponent) -> bool:
+        """Is ``c`` drawn on the plan? Every read component; a computed one when it is legible."""
+        return not self.computed(c) or self.legible(c)
+
+    def compared(self, c: PlanComponent) -> bool:
+        """Does ``c`` count in the comparison of the plan's readings with the exact values? Read
+        (not computed) and legible."""
+        return not self.computed(c) and self.legible(c)
+
     def read_value(self, c: PlanComponent) -> float:
+        """The plan's value of ``c``: its segment measured × μ; a computed component's formula value."""
+        if self.computed(c):
+            return c.value
         return self.measured_mm(c) * self.scale
 
     def deviation(self, c: PlanComponent) -> float:

@@ -218,14 +218,18 @@ def _leader_crossings(canvas: Canvas, leader: BaseGeometry) -> int:
 def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: Label, height: float,
                     inside: Polygon | None = None, names: BaseGeometry | None = None,
                     to: BaseGeometry | None = None, anywhere: bool = False,
-                    clear: tuple[float, float] = (0.0, 0.0)) -> Polygon | None:
+                    clear: tuple[float, float] = (0.0, 0.0), leader_uncrossed: bool = False,
+                    leader_clear: bool = False) -> Polygon | None:
     """``label`` away from the point ``p`` (sheet mm) on a thin leader to it (or to the nearest point
     of ``to``, its vector): the first candidate centre whose box overlaps no text, crosses no drawn
     line and stays ``inside``, and whose leader crosses no text; the leader is drawn and kept as a
     line that later labels keep clear of. What the label names is the leader with ``names`` (its
     vector). ``anywhere`` (with ``inside``): where no candidate is free, the nearest free spot of
     the whole region (:func:`region_grid`) whose leader crosses the fewest drawn lines. None where
-    no spot is free."""
+    no spot is free. ``leader_uncrossed`` (the lever's crowded clusters, issue 12): a candidate whose
+    leader crosses or runs along a drawn line (another vector, a leader drawn before) is taken only
+    where no candidate's leader is clear; a leader along another force's arrow reads as naming it.
+    ``leader_clear``: only such a candidate is taken (None where there is none)."""
     from shapely.geometry import LineString, Point
     from shapely.ops import nearest_points
     boxes = [b for _, b in canvas.annotations.boxes]
@@ -260,10 +264,25 @@ def place_on_leader(canvas: Canvas, p: Vec, candidates: Sequence[Vec], label: La
         canvas.annotations.add_obstacle(leader)
         return drawn
 
+    first: tuple[Vec, Vec, Vec] | None = None
     for c in candidates:
         found = free(c)
         if found is not None:
-            return draw(c, *found)
+            if not (leader_uncrossed or leader_clear) or _leader_crossings(canvas, LineString(found)) == 0:
+                return draw(c, *found)
+            if leader_clear:
+                continue
+            if first is None:
+                first = (c, *found)
+    if leader_clear:
+        return None
+    if leader_uncrossed and anywhere and inside is not None:
+        for c in region_grid(p, inside):
+            found = free(c)
+            if found is not None and _leader_crossings(canvas, LineString(found)) == 0:
+                return draw(c, *found)
+    if first is not None:
+        return draw(*first)
     if not anywhere or inside is None:
         return None
     best: tuple[int, Vec, Vec, Vec] | None = None

@@ -221,7 +221,7 @@ def _within(rect: Rect, centre, width: float) -> tuple[float, float]:
     return (x, centre[1])
 
 
-def leader_name(view: View, a, b, rich, height: float, inside) -> None:
+def leader_name(view: View, a, b, rich, height: float, inside, leader_uncrossed: bool = False) -> None:
     """The name of a short vector a→b (sheet mm) on a thin leader to its middle, across it first
     (the leader is part of what ties the name to its vector), where its box and its leader cross
     nothing (:func:`drawings.scenes.kinematics_labels.place_on_leader`); else the nearest spot that
@@ -230,7 +230,8 @@ def leader_name(view: View, a, b, rich, height: float, inside) -> None:
     normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
     line = LineString([a, b])
     if rl.place_on_leader(view, mid, rl.around(mid, rich, height, normal, gaps=LEADER_GAPS_MM)
-                          + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line) is not None:
+                          + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line,
+                          leader_uncrossed=leader_uncrossed) is not None:
         return
     foot: list = []
 
@@ -241,6 +242,7 @@ def leader_name(view: View, a, b, rich, height: float, inside) -> None:
     if rl.place_passes(view, [(rl.around(mid, rich, height, normal, gaps=(5.0, 6.0, 8.0)), 0)],
                        rich, height, inside=inside, names=named) is not None:
         view.layout.add_line(foot[-1], mid, dxfattribs={"layer": "thin"})
+        view.annotations.add_obstacle(LineString([foot[-1], mid]))     # later names keep off it
 
 
 #: Distances (mm) from a vector's middle at which its name is tried on a leader, nearest first.
@@ -311,7 +313,7 @@ def near_passes(a, b, rich, height: float, rivals: tuple = ()) -> list[tuple[lis
 
 
 def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tuple = (),
-                      uncrossed: bool = False) -> None:
+                      uncrossed: bool = False, leader_uncrossed: bool = False) -> None:
     """The name of the vector a→b (sheet mm) beside it (:func:`near_passes`, nearer to it than to
     any of the ``rivals``) where it overlaps no text and crosses no line; where every spot beside it
     is taken, farther out on a thin leader to the vector's middle (the leader is part of what ties
@@ -329,7 +331,7 @@ def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tup
         normal = math.degrees(math.atan2(b[0] - a[0], -(b[1] - a[1])))
         if rl.place_on_leader(view, mid, rl.around(mid, rich, height, normal, gaps=LEADER_GAPS_MM)
                               + rl.spread_around(mid, LEADER_REACH_MM), rich, height, inside, names=line, to=line,
-                              anywhere=True) is not None:
+                              anywhere=True, leader_uncrossed=leader_uncrossed) is not None:
             return
     if rl.place_passes(view, passes, rich, height, inside=inside, optional=True, names=line) is not None:
         return
@@ -345,26 +347,106 @@ def place_vector_name(view: View, a, b, rich, height: float, inside, rivals: tup
                               (rl.around(mid, rich, height, normal, gaps=(9.0, 12.0, 16.0, 20.0)), 1)],
                        rich, height, inside=inside, optional=True, names=named) is not None:
         view.layout.add_line(leader[0], mid, dxfattribs={"layer": "thin"})
+        view.annotations.add_obstacle(LineString([leader[0], mid]))     # later names keep off it
         return
     rl.place_passes(view, near_passes(a, b, rich, height), rich, height, inside=inside, names=line)
 
 
-def place_vector_names(view: View, items: list, height: float, inside, rivals: tuple = ()) -> None:
+def _bearing(centre, a, b) -> float:
+    """The direction (rad) of the middle of the vector a→b seen from ``centre``."""
+    return math.atan2((a[1] + b[1]) / 2 - centre[1], (a[0] + b[0]) / 2 - centre[0])
+
+
+#: Distances (mm) from a vector's middle at which :func:`_callout` tries its name, and the turns (°)
+#: off the direction away from the cluster's middle.
+CALLOUT_REACH_MM = (6.0, 8.0, 10.0, 12.5, 15.0, 18.0, 22.0, 26.0, 30.0)
+CALLOUT_TURNS_DEG = (0.0, 20.0, -20.0, 40.0, -40.0, 60.0, -60.0, 90.0, -90.0)
+
+
+def _callout(view: View, a, b, rich, height: float, inside, centre) -> bool:
+    """The name of the vector a→b (sheet mm) on a leader to it, away from the crowded cluster round
+    ``centre``: the nearest spot, straight out first, whose box overlaps no text and crosses no line
+    and whose leader crosses no line or text (the leaders drawn before included). False where none."""
+    mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    ang = _bearing(centre, a, b)
+    if math.dist(mid, centre) < 1.0:     # at the middle itself: away across the vector
+        ang = math.atan2(b[0] - a[0], -(b[1] - a[1]))
+    w, _, _ = rl.size(rich, height)
+    cands = []
+    for d in CALLOUT_REACH_MM:
+        for turn in CALLOUT_TURNS_DEG:
+            t = ang + math.radians(turn)
+            ux, uy = math.cos(t), math.sin(t)
+            cands.append((mid[0] + ux * (d + abs(ux) * w / 2), mid[1] + uy * (d + abs(uy) * height / 2)))
+    line = LineString([a, b])
+    placed = rl.place_on_leader(view, mid, cands, rich, height, inside, names=line, to=line, leader_clear=True)
+    return placed is not None
+
+
+def _keep_apart(view: View, since: int, gap: float) -> None:
+    """Margins of ``gap`` mm round the text boxes placed since the ``since``-th (placing only: the
+    DXF is unchanged), so that later names keep that far from them."""
+    if gap <= 0.0:
+        return
+    boxes = view.annotations.boxes
+    for name, box in list(boxes[since:]):
+        if name != KEEP_APART:
+            boxes.append((KEEP_APART, box.buffer(gap, join_style=2)))
+
+
+#: The name of the margins :func:`_keep_apart` adds round placed names.
+KEEP_APART = "keep-apart"
+
+
+def place_vector_names(view: View, items: list, height: float, inside, rivals: tuple = (),
+                       gap: float = 0.0, leader_uncrossed: bool = False, outward=None) -> None:
     """The names of sheet 2's vectors ``items`` ((tail, head, rich, on a leader), sheet mm) in two
     rounds: first each beside its own vector where it overlaps no text and crosses no line, then
     the rest (and the short ones, :func:`leader_name`) on leaders — a name on a leader does not take
-    the spot another name needs beside its own vector (issue 12: the lever's crowded clusters)."""
+    the spot another name needs beside its own vector (issue 12: the lever's crowded clusters).
+    ``gap`` (mm): every name keeps that far from the texts of the view placed before it and from
+    the names placed after it; ``leader_uncrossed``: a leader crossing or running along a drawn line
+    is the last resort (:func:`drawings.scenes.kinematics_labels.place_on_leader`; issue 12: on the
+    control sheet's lever «FMі4(F)» stood on a leader along «Fі5», leaders crossed at e);
+    ``outward`` (a point, sheet mm: the middle of a crowded cluster): a name with no free spot beside
+    its vector goes on a leader away from that point (:func:`_callout`), the names taken in turn
+    round it, so that their leaders fan out instead of crossing."""
+    if gap > 0.0:
+        inside_view = view.rect.polygon()
+        for name, box in list(view.annotations.boxes):
+            if name != KEEP_APART and box.intersects(inside_view):
+                view.annotations.boxes.append((KEEP_APART, box.buffer(gap, join_style=2)))
     later = []
     for a, b, rich, short in items:
+        n0 = len(view.annotations.boxes)
         if short or rl.place_passes(view, [p for p in near_passes(a, b, rich, height, rivals) if p[1] == 0], rich,
                                     height, inside=inside, optional=True, names=LineString([a, b]),
                                     strict=True) is None:
             later.append((a, b, rich, short))
+        _keep_apart(view, n0, gap)
+    if outward is not None:          # the rest fanned out of the crowded cluster, in turn round it
+        later.sort(key=lambda it: _bearing(outward, it[0], it[1]))
     for a, b, rich, short in later:
+        n0 = len(view.annotations.boxes)
+        if outward is not None and _callout(view, a, b, rich, height, inside, outward):
+            _keep_apart(view, n0, gap)
+            continue
+        # the old passes, which end with the spot of fewest conflicts: with a third of the margins
+        # there (a margin is no text: overlapping one must not push a name onto a letter, table 7's
+        # «e» under «FMи3(D)»)
+        boxes = view.annotations.boxes
+        kept = [bx for bx in boxes if bx[0] != KEEP_APART]
+        margins = [bx for bx in boxes if bx[0] == KEEP_APART]
+        boxes[:] = kept + [(KEEP_APART, m.buffer(-gap * 2.0 / 3.0, join_style=2)) for _, m in margins]
         if short:
-            leader_name(view, a, b, rich, height, inside)
+            leader_name(view, a, b, rich, height, inside, leader_uncrossed)
         else:
-            place_vector_name(view, a, b, rich, height, inside, rivals, uncrossed=True)
+            place_vector_name(view, a, b, rich, height, inside, rivals, uncrossed=True,
+                              leader_uncrossed=leader_uncrossed)
+        boxes[:] = [bx for bx in boxes if bx[0] != KEEP_APART] + margins
+        _keep_apart(view, len(kept), gap)
+    # the margins were for placing only: the sheet's own overlap check reads the boxes
+    view.annotations.boxes[:] = [bx for bx in view.annotations.boxes if bx[0] != KEEP_APART]
 
 
 def place_label(view: View, anchors: list[np.ndarray], text: str, height: float, names=None) -> None:
@@ -387,6 +469,11 @@ def place_label(view: View, anchors: list[np.ndarray], text: str, height: float,
                     view.text_mm(c, text, height, "center", names=names if names is not None else Point(p))
                     return
     view.label(anchors[0], text, height, names=names)
+
+
+#: The lever's names keep at least this far (mm) from one another and from its letters (issue 12:
+#: «Fі4», «Fі5», «FMі4(F)», «G4», «FMі3(E)» piled at the pole of the control sheet's lever).
+LEVER_NAME_GAP_MM = 1.5
 
 
 def lever_panel(name: str, scene: Scene) -> Panel:
@@ -433,7 +520,14 @@ def lever_panel(name: str, scene: Scene) -> Panel:
                 continue            # the arms are numbered by the note's equations (h1, h2, … of section 2)
             rich = force_name(lb)
             items.append((view.transform(lb.along[0]), view.transform(lb.along[1]), rich, False))
-        place_vector_names(view, items, POLY_LABEL_MM, inside, rivals)
+        # the middle of the crowd: the mean of the loads' middles nearest to the pole (the images of
+        # the slow points pile there; the crank pin's F_ур stands far off)
+        mids = sorted(((a[0] + b[0]) / 2, (a[1] + b[1]) / 2) for a, b, _, _ in items)
+        pole = view.transform((0.0, 0.0))
+        near = sorted(mids, key=lambda m: math.dist(m, pole))[:max(1, len(mids) // 2)]
+        hub = tuple(np.mean(near, axis=0)) if near else None
+        place_vector_names(view, items, POLY_LABEL_MM, inside, rivals, gap=LEVER_NAME_GAP_MM,
+                           leader_uncrossed=True, outward=hub)
         return view
     return Panel(name, w, h, paint)
 

@@ -275,6 +275,23 @@ def _own_vector(box, own, rivals, margin: float) -> bool:
     return all(box_segment_distance(box, r) >= d + margin for r in rivals)
 
 
+def _beyond_foot(along, w: float, h: float, gap: float) -> list[tuple[float, float]]:
+    """Centres for the name of a lever's arm (pole → foot) just past its foot on its own line, and
+    beside that end, away from the pole, where the arms of the forces whose lines pass near the pole
+    all meet (issue 12: the press's h₁₀, h₁₄ and h₂ on leaders at p): the name reads as the arm's
+    as a dimension's value reads as its line's."""
+    (ax, ay), (bx, by) = along
+    dx, dy = float(bx) - float(ax), float(by) - float(ay)
+    n = math.hypot(dx, dy) or 1.0
+    ux, uy = dx / n, dy / n
+    reach = gap + 0.5 * abs(ux) * w + 0.5 * abs(uy) * h
+    out = [(float(bx) + ux * reach, float(by) + uy * reach)]
+    side = gap + 0.5 * abs(uy) * w + 0.5 * abs(ux) * h       # beside the foot, across the arm
+    for s in (1.0, -1.0):
+        out.append((float(bx) - ux * 0.5 * min(n, w) - s * uy * side, float(by) - uy * 0.5 * min(n, w) + s * ux * side))
+    return out
+
+
 def _leader_candidates(lb: Label, w: float, h: float, gap: float,
                        offs: tuple[float, ...] = (4.0, 6.0, 8.0, 11.0)) -> list[tuple[float, float]]:
     """Centres round the anchor (a point, or the middle of a vector: across it first) for a label
@@ -344,6 +361,8 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
             for t in (0.5, 0.35, 0.65, 0.2, 0.8):
                 for side in (1.0, -1.0):
                     cands.append((ax + dx * t + side * nx * reach, ay + dy * t + side * ny * reach))
+            if lb.anchor.startswith("arm:"):
+                cands.extend(_beyond_foot(lb.along, w, h, gap * off))
     else:
         p = np.asarray(lb.at)
         v = p - centre
@@ -363,9 +382,9 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
     if point and others:
         others = _others_of(lb.at, others)
     def passes():                # each made only when the passes before it found no free box
-        yield cands, lb.leader
+        yield cands, lb.leader, False
         if not lb.leader:        # the last resort: farther out, tied to the anchor by a leader
-            yield _leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True
+            yield _leader_candidates(lb, w, h, gap, (5.0, 6.5, 8.0, 11.0, 15.0, 20.0)), True, not uncrossed
         if uncrossed:            # and farther still, on a leader, the nearest free spot of a grid
             reach = 12.0 * gap / 0.8
             step = gap * 2.5
@@ -373,11 +392,11 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
             px, py = float(lb.at[0]), float(lb.at[1])
             yield sorted(((px + i * step, py + j * step) for i in range(-n, n + 1) for j in range(-n, n + 1)
                           if 0 < math.hypot(i, j) * step <= reach),
-                         key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q)), True
+                         key=lambda q: (round(math.hypot(q[0] - px, q[1] - py), 9), q)), True, region is None
             if region is not None:   # the last: anywhere round the drawing (issue 12: never a crossed name)
-                yield _region_grid((px, py), region, w, h, step), True
+                yield _region_grid((px, py), region, w, h, step), True, True
     first = None
-    for group, leader in passes():
+    for group, leader, last in passes():
         best = None
         for rank, c in enumerate(group):
             box = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
@@ -387,6 +406,10 @@ def _place(lb: Label, size: tuple[float, float], boxes: list, centre: np.ndarray
                 continue
             if not point and not leader and rivals and not _own_vector(box, lb.along, rivals, 0.75 * gap):
                 continue
+            if not point and leader and uncrossed and rivals and not last \
+                    and any(box_segment_distance(box, r) < gap for r in rivals):
+                continue         # a name on a leader against another vector reads as that one's
+                                 # (issue 12: the press's F^B_Mи4 by F_ур's tail)
             hits = lines.crossings(box) if isinstance(lines, _Segments) else \
                 sum(1 for s in (lines or ()) if _near(s, box) and _crosses(box, s))
             if uncrossed:

@@ -9,7 +9,7 @@ import numpy as np
 from ..render import Tex
 
 from reportgen.calc import Var, record
-from reportgen.plans import MEASURE_MM
+from reportgen.plans import LEGIBLE_MM, MEASURE_MM, READ_DEVIATION_BOUND
 
 from . import PartContent, tr
 
@@ -43,7 +43,8 @@ def _plan_rows(plan):
     rows = []
     for c in plan.components:
         rows.append({"name": c.name, "dir": c.direction, "mm": plan.measured_mm(c), "read": plan.read_value(c),
-                     "exact": c.value, "dev": 100 * plan.deviation(c), "start": c.start, "end": c.end})
+                     "exact": c.value, "dev": 100 * plan.deviation(c), "start": c.start, "end": c.end,
+                     "computed": plan.computed(c), "drawn": plan.drawn(c), "compared": plan.compared(c)})
     return rows
 
 
@@ -304,8 +305,13 @@ def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
            "omega": omega_recs, "aA": aA, "mu_a": mu_a, "aplan": aplan, "arows": arows, "an": an_recs,
            "cor": cor_recs, "eps": eps_recs, "com_rows": com_rows,
            "equations_v": vplan.equations, "equations_a": aplan.equations,
-           "max_dev_v": max((abs(r["dev"]) for r in vrows), default=0.0),
-           "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0)}
+           # the comparison takes the read, legible segments only (reportgen.plans.LEGIBLE_MM)
+           "max_dev_v": max((abs(r["dev"]) for r in vrows if r["compared"]), default=0.0),
+           "max_dev_a": max((abs(r["dev"]) for r in arows if r["compared"]), default=0.0),
+           "legible_mm": LEGIBLE_MM, "read_bound": 100 * READ_DEVIATION_BOUND,
+           "computed": [r for r in arows if r["computed"]],
+           "unlaid": [r for r in arows if not r["drawn"]],
+           "short": [r for r in vrows + arows if not r["computed"] and not r["compared"]]}
     return ctx, {fv: fig_v, fa: fig_a}
 
 

@@ -1,6 +1,7 @@
 """Velocity and acceleration plans as scenes (plan mm are paper mm): every component of
 :func:`reportgen.plans.build_plans` as an arrow between its plan points, the absolute vectors from
-the pole to the images no component starts there, the letters of the plan points (coincident points
+the pole to the images no component starts there (a computed component shorter than
+``reportgen.plans.LEGIBLE_MM`` is not laid off), the letters of the plan points (coincident points
 share one label) and the names of the components along their arrows; ``values`` the measured
 length (mm, to ``MEASURE_MM``) and the value read back of every component."""
 from __future__ import annotations
@@ -81,9 +82,11 @@ def plan_scene(plan: Plan, keys: set[str] | None = None, name: str | None = None
     values: dict[str, float] = {}
     for c in plan.components:
         a, b = plan.points[c.start], plan.points[c.end]
-        ents.append(Arrow(c.name, _pt(a), _pt(b), c.kind))
         values[c.name] = plan.measured_mm(c)
         values[f"{c.name}:read"] = plan.read_value(c)
+        if not plan.drawn(c):       # a computed component under LEGIBLE_MM is not laid off
+            continue
+        ents.append(Arrow(c.name, _pt(a), _pt(b), c.kind))
         if math.dist(a, b) >= 1.0:
             labels.append(Label(c.name, c.name, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), "vector",
                                 (_pt(a), _pt(b))))

@@ -65,8 +65,11 @@ def test_plan_scenes_are_the_plans(project):
         assert scene.scale().value == plan.scale
         arrows = {e.id: e for e in scene.entities if isinstance(e, Arrow)}
         for c in plan.components:
-            assert arrows[c.name].length == pytest.approx(plan.length_mm(c), abs=1e-9)
             assert scene.values[c.name] == plan.measured_mm(c)
+            # a computed component (aⁿ, aᵏ) shorter than LEGIBLE_MM is not laid off (docs/kinematics.md)
+            assert (c.name in arrows) == plan.drawn(c)
+            if c.name in arrows:
+                assert arrows[c.name].length == pytest.approx(plan.length_mm(c), abs=1e-9)
         # every vector label sits at the middle of its own arrow
         for lb in scene.labels:
             if lb.role == "vector":

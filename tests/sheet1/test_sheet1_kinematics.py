@@ -102,6 +102,9 @@ def test_plan_arrows_have_the_component_lengths(name, sheets):
         for c in plan.components:
             start, end = tr(plan.points[c.start]), tr(plan.points[c.end])
             drawn = _arrow_drawn(sheet, start, end)
+            if not plan.drawn(c):        # a computed component under LEGIBLE_MM is not laid off
+                assert drawn is None or plan.length_mm(c) < 1e-6, (view_name, c.name)
+                continue
             assert drawn is not None, (view_name, c.name)
             assert drawn == pytest.approx(plan.length_mm(c), abs=1e-6), (view_name, c.name)
 
