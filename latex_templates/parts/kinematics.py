@@ -203,7 +203,7 @@ def content(project) -> PartContent:
 
 #: Keys of a plan position's context that the part's context also holds for the analysed position.
 _PLAN_KEYS = ("VA", "mu_v", "pa_mm", "pia_mm", "vplan", "vrows", "omega", "aA", "mu_a", "aplan", "arows", "an",
-              "cor", "eps", "com_rows", "equations_v", "equations_a", "max_dev_v", "max_dev_a")
+              "cor", "eps", "com_rows", "equations_v", "equations_a", "max_dev_v", "max_dev_a", "by_points")
 
 
 def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
@@ -306,6 +306,10 @@ def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
            "equations_v": vplan.equations, "equations_a": aplan.equations,
            "max_dev_v": max((abs(r["dev"]) for r in vrows), default=0.0),
            "max_dev_a": max((abs(r["dev"]) for r in arows), default=0.0)}
+    # the groups that the plans show by the images of their points (class III, two prismatic pairs:
+    # reportgen/plans.py) have no vector equations of two points to print: the note says so
+    solved = {key for key, _ in vplan.equations}
+    ctx["by_points"] = [g.label for g in st.groups[1:] if g.key not in solved]
     return ctx, {fv: fig_v, fa: fig_a}
 
 
