@@ -221,7 +221,9 @@ _MARKED = (
     (("en",), r"(?i)flywheel masses", "«маховые массы» calqued: the moments of inertia of the couplings"),
 )
 #: in a control work only (one position: «the given position», not «position 0»)
-_MARKED_CONTROL = r"(?:положени[еяю]|положенн[яі]|position) 0\b"
+_MARKED_CONTROL = (r"(?:положени[еяю]|положенн[яі]|position) 0\b|положения силового расчёта"
+                   r"|положення силового розрахунку|the analysed position")
+_MARKED_CONTROL_GROUPS = r"со схем групп|зі схем груп|from the schemes of the groups"
 
 
 @pytest.mark.parametrize("example", EXAMPLES)
@@ -234,6 +236,8 @@ def test_no_word_a_teacher_marks(example, built):
                          ).get("document", {}).get("kind")
     if kind == "control-work":
         marked.append((_MARKED_CONTROL, "a control work has one position: «the given position»"))
+        marked.append((_MARKED_CONTROL_GROUPS, "a control work draws no schemes of the groups: the forces "
+                       "come to the lever from the scheme of the mechanism"))
     for pattern, why in marked:
         for m in re.finditer(pattern, flat):
             bad.append((why, flat[max(0, m.start() - 40):m.end() + 20]))
