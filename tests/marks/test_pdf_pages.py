@@ -275,3 +275,17 @@ def test_no_sentence_ends_on_a_colon_with_nothing_after_it(example, built):
         if re.match(r"[^\W\d_]", nxt) and nxt[0].isupper():
             bad.append((i + 1, text[-50:], nxt[:50]))
     assert not bad, bad
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_a_single_row_reducer_has_no_second_row(example, built):
+    """A single-row planetary reducer (crank-slider) has one row and a satellite with one crown: its
+    coaxiality condition said «модуль обоих рядов одинаков», its adjacency condition «число зубьев
+    большего венца сателлита»."""
+    task = tomllib.loads((ROOT / "examples" / example / "task.toml").read_text(encoding="utf-8"))
+    if task.get("planetary", {}).get("scheme") != "single-row":
+        pytest.skip("not a single-row reducer")
+    flat = " ".join(re.sub(r"-\s*\n\s*", "", _pdftext(built(example) / "report.pdf")).split())
+    bad = [flat[max(0, m.start() - 40):m.end() + 20] for m in re.finditer(
+        r"обоих рядов|обох рядів|both rows|большего венца|більшого вінця|larger planet row", flat)]
+    assert not bad, bad
