@@ -75,7 +75,7 @@ def unit(text: str) -> str:
 
 
 def decimal_mark() -> str:
-    return "," if _strings().raw("format.decimal") == "{,}" else "."
+    return _strings().decimal_mark()
 
 
 def designation(document, number: int) -> str:

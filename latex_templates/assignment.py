@@ -84,8 +84,7 @@ def _expr_tex(expr: str) -> str:
 
 def _printed(value: str, strings) -> str:
     """A table value as the manual prints it (decimal comma), with the language's decimal mark."""
-    mark = "," if strings.raw("format.decimal") == "{,}" else "."
-    return value.replace(",", mark)
+    return value.replace(",", strings.decimal_mark())
 
 
 def label_tex(label: str, strings=None) -> Tex:

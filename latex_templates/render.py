@@ -180,6 +180,11 @@ class Strings:
     def has(self, key: str) -> bool:
         return self._find(key) is not None
 
+    def decimal_mark(self) -> str:
+        """The language's decimal mark in plain text (figures, sheets, the terminal): ``,`` or ``.``
+        (the catalogue's ``format.decimal`` is its math-mode form, ``{,}`` or ``.``)."""
+        return "," if self.raw("format.decimal") == "{,}" else "."
+
     def get(self, key: str) -> Any:
         """The string (or list, or table) at a dotted key, as ``Tex``."""
         return _as_tex(self.raw(key), key, self)
@@ -355,7 +360,7 @@ def _ratio(ctx: Any, scale: Any) -> Tex:
     the meshing's DrawingScale) or its text as the core writes it («2,5:1», «1:2.5») — in the note's
     decimal mark: «2,5:1» in ru/uk, «2.5:1» in en (:meth:`reportgen.gost_scales.Scale.text`)."""
     from reportgen.gost_scales import Scale
-    mark = "," if ctx["s"].raw("format.decimal") == "{,}" else "."
+    mark = ctx["s"].decimal_mark()
     return Tex(scale.text(mark) if hasattr(scale, "text") else Scale.parse(str(scale)).text(mark))
 
 

@@ -58,7 +58,7 @@ def active():
 
 def decimal_mark() -> str:
     """The decimal mark of the active language for plain text (figures): ``,`` or ``.``."""
-    return "," if active().raw("format.decimal") == "{,}" else "."
+    return active().decimal_mark()
 
 
 def unit(text: str) -> str:

@@ -13,6 +13,11 @@ KEY_COLUMNS: tuple[tuple[str, str], ...] = (
 )
 
 
+def cell(value: float, fmt: str, mark: str) -> str:
+    """A key's number as the note prints it: the language's decimal ``mark`` and a true minus."""
+    return fmt.format(value).replace("-", "\u2212").replace(".", mark)
+
+
 def _page(path: Path, title: str, rows: list[tuple[str, dict | None, str | None]], strings) -> None:
     import matplotlib
     matplotlib.use("Agg")
@@ -29,7 +34,8 @@ def _page(path: Path, title: str, rows: list[tuple[str, dict | None, str | None]
         if row is None:
             cells.append([name, str(strings.get("control.key.failed"))] + [""] * (len(KEY_COLUMNS) - 1))
         else:
-            cells.append([name] + [fmt.format(row[k]) if k in row else "" for k, fmt in KEY_COLUMNS])
+            mark = strings.decimal_mark()
+            cells.append([name] + [cell(row[k], fmt, mark) if k in row else "" for k, fmt in KEY_COLUMNS])
     tab = ax.table(cellText=cells, colLabels=head, loc="upper center", cellLoc="center")
     tab.auto_set_font_size(False)
     tab.set_fontsize(9)

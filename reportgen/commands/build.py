@@ -20,6 +20,7 @@ from ..errors import BuildError, ReportgenError, ReportgenInputError
 from ..project import Project
 from ..taskfile import load_task
 from .outdir import check_output_folder, keep_failed, replace_folder
+from .modes import as_made_ordinarily
 
 if TYPE_CHECKING:
     from .pipeline import Timeline
@@ -68,6 +69,7 @@ def build(task_path: str, out: Path, *, quiet: bool = False, pdf: bool = True, s
     out = check_output_folder(out, Path(task_path))
     store = build_cache.open_cache(task_path, pdf=pdf, sheets=sheets, latexmk=latexmk) if cache else None
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
+    as_made_ordinarily(tmp, directory=True)
     try:
         with compiled_templates(store.root if store is not None else None):
             _build_into(tmp, project, progress, store, quiet=quiet, pdf=pdf, sheets=sheets, latexmk=latexmk)

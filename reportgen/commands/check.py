@@ -1,7 +1,9 @@
 """``reportgen check TASK ANSWERS [--tolerance PCT]``: a student's values against the exact ones.
 
 ANSWERS is a small TOML (``omega2 = 3.9``) or CSV (rows ``name,value``, or a header of names and one
-row of values); the names are those of answers.csv (``reportgen batch``). Each value is compared by
+row of values); the names are those of answers.csv (``reportgen batch``). A CSV may be separated by
+``;`` or a tab, as a spreadsheet in a Russian or Ukrainian locale saves it, and then its numbers may
+carry a decimal comma (``vB;4,3``). The table is printed in the task's language and decimal mark. Each value is compared by
 magnitude with the exact one within the tolerance of a graphical construction (``--tolerance``, else
 ``[control_work] tolerance_percent``, else 5 %); a sign given by the student must match too.
 Exit 0 if every value passes, 1 if any fails, 2 for bad input.
@@ -11,6 +13,7 @@ from __future__ import annotations
 import argparse
 import csv
 import math
+import re
 import tomllib
 from pathlib import Path
 
@@ -41,10 +44,12 @@ def read_answers(path: str) -> dict[str, float]:
         try:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as exc:
-            raise OptionError("ANSWERS", f"{path} is not valid TOML: {exc}", "lines name = number") from None
+            hint = " (TOML numbers take a decimal point: vB = 4.3)" if _DECIMAL_COMMA.search(text) else ""
+            raise OptionError("ANSWERS", f"{path} is not valid TOML: {exc}{hint}", "lines name = number") from None
         items = list(data.items())
     else:
-        rows = [r for r in csv.reader(text.splitlines()) if r and any(c.strip() for c in r)]
+        lines = text.splitlines()
+        rows = [r for r in csv.reader(lines, delimiter=_delimiter(lines)) if r and any(c.strip() for c in r)]
         pairs = bool(rows) and all(len(r) == 2 for r in rows) and \
             (_is_num(rows[0][1]) or [c.strip().lower() for c in rows[0]] == ["name", "value"])
         if pairs:
@@ -61,6 +66,21 @@ def read_answers(path: str) -> dict[str, float]:
     if not out:
         raise OptionError("ANSWERS", f"{path} holds no values", "lines name = number")
     return out
+
+
+#: ``name = 4,3``: a number written with a decimal comma, which TOML reads as an array's start.
+_DECIMAL_COMMA = re.compile(r"=\s*[-+]?\d+,\d")
+#: The separators of a CSV, in the order they are tried: a spreadsheet in a ru/uk locale writes ``;``.
+_DELIMITERS = (";", "\t", ",")
+
+
+def _delimiter(lines: list[str]) -> str:
+    """The CSV's separator: the first of ``;``, tab, ``,`` found on every non-empty line."""
+    filled = [line for line in lines if line.strip()]
+    for d in _DELIMITERS:
+        if filled and all(d in line for line in filled):
+            return d
+    return ","
 
 
 def _is_num(v) -> bool:
@@ -112,12 +132,15 @@ def run(args: argparse.Namespace) -> int:
     exact = control_work_of(Project(task)).answers()
     rows = mark(student, exact, tol)
     s = Strings(task.document.language or "ru")
+    point = s.decimal_mark()
     head = [str(h) for h in s.get("control.check.header")]
     print(f"{head[0]:<18}{head[1]:>14}{head[2]:>14}{head[3]:>16}{head[4]:>12}  {head[5]}")
     for k, v, e, dev, ok in rows:
         d = "∞" if math.isinf(dev) else f"{dev:+.2f}"
         word = str(s.get("control.check.ok" if ok else "control.check.wrong"))
-        print(f"{k:<18}{v:>14.6g}{e:>14.6g}{d:>16}{tol:>12g}  {word}")
+        cells = [f"{v:.6g}", f"{e:.6g}", d, f"{tol:g}"]
+        v_, e_, d_, t_ = (c.replace(".", point) for c in cells)
+        print(f"{k:<18}{v_:>14}{e_:>14}{d_:>16}{t_:>12}  {word}")
     n_ok = sum(r[4] for r in rows)
     print(str(s.get("control.check.summary")).replace("{ok}", str(n_ok)).replace("{total}", str(len(rows))))
     return 0 if n_ok == len(rows) else 1

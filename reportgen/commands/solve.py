@@ -10,6 +10,7 @@ from ..errors import OptionError
 from ..project import Project
 from ..results import build_results, dumps
 from ..taskfile import load_task
+from .modes import as_made_ordinarily
 
 
 def register(sub) -> None:
@@ -32,6 +33,7 @@ def write_atomic(path: str, text: str, option: str = "--json") -> None:
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as f:
             f.write(text)
+        as_made_ordinarily(tmp)
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -194,3 +194,26 @@ def test_earlier_failed_build_is_replaced(tmp_path, student, capsys):
     assert main(argv) == 1
     capsys.readouterr()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.failed", "work"]
+
+
+@pytest.mark.parametrize("mask", [0o022, 0o077, 0o002])
+def test_outputs_get_the_mode_an_ordinary_write_gives(tmp_path, student, capsys, mask):
+    """Outputs are written through temporary files renamed into place; mkstemp/mkdtemp make them
+    0600/0700 whatever the umask, which locked a teacher out of a student's note on a shared machine.
+    Each output has the mode ``open``/``mkdir`` gives under the umask."""
+    old = os.umask(mask)
+    try:
+        out = tmp_path / "out"
+        code, err = build(student / "task.toml", out, capsys)
+        assert code == 0, err
+        made = tmp_path / "made.json"
+        assert main(["solve", str(student / "task.toml"), "--quiet", "--json", str(made)]) == 0
+        task = tmp_path / "variant.toml"
+        assert main(["new", "--table", "1", "--variant", "1", "-o", str(task)]) == 0
+    finally:
+        os.umask(old)
+    assert out.stat().st_mode & 0o777 == 0o777 & ~mask
+    for f in out.rglob("*"):
+        assert f.stat().st_mode & 0o777 == (0o777 if f.is_dir() else 0o666) & ~mask, f
+    for f in (made, task):
+        assert f.stat().st_mode & 0o777 == 0o666 & ~mask, f

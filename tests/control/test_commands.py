@@ -4,6 +4,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -67,6 +68,11 @@ def test_batch_three_variants_one_broken(tmp_path, capsys, monkeypatch):
     assert float(rows[0]["Py"]) * 0.32 == pytest.approx(float(rows[0]["My"]), rel=1e-5)
     for t in (1, 5, 22):
         assert (out / f"answer-key-table-{t}.pdf").read_bytes().startswith(b"%PDF")
+    # the Russian key prints its numbers as the note does: decimal comma, true minus
+    key = subprocess.run(["pdftotext", "-layout", str(out / "answer-key-table-1.pdf"), "-"],
+                         capture_output=True, text=True, check=True).stdout
+    assert re.search(r"\d,\d", key) and "\u2212" in key, key
+    assert not re.search(r"\d\.\d", key) and not re.search(r"(?<![\w/])-\d", key), key
     # a re-run does not solve again what did not change
     import reportgen.commands.batch as b
     calls = []
@@ -120,6 +126,31 @@ def test_check_marks_one_wrong_value(tmp_path, capsys):
     assert main(["check", str(task), str(unknown)]) == 2
     assert main(["check", str(task), str(tmp_path / "missing.toml")]) == 2
 
+
+
+@pytest.mark.parametrize("sep", [";", "\t"])
+def test_check_reads_a_spreadsheet_of_a_russian_locale(tmp_path, capsys, sep):
+    """A spreadsheet in a ru/uk locale saves CSV with ``;`` (or a tab) and a decimal comma; the
+    table is printed in the task's decimal mark; a decimal comma in TOML gets a hint."""
+    task = tmp_path / "t.toml"
+    assert main(["new", "--table", "1", "--variant", "1", "-o", str(task)]) == 0
+    from reportgen.control.analysis import control_work_of
+    from reportgen.project import Project
+    from reportgen.taskfile import load_task
+    exact = control_work_of(Project(load_task(str(task)))).answers()
+    sheet = tmp_path / "answers.csv"
+    comma = f"{exact['vF'] * 0.98:.4f}".replace(".", ",")
+    sheet.write_text(f"vF{sep}{comma}\nomega2{sep}{exact['omega2'] * 1.5:.3f}\n", encoding="utf-8")
+    capsys.readouterr()
+    assert main(["check", str(task), str(sheet)]) == 1
+    out = capsys.readouterr().out
+    vf = next(ln for ln in out.splitlines() if ln.startswith("vF"))
+    assert vf.endswith(" верно") and comma in vf and "." not in vf, vf
+    assert any(ln.startswith("omega2") and ln.endswith("неверно") for ln in out.splitlines())
+    toml = tmp_path / "a.toml"
+    toml.write_text(f"vF = {comma}\n", encoding="utf-8")
+    assert main(["check", str(task), str(toml)]) == 2
+    assert "decimal point" in capsys.readouterr().err
 
 # ------------------------------------------------------------------------------ single positions
 NON_GRASHOF = dict(a=0.35, b=0.5, c=0.4, d=0.6)     # 0.35 + 0.6 > 0.5 + 0.4: the crank cannot turn fully
