@@ -72,7 +72,8 @@ from reportgen.task import Document
                  template_dirs: Sequence[Path | str] = (),
                  introduction: Sequence[str] = (), conclusions: Sequence[str] = (),
                  references: Sequence[str] = (), assignment: Section | None = None,
-                 extra_preamble: str = "", strings: Strings | None = None) -> None:
+                 extra_preamble: str = "", strings: Strings | None = None,
+                 default_title: str | None = None) -> None:
         self.document = document
         self.language = language or document.language or "ru"
         if self.language not in LANGUAGES:
@@ -92,6 +93,9 @@ from reportgen.task import Document
             self.language, overlay="control.overrides" if getattr(document, "kind", "") == "control-work" else None)
         self.symbols = SymbolTracker()
         self.last_build: BuildReport | None = None
+        # the title the task left out, in the note's language (catalogue key; issue 12)
+        self.default_title = default_title or ("control.sheet.title" if getattr(document, "kind", "") == "control-work"
+                                               else "document_defaults.title")
 
     @property
     def records(self) -> list[CalcRecord]:
@@ -111,7 +115,7 @@ from reportgen.task import Document
         out.mkdir(parents=True, exist_ok=True)
         env = make_environment(self.template_dirs)
         self.symbols = SymbolTracker()
-        base = {"s": self.strings, "sym": self.symbols, "doc": self.document,
+        base = {"s": self.strings, "sym": self.symbols, "doc": self.strings.titled(self.document, self.default_title),
                 "language": self.language}
         macros = env.get_template("macros.tex.j2").make_module(dict(base))
         base["m"] = macros

@@ -233,18 +233,34 @@ class Strings:
 
     def designation(self, document: Any, number: int | None = None) -> str:
         """The ЕСКД designation (ГОСТ 2.201) of the note (``number`` None) or of sheet ``number``:
-        ``[document] code`` (its default, the catalogue's ``designation.default_code``, is the
-        language's, Latin letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
+        ``[document] code`` (its default, the catalogue's ``designation.default_code`` — a control
+        work's ``document_defaults.control_code`` of table 0, variant 0 — is the language's, Latin
+        letters in English) + the note's suffix (``.000 ПЗ``) or ``.<number:03d>``."""
         from dataclasses import replace
 
         from reportgen.task import Document
         if document is None:
             document = Document()
         if document.code == Document().code:          # not given: the language's default letters
-            document = replace(document, code=str(self.get("designation.default_code")))
+            default = (str(self.raw("document_defaults.control_code")).format(table=0, variant=0)
+                       if getattr(document, "kind", "") == "control-work"      # ТММ.КР.00.00 / TMM.CW.00.00
+                       else str(self.get("designation.default_code")))
+            document = replace(document, code=default)
         if number is None:
             return str(document.code) + str(self.get("designation.note_suffix"))
         return str(document.sheet_code(number))
+
+    def titled(self, document: Any, key: str = "document_defaults.title") -> Any:
+        """``document`` with the title the task left out (``[document] title`` at the core's default)
+        in this language: the catalogue's ``key`` (a course project's ``document_defaults.title``,
+        the crane's ``document_defaults.crane_title``, a control work's ``control.sheet.title``), so
+        that an English note never prints the Russian default title (issue 12)."""
+        from dataclasses import replace
+
+        from reportgen.task import Document
+        if document is None or getattr(document, "title", None) != Document().title:
+            return document
+        return replace(document, title=str(self.raw(key)))
 
     def symbol(self, name: str) -> str:
         """A solver's load name or a sheet label (``Fур``, ``Mи2``, ``Адв``) in this language:

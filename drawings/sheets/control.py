@@ -10,7 +10,7 @@ from reportgen.errors import InternalError, TaskError
 from reportgen.project import Project
 from reportgen.tolerances import MM_EPS
 
-from ..words import tr
+from ..words import designation, tr
 
 NEEDS: tuple[str, ...] = ("linkage", "structure", "model", "phi", "strokes", "kinematics", "analysed", "plans",
                             "plan_positions", "plans_by_position", "scenes", "kinetostatics")   # sheet 1's drawing
@@ -27,7 +27,7 @@ def available(project: Project) -> bool:
 def new_sheet(project: Project, number: int, count: int) -> Sheet:
     cw = project.task.control_work
     fmt = A3 if cw is not None and cw.sheet == "A3" else A1
-    return Sheet(fmt, TitleBlock.from_document(project.task.document, title=tr("control.sheet.title"), code=project.task.document.sheet_code(number),
+    return Sheet(fmt, TitleBlock.from_document(project.task.document, title=tr("control.sheet.title"), code=designation(project.task.document, number),
                                                number=number, count=count, scale="", letter=""))
 
 

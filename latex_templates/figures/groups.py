@@ -1,5 +1,6 @@
 """An Assur group drawn on its own: its links bold, the pairs by which it attaches drawn as free
-elements (hinges or slider guides) with the letters of the points."""
+elements (hinges or slider guides) with the letters of the points; a joint of its links by which a
+later group attaches (not a pair of this group) is drawn as a hinge with its letter too."""
 from __future__ import annotations
 
 import numpy as np
@@ -69,6 +70,16 @@ def group_figure(linkage, q: np.ndarray, group, w_cm: float = 7.5):
                 numbers.insert(0, (s.link, [p + n * (h / 2 + 0.06 * L), p - n * (h / 2 + 0.09 * L),
                                          p + d * (w / 2 + 0.06 * L), p - d * (w / 2 + 0.06 * L)],
                                 [tuple(c) for c in corners], True))
+    # every other joint of the structure on the group's links (D of a rocker C-B-D whose D drives
+    # the next group, issue 12): its hinge and letter, as the scheme draws it
+    # (another named point of its links, not a joint: its letter only)
+    joined = {j.name for j in linkage.joints}
+    for name in names:
+        if name not in letters:
+            p = pts[name]
+            if name in joined:
+                ax.add_patch(Circle(vec2(p), r, facecolor="white", edgecolor="black", lw=1.0, zorder=5))
+            letters[name] = p
     taken: list = []
     for name, p in letters.items():                  # one letter a point, away from the group's middle
         u = p - centre

@@ -65,7 +65,8 @@ def note_builder(project) -> NoteBuilder:
     note = NoteBuilder(project.task.document, designation=crane_code(project.task.document, str(s.get("crane.sheet.default_code")))
                        + str(s.get("designation.note_suffix")), introduction=intro,
                        conclusions=[c for sec in sections for c in sec.conclusions],
-                       assignment=assignment_section(project), strings=s)
+                       assignment=assignment_section(project), strings=s,
+                       default_title="document_defaults.crane_title")
     for sec in sections:
         note.add_section(sec.section)
     return note

@@ -92,13 +92,14 @@ def variant_job(t: int, v: int) -> Job:
     from ..control.sketch import VariantGeometryError
     from ..control.tables import table
     from ..control.task_text import task_text
+    from .new import task_words
     tab = table(t)
     var = tab.variant(v)
     name = f"t{t:02d}-v{v:02d}"
     if var.flag:
         return Job(name, t, v, None, f"cannot form the mechanism: {var.flag}")
     try:
-        return Job(name, t, v, task_text(tab, var))
+        return Job(name, t, v, task_text(tab, var, words=task_words("ru", t, v)))
     except VariantGeometryError as exc:
         return Job(name, t, v, None, str(exc))
 

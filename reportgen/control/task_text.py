@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import dataclass
 
 from ..zoo import toml_value
 from .sketch import link4_key, sketch
@@ -37,10 +38,24 @@ def _bar_or_triangle(pts, names: tuple[str, str, str]) -> tuple[list[str], bool]
     return ([names[0], names[1], names[2]] if not straight else sorted((p, q)) + [mid]), straight
 
 
-def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: float = DEFAULT_SLIDER_FACTOR,
-              sheet: str = DEFAULT_SHEET, tolerance_percent: float = DEFAULT_TOLERANCE_PERCENT) -> str:
-    """The commented task file of table ``t``, variant ``v`` (raises VariantGeometryError if the
-    printed dimensions cannot form the scheme at φ)."""
+@dataclass(frozen=True)
+class TaskWords:
+    """The words of a new task file in its language (the command layer reads them from the note's
+    catalogue, ``document_defaults`` of ``latex_templates/strings/<lang>/document.toml``, with the
+    table's and variant's numbers filled in): the title, the mechanism's name, the department and the
+    designation (ГОСТ 2.201 letters in ru/uk, Latin in en: docs/task-format-notes.md)."""
+    language: str
+    title: str
+    mechanism: str
+    organization: str
+    code: str
+
+
+def task_text(t: Table, v: Variant, *, words: TaskWords, q: float = DEFAULT_Q,
+              slider_factor: float = DEFAULT_SLIDER_FACTOR, sheet: str = DEFAULT_SHEET,
+              tolerance_percent: float = DEFAULT_TOLERANCE_PERCENT) -> str:
+    """The commented task file of table ``t``, variant ``v`` in the language of ``words`` (raises
+    VariantGeometryError if the printed dimensions cannot form the scheme at φ)."""
     sc = t.scheme
     sk = sketch(sc, v)
     P = sk.points
@@ -51,7 +66,8 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
         return f"{' '.join(name.split())} = {c.printed[v.number - 1]}" + (f" {unit.strip()}" if unit.strip() else "")
     row = "; ".join(cell(c) for c in t.columns)
     out: list[str] = [
-        f"# Контрольная работа по ТММ: задание {t.number}, вариант {v.number} (учебное пособие, §7–8, с. {t.page}).",
+        f"# Control work in the theory of machines and mechanisms: table {t.number}, variant {v.number} "
+        f"(course manual, §7–8, p. {t.page}).",
         f"# Row of table {t.number} as printed: {row}.",
         "# The manual's scheme pictures are lost: the layout below (where D, E and the guide of the slider",
         "# stand) is a RECONSTRUCTION chosen so that the printed dimensions assemble; see docs/control-work.md.",
@@ -60,15 +76,15 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
         "",
         "[document]",
         'kind = "control-work"             # the control-work note and its one sheet (not the course project)',
-        f'title = "Кинематический и силовой анализ рычажного механизма (задание {t.number}, вариант {v.number})"',
+        f"title = {toml_value(words.title)}",
         'author = ""                        # your name',
         'group = ""',
         'supervisor = ""',
-        'organization = "Кафедра теории механизмов и машин"',
+        f"organization = {toml_value(words.organization)}",
         'city = ""',
         "year = 2026",
-        'language = "ru"',
-        f'code = "ТММ.КР.{t.number:02d}.{v.number:02d}"            # designation: the note ….000 ПЗ, the sheet ….001',
+        f"language = {toml_value(words.language)}",
+        f"code = {toml_value(words.code)}            # designation: the note's ….000, the sheet ….001",
         "",
         "[control_work]",
         f"table = {t.number}",
@@ -77,7 +93,7 @@ def task_text(t: Table, v: Variant, *, q: float = DEFAULT_Q, slider_factor: floa
         f"tolerance_percent = {tolerance_percent!r}         # accepted deviation of a graphical value (reportgen check)",
         "",
         "[mechanism]",
-        f'name = "Шестизвенный рычажный механизм (задание {t.number}, вариант {v.number})"',
+        f"name = {toml_value(words.mechanism)}",
         f"g = {DEFAULT_G!r}                           # m/s², formula (31) of the manual",
         'ground = ["A", "D"]                 # crank axis A, rocker axis D',
         "",

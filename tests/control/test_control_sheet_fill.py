@@ -27,6 +27,7 @@ from drawings.scenes.kinematics_scheme import scene_links
 from drawings.sheets import control as control_sheet
 from reportgen import gost_scales
 from reportgen.control.tables import table
+from reportgen.commands.new import task_words
 from reportgen.control.task_text import task_text
 from reportgen.project import Project
 from reportgen.scenes.boxes import SHEET_MM, VIEW_GAP, free_field
@@ -47,7 +48,7 @@ INK = False
 def control_task(folder, number: int, variant: int = 1, sheet: str = "A3"):
     path = folder / f"t{number}v{variant}{sheet}.toml"
     t = table(number)
-    path.write_text(task_text(t, t.variant(variant), sheet=sheet), encoding="utf-8")
+    path.write_text(task_text(t, t.variant(variant), sheet=sheet, words=task_words("ru", number, variant)), encoding="utf-8")
     return path
 
 

@@ -12,6 +12,7 @@ import pytest
 from reportgen.control.analysis import control_work_of
 from reportgen.control.sketch import sketch
 from reportgen.control.tables import table, tables
+from reportgen.commands.new import task_words
 from reportgen.control.task_text import DEFAULT_G, DEFAULT_Q, DEFAULT_SLIDER_FACTOR, DEFAULT_TRIANGLE_FACTOR, task_text
 from reportgen.project import Project
 from reportgen.taskfile import loads_task
@@ -21,7 +22,7 @@ BUILDABLE = [(t.number, v.number) for t in tables() for v in t.variants if v.fla
 
 def _project(t: int, v: int) -> Project:
     tab = table(t)
-    return Project(loads_task(task_text(tab, tab.variant(v))))
+    return Project(loads_task(task_text(tab, tab.variant(v), words=task_words("ru", t, v))))
 
 
 def test_219_of_220_variants_assemble():
