@@ -424,9 +424,11 @@ def content(project) -> PartContent:
         "dyn_flywheel": fig.flywheel_figure(res.flywheel, hub),
     }
     resistance_on = any(t.name.startswith(("Fпс", "Mпс")) for t in terms)
+    # the text names the resistance as it is given: a force (a slider) or a moment (a rocker)
+    resistance_force = all(ld.force is not None for ld in project.task.mechanism.loads if ld.kind == "resistance")
     ctx = {
         "i": _position_ref(project, i, i_dyn, short=True), "i_ref": _position_ref(project, i, i_dyn), "phi_i": math.degrees(float(kin.phi[i])) % 360.0, "terms": [t.record for t in terms],
-        "resistance_on": resistance_on, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle],
+        "resistance_on": resistance_on, "resistance_force": resistance_force, "P_sum": P_sum, "idle": [Tex(f"${x}$") for x in idle],
         "still": [Tex(f"${x}$") for x in still], "M_rec": M_rec, "shares": shares, "J_rec": J_rec,
         "rows": graph_rows(res, scenes, labels), "positions": positions, "n_analysis": len(project.phi),
         "n_breaks": len(labels) - positions - 1, "corners": any(not x.isdigit() and x not in (tr("dynamics.m48"), tr("dynamics.m49")) for x in labels),

@@ -204,7 +204,7 @@ def content(project) -> PartContent:
 
 #: Keys of a plan position's context that the part's context also holds for the analysed position.
 _PLAN_KEYS = ("VA", "mu_v", "pa_mm", "pia_mm", "vplan", "vrows", "omega", "aA", "mu_a", "aplan", "arows", "an",
-              "cor", "eps", "com_rows", "equations_v", "equations_a", "max_dev_v", "max_dev_a")
+              "cor", "eps", "com_rows", "equations_v", "equations_a", "max_dev_v", "max_dev_a", "by_points")
 
 
 def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
@@ -312,6 +312,10 @@ def _plan_context(project, i: int, first: bool) -> tuple[dict, dict]:
            "computed": [r for r in arows if r["computed"]],
            "unlaid": [r for r in arows if not r["drawn"]],
            "short": [r for r in vrows + arows if not r["computed"] and not r["compared"]]}
+    # the groups that the plans show by the images of their points (class III, two prismatic pairs:
+    # reportgen/plans.py) have no vector equations of two points to print: the note says so
+    solved = {key for key, _ in vplan.equations}
+    ctx["by_points"] = [g.label for g in st.groups[1:] if g.key not in solved]
     return ctx, {fv: fig_v, fa: fig_a}
 
 

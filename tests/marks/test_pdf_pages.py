@@ -213,9 +213,17 @@ _MARKED = (
     (("en",), r"Merzalov", "Мерцалов is Mertsalov in English"),
     (("en",), r"[«»]", "Russian guillemets in an English note"),
     (("ru", "uk", "en"), r"--", "TeX's dash escaped and printed as hyphens («---» in the control work's ω/ε table)"),
+    (("uk",), r"виробничого опору",
+     "two terms for one load: the assignment and the symbol F_ко/M_ко say «корисного опору», the text said «виробничого»"),
+    (("en",), r"(?i)\bworks\b", "«work» is uncountable: «the works», «balance of works» are calques of «работ»"),
+    (("en",), r"\bMbZ\s*=", "the conclusions printed M_b^Z (italic b, Z) for the body's M_b^Zh"),
+    (("en",), r"\bkind (?:[RP]{3}|triad)", "an Assur group's «type RRR», not «kind RRR»"),
+    (("en",), r"(?i)flywheel masses", "«маховые массы» calqued: the moments of inertia of the couplings"),
 )
 #: in a control work only (one position: «the given position», not «position 0»)
-_MARKED_CONTROL = r"(?:положени[еяю]|положенн[яі]|position) 0\b"
+_MARKED_CONTROL = (r"(?:положени[еяю]|положенн[яі]|position) 0\b|положения силового расчёта"
+                   r"|положення силового розрахунку|the analysed position")
+_MARKED_CONTROL_GROUPS = r"со схем групп|зі схем груп|from the schemes of the groups"
 
 
 @pytest.mark.parametrize("example", EXAMPLES)
@@ -228,7 +236,56 @@ def test_no_word_a_teacher_marks(example, built):
                          ).get("document", {}).get("kind")
     if kind == "control-work":
         marked.append((_MARKED_CONTROL, "a control work has one position: «the given position»"))
+        marked.append((_MARKED_CONTROL_GROUPS, "a control work draws no schemes of the groups: the forces "
+                       "come to the lever from the scheme of the mechanism"))
     for pattern, why in marked:
         for m in re.finditer(pattern, flat):
             bad.append((why, flat[max(0, m.start() - 40):m.end() + 20]))
     assert not bad, bad[:5]
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_a_resistance_moment_is_not_called_a_force(example, built):
+    """A resistance given as a moment (a rocker's, class3) is a moment in every sentence: section 3
+    said «Учитываем силу производственного сопротивления», «сила сопротивления включается»."""
+    task = tomllib.loads((ROOT / "examples" / example / "task.toml").read_text(encoding="utf-8"))
+    loads = [ld for ld in task.get("mechanism", {}).get("load", []) if ld.get("kind") == "resistance"]
+    if not loads or any("force" in ld for ld in loads):
+        pytest.skip("no resistance moment")
+    flat = " ".join(re.sub(r"-\s*\n\s*", "", _pdftext(built(example) / "report.pdf")).split())
+    bad = [flat[max(0, m.start() - 40):m.end() + 20] for m in re.finditer(
+        r"(?i)\bсил[аыуіи] (?:производственного |полезного |корисного |виробничого )?(?:сопротивлени|опор)"
+        r"|\b(?:useful )?resistance force", flat)]
+    assert not bad, bad[:5]
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_no_sentence_ends_on_a_colon_with_nothing_after_it(example, built):
+    """A sentence that announces what follows with a colon is followed by it (a display, a list, the
+    rest of the sentence in lower case), never by the next sentence: class3's plans said «…решая
+    графически векторные уравнения: Построенный план показан…» (a class III group has no vector
+    equations of two points), «Угловые ускорения звеньев: Скорости и ускорения центров масс…»."""
+    lines = (built(example) / "report.tex").read_text(encoding="utf-8").splitlines()
+    bad = []
+    for i, line in enumerate(lines):
+        text = line.rstrip()
+        if not text.endswith(":") or text.lstrip().startswith("%"):
+            continue
+        nxt = next((ln.strip() for ln in lines[i + 1:] if ln.strip()), "")
+        if re.match(r"[^\W\d_]", nxt) and nxt[0].isupper():
+            bad.append((i + 1, text[-50:], nxt[:50]))
+    assert not bad, bad
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_a_single_row_reducer_has_no_second_row(example, built):
+    """A single-row planetary reducer (crank-slider) has one row and a satellite with one crown: its
+    coaxiality condition said «модуль обоих рядов одинаков», its adjacency condition «число зубьев
+    большего венца сателлита»."""
+    task = tomllib.loads((ROOT / "examples" / example / "task.toml").read_text(encoding="utf-8"))
+    if task.get("planetary", {}).get("scheme") != "single-row":
+        pytest.skip("not a single-row reducer")
+    flat = " ".join(re.sub(r"-\s*\n\s*", "", _pdftext(built(example) / "report.pdf")).split())
+    bad = [flat[max(0, m.start() - 40):m.end() + 20] for m in re.finditer(
+        r"обоих рядов|обох рядів|both rows|большего венца|більшого вінця|larger planet row", flat)]
+    assert not bad, bad
