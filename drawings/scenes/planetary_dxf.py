@@ -69,8 +69,13 @@ def draw_reducer(sheet, stage, region) -> None:
     widths = (20.0, 22.0, 24.0)
     h = 8.0
     tw, th = sum(widths), h * len(rows)
-    trect = Rect(region.x0, region.y1 - th - 2, region.x0 + tw + 2, region.y1)
+    table_title = tr("sheets.pl07")
+    title_h = 5.0                                      # the title's letters, 3 mm above the table
+    trect = Rect(region.x0, region.y1 - th - 2 - title_h - 3,
+                 region.x0 + max(tw + 2, text_width(table_title, title_h) + 2), region.y1)
     tview = sheet.place_view("reducer_table", trect, Transform(1.0, (0.0, 0.0), (trect.x0 + 1, trect.y0 + 1)))
+    tview.text((tw / 2 if text_width(table_title, title_h) <= tw else text_width(table_title, title_h) / 2,
+                th + 3), table_title, title_h, "bottom-center")
     for i in range(len(rows) + 1):
         tview.line((0, i * h), (tw, i * h), "contour" if i in (0, len(rows), len(rows) - 1) else "thin")
     x = 0.0

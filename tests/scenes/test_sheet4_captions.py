@@ -52,3 +52,25 @@ def test_sliding_caption_with_its_diagram(name, tmp_path):
     gap = caption.distance(drawing)
     assert gap <= CAPTION_MAX_MM, f"the caption «{captions[0].text}» is {gap:.0f} mm from its diagram"
     assert caption.bounds[1] >= drawing.bounds[3] - 1e-6 or gap > 0, "the caption over its diagram"
+
+
+PLANETARY_EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml")
+                            if re.search(r"^\[planetary\]", p.read_text(encoding="utf-8"), re.M))
+
+
+@pytest.mark.parametrize("name", PLANETARY_EXAMPLES)
+def test_planetary_table_has_its_title_above_it(name, tmp_path):
+    """The reducer's table (wheel, z, d; K, u) had no title (review, issue 12): its title stands
+    above its top line, within the table's view."""
+    from latex_templates.render import Strings
+
+    project = Project(load_task(str(ROOT / "examples" / name / "task.toml")))
+    sheet = draw_sheet(project, gear_sheet, 4, 4)
+    sheet.save(tmp_path / "s4.dxf")
+    doc = ezdxf.readfile(tmp_path / "s4.dxf")
+    title = Strings(project.task.document.language or "ru").text("sheets.pl07")
+    area = sheet.views["reducer_table"].rect.polygon()
+    found = [t for t in sheet_texts(doc) if t.text == str(title)]
+    assert len(found) == 1 and found[0].box.within(area.buffer(1.0)), [t.text for t in found]
+    table = _drawing(doc, area.buffer(1.0))
+    assert found[0].box.bounds[1] >= table.bounds[3] - 1e-6, "the title over the table's lines"
