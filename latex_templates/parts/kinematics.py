@@ -87,11 +87,12 @@ def content(project) -> PartContent:
     figures = {}
     # --- plan of positions ----------------------------------------------------------------------
     positions = scenes.positions
-    mu_l = Var("mu_l", r"\mu_l", positions.scale("μl").value, "м/мм", tr("kinematics.m01"))
+    control = project.task.document.kind == "control-work"      # one position: no plan of positions
+    mu_l = Var("mu_l", r"\mu_l", positions.scale("μl").value, "м/мм",
+               tr("kinematics.m01_scheme" if control else "kinematics.m01"))
     l_oa = Var("l_OA", f"l_{{{axis}{tip}}}", l_crank, "м", tr("kinematics.m02", axis=axis, tip=tip))
     OA_mm = record(f"{axis}{tip}", "l_OA / mu_l", "мм", l_oa, mu_l, meaning=tr("kinematics.m09", axis=axis, tip=tip))
     # a control work (one position) or a crank that cannot turn fully: no cycle, no traces, no strokes
-    control = project.task.document.kind == "control-work"
     cycle = not control and project.full_cycle
     dense_trans = {}
     if cycle:

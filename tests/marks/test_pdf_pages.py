@@ -224,6 +224,8 @@ _MARKED = (
 _MARKED_CONTROL = (r"(?:положени[еяю]|положенн[яі]|position) 0\b|положения силового расчёта"
                    r"|положення силового розрахунку|the analysed position")
 _MARKED_CONTROL_GROUPS = r"со схем групп|зі схем груп|from the schemes of the groups"
+#: a control work draws the mechanism in its given position only: it has no plan of positions
+_MARKED_CONTROL_POSITIONS = r"плана положений|плану положень|position diagram"
 
 
 @pytest.mark.parametrize("example", EXAMPLES)
@@ -238,6 +240,7 @@ def test_no_word_a_teacher_marks(example, built):
         marked.append((_MARKED_CONTROL, "a control work has one position: «the given position»"))
         marked.append((_MARKED_CONTROL_GROUPS, "a control work draws no schemes of the groups: the forces "
                        "come to the lever from the scheme of the mechanism"))
+        marked.append((_MARKED_CONTROL_POSITIONS, "a control work has no plan of positions: μl is the scheme's"))
     for pattern, why in marked:
         for m in re.finditer(pattern, flat):
             bad.append((why, flat[max(0, m.start() - 40):m.end() + 20]))
