@@ -110,3 +110,24 @@ def assert_marks_clear(boxes, room, teeth) -> None:
             assert not any(b1.intersects(t) for t in teeth), f"{n1} over a tooth"
         for n2, b2 in boxes[i + 1:]:
             assert b1.intersection(b2).area < 1e-9, f"{n1} overlaps {n2}"
+
+
+def sheet_cases(examples, wanted) -> list:
+    """pytest params (example, sheet stem) of the examples' sheets whose stem ``wanted(stem)`` takes."""
+    import pytest
+
+    from drawings.sheets import available_sheets
+    return [pytest.param(name, stem, id=f"{name}-{stem}") for name in examples
+            for stem, _ in available_sheets(example_project(name)) if wanted(stem)]
+
+
+def draw_named_sheet(example: str, stem: str, folder: Path) -> tuple[Any, Any]:
+    """(the drawn sheet, its DXF read back) of the example's sheet called ``stem``, drawn as a build
+    draws it (its number among the example's sheets)."""
+    from drawings.sheets import available_sheets
+    from reportgen.commands.pipeline import draw_sheet
+    todo = available_sheets(example_project(example))
+    number, mod = next((i, m) for i, (s, m) in enumerate(todo, 1) if s == stem)
+    sheet = draw_sheet(example_project(example), mod, number, len(todo))
+    sheet.save(folder / "s.dxf")
+    return sheet, ezdxf.readfile(folder / "s.dxf")

@@ -5,18 +5,15 @@ meshing picture), each scene name with an index is not one inline TEXT, and its 
 of its own one ГОСТ size smaller, below (a subscript) or above (a superscript) its base."""
 from __future__ import annotations
 
-import ezdxf
 import pytest
 
 from drawings.lettering import from_tex
-from drawings.sheets import available_sheets
 from drawings.words import language, use_catalogue
 from latex_templates.render import Strings
-from reportgen.commands.pipeline import draw_sheet
-from reportgen.project import Project
-from reportgen.taskfile import load_task
 
-from .conftest import EXAMPLES, ROOT
+from scene_readback import draw_named_sheet, example_project, sheet_cases
+
+from .conftest import EXAMPLES
 
 
 def _symbols(project, stem: str) -> set[str]:
@@ -36,28 +33,13 @@ def _symbols(project, stem: str) -> set[str]:
     return {t for t in out if "_" in t or "^" in t}
 
 
-def _cases():
-    out = []
-    for name in EXAMPLES:
-        path = ROOT / "examples" / name / "task.toml"
-        if "crane" in name:
-            continue
-        for stem, _ in available_sheets(Project(load_task(path))):
-            if "kinetostatics" in stem or "gears" in stem:
-                out.append(pytest.param(name, stem, id=f"{name}-{stem}"))
-    return out
-
-
 @pytest.mark.slow
-@pytest.mark.parametrize("name,stem", _cases())
+@pytest.mark.parametrize("name,stem", sheet_cases([n for n in EXAMPLES if "crane" not in n],
+                                                  lambda stem: "kinetostatics" in stem or "gears" in stem))
 def test_names_with_indices_are_lettered_with_indices(name, stem, tmp_path):
-    project = Project(load_task(ROOT / "examples" / name / "task.toml"))
-    todo = available_sheets(project)
-    number, mod = next((i, m) for i, (s, m) in enumerate(todo, 1) if s == stem)
-    sheet = draw_sheet(project, mod, number, len(todo))
-    sheet.save(tmp_path / "s.dxf")
-    texts = [(e.plain_text(), float(e.dxf.height), float(e.dxf.insert[1])) for e in
-             ezdxf.readfile(tmp_path / "s.dxf").modelspace().query("TEXT")]
+    project = example_project(name)
+    _sheet, doc = draw_named_sheet(name, stem, tmp_path)
+    texts = [(e.plain_text(), float(e.dxf.height), float(e.dxf.insert[1])) for e in doc.modelspace().query("TEXT")]
     use_catalogue(Strings)
     with language(project.task.document.language):
         riches = {tex: from_tex(tex) for tex in _symbols(project, stem)}

@@ -7,20 +7,15 @@ LINE_GAP_MM to a drawn line of the scheme other than its own (its leader, its po
 circle, a link number's circle)."""
 from __future__ import annotations
 
-import ezdxf
 import pytest
 import shapely
 from shapely.geometry import Point
 
 from drawings.scenes.kinematics_scheme import NAME_GAP_MM
-from drawings.sheets import available_sheets
-from reportgen.commands.pipeline import draw_sheet
-from reportgen.project import Project
-from reportgen.taskfile import load_task
 
 from labels.readback import entity_geometry, sheet_texts
 
-from scene_readback import ROOT
+from scene_readback import ROOT, draw_named_sheet, sheet_cases
 
 EXAMPLES = sorted(p.parent.name for p in (ROOT / "examples").glob("*/task.toml") if "crane" not in p.parent.name)
 #: A name's letters keep this far (mm) from the lines that are not its own (the placer keeps 1 mm:
@@ -60,22 +55,9 @@ def scheme_defects(sheet, doc, view_name: str = "scheme") -> list[str]:
     return found
 
 
-def _cases():
-    out = []
-    for name in EXAMPLES:
-        for stem, _ in available_sheets(Project(load_task(ROOT / "examples" / name / "task.toml"))):
-            if "kinematics" in stem or "control" in stem:
-                out.append(pytest.param(name, stem, id=f"{name}-{stem}"))
-    return out
-
-
 @pytest.mark.slow
-@pytest.mark.parametrize("name,stem", _cases())
+@pytest.mark.parametrize("name,stem", sheet_cases(EXAMPLES, lambda stem: "kinematics" in stem or "control" in stem))
 def test_scheme_names_keep_a_clear_gap(name, stem, tmp_path):
-    project = Project(load_task(ROOT / "examples" / name / "task.toml"))
-    todo = available_sheets(project)
-    number, mod = next((i, m) for i, (s, m) in enumerate(todo, 1) if s == stem)
-    sheet = draw_sheet(project, mod, number, len(todo))
-    sheet.save(tmp_path / "s.dxf")
-    found = scheme_defects(sheet, ezdxf.readfile(tmp_path / "s.dxf"))
+    sheet, doc = draw_named_sheet(name, stem, tmp_path)
+    found = scheme_defects(sheet, doc)
     assert not found, "\n".join(found)
