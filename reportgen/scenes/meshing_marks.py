@@ -192,7 +192,8 @@ def zone_numerals(pic: MeshingPicture, k_sheet: float, lines=()) -> tuple[tuple[
     ``k_sheet``), 0.9·ZONE_OFFSET_MM beyond it at its middle — or, where a drawn line (``lines``,
     real mm: the circles' arcs through the zone, issue 12) or a numeral placed before would touch
     it there, the first of :data:`ZONE_NUMERAL_AT` × :data:`ZONE_NUMERAL_BEYOND` that keeps
-    LINE_CLEAR (sheet mm) off them all, else the first that meets none of them."""
+    LINE_CLEAR (sheet mm) off the lines, else the first that meets none of them; always TEXT_GAP
+    off a numeral placed before (hypothesis found «I» and «II» 0,84 mm apart)."""
     n1, n2 = pic.points["N1"], pic.points["N2"]
     L = math.dist(n1, n2)
     nx, ny = (n2[1] - n1[1]) / L, -(n2[0] - n1[0]) / L          # to the lower right of N1N2
@@ -207,8 +208,10 @@ def zone_numerals(pic: MeshingPicture, k_sheet: float, lines=()) -> tuple[tuple[
         spots = [((z.start[0] + (z.end[0] - z.start[0]) * t + nx * f * ZONE_OFFSET_MM / k_sheet),
                   (z.start[1] + (z.end[1] - z.start[1]) * t + ny * f * ZONE_OFFSET_MM / k_sheet))
                  for f in ZONE_NUMERAL_BEYOND for t in ZONE_NUMERAL_AT]
+        # off the lines by LINE_CLEAR where it can be, and always TEXT_GAP off the other numeral
         c = next((q for gap in (LINE_CLEAR, 0.0) for q in spots
-                  if _clear_of(_grown(_box_at(q, w, h), gap / k_sheet), tree, taken)), spots[0])
+                  if _clear_of(_grown(_box_at(q, w, h), gap / k_sheet), tree, [])
+                  and _clear_of(_grown(_box_at(q, w, h), TEXT_GAP / k_sheet), None, taken)), spots[0])
         taken.append(_box_at(c, w, h))
         out.append((f"zone{min(z.pairs, 2)}:{i}", text, (float(c[0]), float(c[1]))))
     return tuple(out)

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
+from shapely.ops import unary_union
 
 from drawings import style
 from drawings.primitives import descent
@@ -88,6 +89,36 @@ def sheet_texts(doc) -> list[TextBox]:
         for v in d.virtual_entities():
             if v.dxftype() == "MTEXT" and v.plain_text().strip():
                 out.append(TextBox(f"{d.dxf.handle}/dim", v.plain_text(), mtext_box(v)))
+    return out
+
+
+def sheet_names(doc) -> list[TextBox]:
+    """:func:`sheet_texts` with every name lettered with indices joined into one (``r`` with its
+    smaller ``b1`` → «rb1», its box the union): an index is a smaller TEXT set where its base's
+    advance ends (drawings.lettering; ``draw_rich``), level with the base or raised or lowered."""
+    msp = doc.modelspace()
+    plain = [e for e in msp.query("TEXT") if e.plain_text().strip() and not e.dxf.get("rotation", 0.0)
+             and int(e.dxf.get("halign", 0)) == 0 and int(e.dxf.get("valign", 0)) in (0, 1)]   # left, on the base line
+    index_of: dict[str, list] = {}
+    taken: set[str] = set()
+    for base in plain:
+        hb, xb, yb = float(base.dxf.height), base.dxf.insert.x, base.dxf.insert.y
+        end = xb + style.text_width(base.plain_text(), hb)
+        for e in plain:
+            h = float(e.dxf.height)
+            if h < 0.9 * hb and e.dxf.get("valign", 0) == base.dxf.get("valign", 0) \
+                    and abs(e.dxf.insert.x - end) < 0.02 and abs(e.dxf.insert.y - yb) < 0.6 * hb:
+                index_of.setdefault(str(base.dxf.handle), []).append(e)
+                taken.add(str(e.dxf.handle))
+    out = []
+    for t in sheet_texts(doc):
+        if t.handle in taken:
+            continue
+        parts = sorted(index_of.get(t.handle, []), key=lambda e: -e.dxf.insert.y)   # raised, then lowered
+        if parts:
+            joined = t.box.union(unary_union([text_box(e) for e in parts])).envelope
+            t = TextBox(t.handle, t.text + "".join(e.plain_text() for e in parts), joined)
+        out.append(t)
     return out
 
 

@@ -225,7 +225,9 @@ def test_sheet_names_the_balancing_force_on_the_lever(example):
     records = [r for r in sheet.annotations.labels if r.view == "lever"]
     pin = project.kinetostatics.reactions.crank_pin.lower()
     at = [r.anchor for r in records if r.text == pin and r.anchor.geom_type == "Point"]
-    named = [r.anchor for r in records if r.text == fb and r.anchor.geom_type in ("LineString", "MultiLineString")]
+    # a record's text marks its indices (``F^B_Mи4``, drawings.lettering): the letters read F, у, р
+    named = [r.anchor for r in records if r.text.replace("^", "").replace("_", "") == fb
+             and r.anchor.geom_type in ("LineString", "MultiLineString")]
     assert len(at) == 1 and len(named) == 1, ([r.text for r in records], fb)
     lines = named[0].geoms if named[0].geom_type == "MultiLineString" else [named[0]]
     ends = [c for ln in lines for c in (ln.coords[0], ln.coords[-1])]
